@@ -1,0 +1,7 @@
+#include "commands.h"
+
+int flowsurfBenchPlaceholder();
+
+namespace flowsurf::app {
+int runBench(const BenchOptions&) { return 0; }
+}  // namespace flowsurf::app

@@ -1,0 +1,21 @@
+// flowsurf — the subcommands of the command-line program.
+#pragma once
+
+#include "options.h"
+
+#include <string>
+
+namespace flowsurf::app {
+
+int runRender(const RenderOptions& options);
+int runInfo(const std::string& path);
+
+struct BenchOptions {
+    std::string csv;          // also write CSV here
+    int frames = 20;          // timed frames per row
+    bool quick = false;       // a small subset (for smoke runs)
+    std::string methods = "isa";
+};
+int runBench(const BenchOptions& options);
+
+}  // namespace flowsurf::app

@@ -1,0 +1,25 @@
+#include "commands.h"
+
+#include "core/builtin_scenes.h"
+#include "io/dataset_reader.h"
+
+#include <cstdio>
+
+namespace flowsurf::app {
+
+int runInfo(const std::string& path) {
+    if (core::isBuiltinSpec(path)) {
+        core::Dataset d = core::makeBuiltin(path);
+        const auto& m = d.steps.front().mesh;
+        core::Bounds b = d.bounds();
+        std::printf("%s\n  points: %zu\n  triangles: %zu\n  time steps: %zu\n", path.c_str(), m.vertexCount(),
+                    m.triangleCount(), d.steps.size());
+        for (const auto& f : m.fields) std::printf("  point array '%s' (3 components)\n", f.name.c_str());
+        std::printf("  bounds: [%g %g %g] - [%g %g %g]\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+        return 0;
+    }
+    std::fputs(io::formatFileInfo(io::inspectFile(path)).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace flowsurf::app

@@ -1,0 +1,72 @@
+// flowsurf — command-line program: render, info, bench. One catch here maps each error
+// type to its exit code (exit_codes.h); the library never exits the process.
+#include "commands.h"
+#include "core/errors.h"
+#include "exit_codes.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+using namespace flowsurf;
+
+int main(int argc, char** argv) {
+    CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA [L])", "flowsurf"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "flowsurf 0.1.0");
+
+    app::RenderOptions render;
+    CLI::App* renderCmd = app.add_subcommand("render", "Render a flow texture image or animation");
+    app::addRenderOptions(*renderCmd, render);
+
+    std::string infoPath;
+    CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, bounds");
+    infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
+
+    app::BenchOptions bench;
+    CLI::App* benchCmd = app.add_subcommand("bench", "Print ms/frame per stage, static and dynamic case");
+    benchCmd->add_option("--csv", bench.csv, "Also write the table as CSV to this file");
+    benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
+    benchCmd->add_flag("--quick", bench.quick, "A small subset of rows (smoke test)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return app::kUsage;
+    } catch (const ConfigError& e) {  // thrown by our value parsers inside CLI11 callbacks
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kUsage;
+    }
+
+    try {
+        if (*renderCmd) return app::runRender(render);
+        if (*infoCmd) return app::runInfo(infoPath);
+        if (*benchCmd) return app::runBench(bench);
+    } catch (const ConfigError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kUsage;
+    } catch (const IoError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kIo;
+    } catch (const FormatError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kFormat;
+    } catch (const FieldError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kField;
+    } catch (const GlError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kGl;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "flowsurf: internal error: %s\n", e.what());
+        return app::kInternal;
+    }
+    return app::kOk;
+}

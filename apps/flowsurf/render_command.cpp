@@ -1,0 +1,79 @@
+#include "commands.h"
+
+#include "core/builtin_scenes.h"
+#include "core/errors.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "io/image_writer.h"
+#include "io/video_writer.h"
+#include "methods/common/frame.h"
+#include "progress.h"
+#include "scene_setup.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace flowsurf::app {
+
+namespace {
+
+std::string sequenceName(const std::string& pattern, int frame) {
+    std::vector<char> buf(pattern.size() + 32);
+    std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
+    return buf.data();
+}
+
+int listBuiltins() {
+    std::printf("Built-in scenes (use as builtin:NAME or builtin:NAME:TRIANGLES):\n");
+    for (const auto& b : core::builtinScenes()) std::printf("  %-16s %s\n", b.name.c_str(), b.description.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& o) {
+    if (o.listBuiltins) return listBuiltins();
+    validateRenderOptions(o);
+    const OutputKind kind = outputKind(o.output);
+
+    // Data: load, pick the step and the field (errors before any GL work).
+    core::Dataset data = loadInput(o.input);
+    const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
+    const std::string field = methods::selectField(mesh, o.field, data.source);
+    core::Camera camera0 = makeCamera(o, data.bounds());
+
+    gl::HeadlessContext context(o.verbose);
+    methods::SurfaceGpu surface(mesh, field);
+    std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, o.params, o.size);
+
+    std::unique_ptr<io::VideoWriter> video;
+    if (kind == OutputKind::Mp4) video = std::make_unique<io::VideoWriter>(o.output, o.size.width, o.size.height,
+                                                                           io::VideoOptions{o.fps, o.crf});
+    if (!o.quiet && o.verbose)
+        std::fprintf(stderr, "flowsurf: %s, field '%s', %zu points, %zu triangles, method %s\n", data.source.c_str(),
+                     field.c_str(), mesh.vertexCount(), mesh.triangleCount(), method->name());
+
+    // --frames advection frames, then the output frame.
+    const int total = o.frames + 1;
+    ProgressBar progress("render", total, !o.quiet);
+    for (int k = 0; k < total; ++k) {
+        methods::FrameInput in{&surface, core::orbitCamera(camera0, o.orbit * float(k)), uint32_t(k)};
+        method->renderFrame(in);
+        if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
+        if (kind == OutputKind::PngSequence)
+            io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3,
+                             gl::readRgb8TopDown(method->composite()));
+        progress.update(k + 1);
+    }
+    progress.finish();
+
+    if (video) video->finish();
+    if (kind == OutputKind::Png)
+        io::writePngRgb8(o.output, o.size.width, o.size.height, 3, gl::readRgb8TopDown(method->composite()));
+    if (!o.flowTexture.empty())
+        io::writePngGray16(o.flowTexture, o.size.width, o.size.height, gl::readGray16TopDown(method->flowTexture()));
+    if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
+    return 0;
+}
+
+}  // namespace flowsurf::app

@@ -1,0 +1,37 @@
+#include "scene_setup.h"
+
+#include "core/builtin_scenes.h"
+#include "core/errors.h"
+#include "io/dataset_reader.h"
+
+namespace flowsurf::app {
+
+core::Dataset loadInput(const std::string& input) {
+    if (core::isBuiltinSpec(input)) return core::makeBuiltin(input);
+    return io::readDataset(input);
+}
+
+const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
+    if (step >= data.steps.size())
+        throw ConfigError("--time-step " + std::to_string(step) + ": " + data.source + " has " +
+                          std::to_string(data.steps.size()) + " time step(s)");
+    return data.steps[step].mesh;
+}
+
+core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
+    // Default view: from the front, a little above and to the right.
+    glm::vec3 dir = glm::normalize(glm::vec3(0.45f, 0.35f, 1.0f));
+    if (o.eye) dir = *o.eye - (o.target ? *o.target : bounds.center());
+    core::Camera cam = core::fitCamera(bounds, o.size, dir, o.fov);
+    if (o.eye) cam.eye = *o.eye;
+    if (o.target) cam.target = *o.target;
+    if (o.up) cam.up = glm::normalize(*o.up);
+    cam.orthoHeight = o.ortho;
+    if (cam.orthographic() && !o.eye) cam.eye = cam.target + glm::normalize(dir) * bounds.radius() * 3.0f;
+    if (glm::length(glm::cross(glm::normalize(cam.target - cam.eye), cam.up)) < 1e-4f)
+        throw ConfigError("--up is parallel to the viewing direction");
+    core::fitClipPlanes(cam, bounds);
+    return cam;
+}
+
+}  // namespace flowsurf::app

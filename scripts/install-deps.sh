@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages flowsurf needs to build, test and make videos.
+# Runs apt-get only for what is missing (as root, or through sudo when available).
+set -euo pipefail
+PACKAGES=(
+  build-essential cmake pkg-config              # toolchain
+  libvtk9-dev                                   # readers for CFD formats (VTK 9)
+  libepoxy-dev libegl-dev libgl-dev             # OpenGL 4.5 function loading, EGL headless
+  libegl-mesa0 libgl1-mesa-dri                  # Mesa llvmpipe: GL without a GPU
+  libglm-dev                                    # vector maths
+  libpng-dev                                    # PNG output
+  libcli11-dev                                  # command-line parsing
+  libgtest-dev                                  # tests
+  ffmpeg                                        # MP4 (H.264) output
+)
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+echo "flowsurf: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

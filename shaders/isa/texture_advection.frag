@@ -1,0 +1,15 @@
+// Texture advection plus ISA edge blending [L §IV-E.1]: at edge advection points, gray
+// (the noise mean) is blended in so texture is not carried across a geometric
+// discontinuity. A grid cell touching an edge vertex counts as edge: interpolating the
+// flag would let half the upstream texture leak across at every edge cell.
+layout(binding = 0) uniform sampler2D uPrevFlow;  // F_a(k-1), R32F, linear filtering
+uniform int uEdgeBlending;
+uniform float uGray;
+in vec2 vTexcoord;
+in float vEdge;
+out vec4 outFlow;
+void main() {
+    float f = texture(uPrevFlow, vTexcoord).r;
+    if (uEdgeBlending != 0 && vEdge > 1e-3) f = uGray;
+    outFlow = vec4(f, 0.0, 0.0, 1.0);
+}

@@ -1,0 +1,234 @@
+#include "core/builtin_scenes.h"
+
+#include "core/errors.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace flowsurf::core {
+
+namespace {
+
+using FieldFn = std::function<glm::vec3(const glm::vec3& pos, double time)>;
+
+void addField(SurfaceMesh& m, const FieldFn& fn, double time) {
+    VectorField f{"velocity", {}};
+    f.values.reserve(m.positions.size());
+    for (const auto& p : m.positions) f.values.push_back(fn(p, time));
+    makeTangential(f.values, m.normals);
+    m.fields = {std::move(f)};
+}
+
+int gridForTriangles(long tris, int minimum) {
+    return std::max(minimum, int(std::sqrt(double(tris) / 2.0)));
+}
+
+// Sphere in solid-body rotation about the axis (0.3, 1, 0.2): v = w x x.
+Dataset sphereScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris : 20000, 8);
+    SurfaceMesh m = makeUvSphere(1.0f, n, std::max(4, n / 2) * 2 / 2);
+    glm::vec3 w = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+    addField(m, [&](const glm::vec3& p, double) { return glm::cross(w, p); }, 0.0);
+    return {"builtin:sphere", {{0.0, std::move(m)}}};
+}
+
+// Two tori under a uniform vertical field; only its tangential part remains [W Fig. 5].
+Dataset toriScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris / 2 : 20000, 8);
+    SurfaceMesh a = makeTorus({-1.2f, 0.0f, 0.0f}, 1.0f, 0.35f, n, std::max(6, n / 3));
+    SurfaceMesh b = makeTorus({1.2f, 0.0f, 0.0f}, 1.0f, 0.35f, n, std::max(6, n / 3));
+    // Tilt the second torus so both silhouettes and folds appear.
+    for (auto* v : {&b.positions, &b.normals})
+        for (auto& p : *v) {
+            glm::vec3 q = v == &b.positions ? p - glm::vec3(1.2f, 0, 0) : p;
+            q = {q.x, q.y * 0.5f - q.z * 0.866f, q.y * 0.866f + q.z * 0.5f};
+            p = v == &b.positions ? q + glm::vec3(1.2f, 0, 0) : q;
+        }
+    appendMesh(a, b);
+    addField(a, [](const glm::vec3&, double) { return glm::vec3(0, 1, 0); }, 0.0);
+    return {"builtin:tori", {{0.0, std::move(a)}}};
+}
+
+// Oblique plane with a vortex (Rankine-like) plus a weak drift.
+Dataset vortexPlaneScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris : 20000, 4);
+    glm::vec3 u = glm::normalize(glm::vec3(1, 0, 0.4f)), v = glm::normalize(glm::vec3(0, 1, -0.5f));
+    v = glm::normalize(v - glm::dot(v, u) * u);
+    SurfaceMesh m = makeRectangle({0, 0, 0}, u, v, 4.0f, 3.0f, n, n * 3 / 4);
+    addField(m, [&](const glm::vec3& p, double) {
+        float x = glm::dot(p, u) - 0.4f, y = glm::dot(p, v) + 0.2f;
+        float r2 = x * x + y * y, core = 0.6f;
+        float s = r2 < core * core ? 1.0f / (core * core) : 1.0f / r2;  // solid core, 1/r outside
+        return (-y * s) * u + (x * s) * v + 0.15f * u;
+    }, 0.0);
+    return {"builtin:vortex-plane", {{0.0, std::move(m)}}};
+}
+
+// Double gyre (Shadden et al.) on a plane: the classic time-dependent test field.
+Dataset doubleGyreScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris : 20000, 4);
+    const float A = 0.1f, eps = 0.25f, omega = glm::two_pi<float>() / 10.0f;
+    Dataset d{"builtin:double-gyre", {}};
+    SurfaceMesh base = makeRectangle({1, 0.5f, 0}, {1, 0, 0}, {0, 1, 0}, 2.0f, 1.0f, n, n / 2);
+    for (int k = 0; k <= 10; ++k) {
+        SurfaceMesh m = base;
+        double t = k;
+        addField(m, [&](const glm::vec3& p, double time) {
+            float a = eps * std::sin(omega * float(time)), b = 1 - 2 * eps * std::sin(omega * float(time));
+            float f = a * p.x * p.x + b * p.x, df = 2 * a * p.x + b;
+            float pi = glm::pi<float>();
+            return glm::vec3(-pi * A * std::sin(pi * f) * std::cos(pi * p.y),
+                             pi * A * std::cos(pi * f) * std::sin(pi * p.y) * df, 0.0f);
+        }, t);
+        d.steps.push_back({t, std::move(m)});
+    }
+    return d;
+}
+
+// Uniform flow along x on a plane facing the camera: the correlation-length test.
+Dataset uniformPlaneScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris : 2000, 2);
+    SurfaceMesh m = makeRectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0f, 2.0f, n, n);
+    addField(m, [](const glm::vec3&, double) { return glm::vec3(1, 0, 0); }, 0.0);
+    return {"builtin:uniform-plane", {{0.0, std::move(m)}}};
+}
+
+// Two overlapping planes at different depths with perpendicular flows: the front one
+// covers the left half of the back one. The occluding-edge tests.
+Dataset overlapPlanesScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris / 2 : 2000, 2);
+    SurfaceMesh back = makeRectangle({0, 0, -1}, {1, 0, 0}, {0, 1, 0}, 2.0f, 2.0f, n, n);
+    SurfaceMesh front = makeRectangle({-0.5f, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f, 2.0f, n / 2 + 1, n);
+    addField(back, [](const glm::vec3&, double) { return glm::vec3(1, 0, 0); }, 0.0);
+    addField(front, [](const glm::vec3&, double) { return glm::vec3(0, 1, 0); }, 0.0);
+    appendMesh(back, front);
+    return {"builtin:overlap-planes", {{0.0, std::move(back)}}};
+}
+
+struct Entry {
+    BuiltinInfo info;
+    Dataset (*make)(long);
+};
+const std::vector<Entry>& entries() {
+    static const std::vector<Entry> e = {
+        {{"sphere", "unit sphere in solid-body rotation (steady)"}, sphereScene},
+        {{"tori", "two tori under a uniform vertical field, tangential part (steady)"}, toriScene},
+        {{"vortex-plane", "oblique plane with a vortex and a weak drift (steady)"}, vortexPlaneScene},
+        {{"double-gyre", "time-dependent double gyre on a plane, 11 steps t=0..10"}, doubleGyreScene},
+        {{"uniform-plane", "plane facing +z with uniform flow along x (tests)"}, uniformPlaneScene},
+        {{"overlap-planes", "front plane over a back plane, perpendicular flows (tests)"}, overlapPlanesScene},
+    };
+    return e;
+}
+
+}  // namespace
+
+const std::vector<BuiltinInfo>& builtinScenes() {
+    static const std::vector<BuiltinInfo> list = [] {
+        std::vector<BuiltinInfo> l;
+        for (const auto& e : entries()) l.push_back(e.info);
+        return l;
+    }();
+    return list;
+}
+
+bool isBuiltinSpec(const std::string& spec) { return spec.rfind("builtin:", 0) == 0; }
+
+Dataset makeBuiltin(const std::string& spec) {
+    std::string rest = spec.substr(8), name = rest;
+    long tris = 0;
+    if (auto colon = rest.find(':'); colon != std::string::npos) {
+        name = rest.substr(0, colon);
+        std::string count = rest.substr(colon + 1);
+        char* end = nullptr;
+        tris = std::strtol(count.c_str(), &end, 10);
+        if (count.empty() || *end != '\0' || tris < 8 || tris > 20'000'000)
+            throw ConfigError(spec + ": triangle count must be an integer in 8..20000000");
+    }
+    for (const auto& e : entries())
+        if (e.info.name == name) {
+            Dataset d = e.make(tris);
+            d.source = spec;
+            for (auto& s : d.steps) validateMesh(s.mesh, spec);
+            return d;
+        }
+    std::string names;
+    for (const auto& e : entries()) names += (names.empty() ? "" : ", ") + e.info.name;
+    throw ConfigError("unknown built-in scene '" + name + "' (available: " + names + ")");
+}
+
+SurfaceMesh makeUvSphere(float radius, int slices, int stacks) {
+    SurfaceMesh m;
+    for (int j = 0; j <= stacks; ++j) {
+        float theta = glm::pi<float>() * float(j) / float(stacks);
+        for (int i = 0; i <= slices; ++i) {
+            float phi = glm::two_pi<float>() * float(i) / float(slices);
+            glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            m.positions.push_back(radius * n);
+            m.normals.push_back(n);
+        }
+    }
+    auto id = [&](int i, int j) { return uint32_t(j * (slices + 1) + i); };
+    for (int j = 0; j < stacks; ++j)
+        for (int i = 0; i < slices; ++i) {
+            // Counter-clockwise seen from outside.
+            if (j > 0) m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+            if (j < stacks - 1) m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+SurfaceMesh makeTorus(const glm::vec3& center, float majorR, float minorR, int nu, int nv) {
+    SurfaceMesh m;
+    for (int j = 0; j <= nv; ++j) {
+        float b = glm::two_pi<float>() * float(j) / float(nv);
+        for (int i = 0; i <= nu; ++i) {
+            float a = glm::two_pi<float>() * float(i) / float(nu);
+            glm::vec3 ring(std::cos(a), 0.0f, std::sin(a));
+            glm::vec3 n = std::cos(b) * ring + glm::vec3(0, std::sin(b), 0);
+            m.positions.push_back(center + majorR * ring + minorR * n);
+            m.normals.push_back(n);
+        }
+    }
+    auto id = [&](int i, int j) { return uint32_t(j * (nu + 1) + i); };
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});
+            m.triangles.push_back({id(i + 1, j), id(i, j + 1), id(i + 1, j + 1)});
+        }
+    return m;
+}
+
+SurfaceMesh makeRectangle(const glm::vec3& center, const glm::vec3& u, const glm::vec3& v, float w,
+                          float h, int n, int mcells) {
+    SurfaceMesh m;
+    glm::vec3 normal = glm::normalize(glm::cross(u, v));
+    for (int j = 0; j <= mcells; ++j)
+        for (int i = 0; i <= n; ++i) {
+            float s = float(i) / float(n) - 0.5f, t = float(j) / float(mcells) - 0.5f;
+            m.positions.push_back(center + s * w * u + t * h * v);
+            m.normals.push_back(normal);
+        }
+    auto id = [&](int i, int j) { return uint32_t(j * (n + 1) + i); };
+    for (int j = 0; j < mcells; ++j)
+        for (int i = 0; i < n; ++i) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+void appendMesh(SurfaceMesh& a, const SurfaceMesh& b) {
+    uint32_t base = uint32_t(a.positions.size());
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
+    for (auto t : b.triangles) a.triangles.push_back(t + glm::uvec3(base));
+    for (size_t f = 0; f < a.fields.size() && f < b.fields.size(); ++f)
+        a.fields[f].values.insert(a.fields[f].values.end(), b.fields[f].values.begin(),
+                                  b.fields[f].values.end());
+}
+
+}  // namespace flowsurf::core

@@ -1,0 +1,75 @@
+#include "core/camera.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace flowsurf::core {
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+    if (orthographic()) {
+        float h = 0.5f * orthoHeight, w = h * aspect;
+        return glm::ortho(-w, w, -h, h, nearPlane, farPlane);
+    }
+    return glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane);
+}
+
+glm::vec3 projectToPixels(const Camera& camera, const Viewport& viewport, const glm::vec3& posObj) {
+    glm::vec4 clip = camera.viewProjection(viewport.aspect()) * glm::vec4(posObj, 1.0f);
+    glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    return {(ndc.x * 0.5f + 0.5f) * float(viewport.width), (ndc.y * 0.5f + 0.5f) * float(viewport.height),
+            ndc.z * 0.5f + 0.5f};
+}
+
+Camera fitCamera(const Bounds& bounds, const Viewport& viewport, const glm::vec3& direction, float fovDeg) {
+    Camera c;
+    c.fovDeg = fovDeg;
+    c.target = bounds.center();
+    float r = std::max(bounds.radius(), 1e-6f);
+    // The bounding sphere must fit the narrower of the two view angles.
+    float halfV = glm::radians(fovDeg) * 0.5f;
+    float halfH = std::atan(std::tan(halfV) * viewport.aspect());
+    float half = std::min(halfV, halfH);
+    float dist = r * 1.05f / std::sin(half);
+    glm::vec3 dir = glm::normalize(direction);
+    c.eye = c.target + dir * dist;
+    c.up = std::abs(dir.y) > 0.95f ? glm::vec3(0, 0, dir.y > 0 ? -1 : 1) : glm::vec3(0, 1, 0);
+    fitClipPlanes(c, bounds);
+    return c;
+}
+
+void fitClipPlanes(Camera& camera, const Bounds& bounds) {
+    float r = std::max(bounds.radius(), 1e-6f);
+    glm::vec3 fwd = glm::normalize(camera.target - camera.eye);
+    float dc = glm::dot(bounds.center() - camera.eye, fwd);
+    float farP = dc + r * 1.01f;
+    float nearP = dc - r * 1.01f;
+    if (camera.orthographic()) {
+        // Orthographic depth is linear: any near (even behind the eye) is fine.
+        camera.nearPlane = nearP;
+    } else {
+        camera.nearPlane = std::max(nearP, farP * 1e-3f);
+    }
+    camera.farPlane = std::max(farP, camera.nearPlane + 1e-6f);
+}
+
+Camera orbitCamera(const Camera& camera, float degrees) {
+    Camera c = camera;
+    glm::mat4 rot = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::normalize(camera.up));
+    c.eye = camera.target + glm::vec3(rot * glm::vec4(camera.eye - camera.target, 0.0f));
+    return c;
+}
+
+float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds) {
+    if (camera.orthographic()) return float(viewport.height) / camera.orthoHeight;
+    glm::vec3 fwd = glm::normalize(camera.target - camera.eye);
+    float dc = glm::dot(bounds.center() - camera.eye, fwd);
+    float nearest = std::max(dc - bounds.radius(), camera.nearPlane);
+    float viewHeight = 2.0f * nearest * std::tan(glm::radians(camera.fovDeg) * 0.5f);
+    return float(viewport.height) / viewHeight;
+}
+
+}  // namespace flowsurf::core

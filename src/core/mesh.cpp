@@ -1,0 +1,124 @@
+#include "core/mesh.h"
+
+#include "core/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace flowsurf::detail {
+void checkFailed(const char* expr, const char* file, int line) {
+    std::fprintf(stderr, "flowsurf: internal check failed: %s (%s:%d)\n", expr, file, line);
+    std::abort();
+}
+}  // namespace flowsurf::detail
+
+namespace flowsurf::core {
+
+const VectorField* SurfaceMesh::findField(const std::string& name) const {
+    for (const auto& f : fields)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+
+Bounds SurfaceMesh::bounds() const {
+    Bounds b;
+    for (const auto& p : positions) b.extend(p);
+    return b;
+}
+
+Bounds Dataset::bounds() const {
+    Bounds b;
+    for (const auto& s : steps) b.extend(s.mesh.bounds());
+    return b;
+}
+
+std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
+                                            const std::vector<glm::uvec3>& triangles) {
+    std::vector<glm::vec3> n(positions.size(), glm::vec3(0.0f));
+    for (const auto& t : triangles) {
+        // Cross product length = 2 * area: area weighting for free.
+        glm::vec3 c = glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]);
+        n[t.x] += c;
+        n[t.y] += c;
+        n[t.z] += c;
+    }
+    for (auto& v : n) {
+        float l = glm::length(v);
+        v = l > 0.0f ? v / l : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+    return n;
+}
+
+void makeTangential(std::vector<glm::vec3>& vectors, const std::vector<glm::vec3>& normals) {
+    FLOWSURF_CHECK(vectors.size() == normals.size());
+    for (size_t i = 0; i < vectors.size(); ++i)
+        vectors[i] -= glm::dot(vectors[i], normals[i]) * normals[i];
+}
+
+namespace {
+bool finite3(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+}  // namespace
+
+size_t validateMesh(SurfaceMesh& mesh, const std::string& where) {
+    if (mesh.positions.empty()) throw FormatError(where + ": the surface has no points");
+    if (mesh.triangles.empty()) throw FormatError(where + ": the surface has no triangles");
+    const size_t n = mesh.positions.size();
+    for (size_t i = 0; i < n; ++i)
+        if (!finite3(mesh.positions[i])) {
+            std::ostringstream s;
+            s << where << ": point " << i << " has a non-finite coordinate (NaN or Inf)";
+            throw FormatError(s.str());
+        }
+    if (!mesh.normals.empty() && mesh.normals.size() != n) {
+        std::ostringstream s;
+        s << where << ": " << mesh.normals.size() << " normals for " << n << " points";
+        throw FormatError(s.str());
+    }
+    for (const auto& f : mesh.fields) {
+        if (f.values.size() != n) {
+            std::ostringstream s;
+            s << where << ": field '" << f.name << "' has " << f.values.size() << " values for "
+              << n << " points";
+            throw FormatError(s.str());
+        }
+        for (size_t i = 0; i < n; ++i)
+            if (!finite3(f.values[i])) {
+                std::ostringstream s;
+                s << where << ": field '" << f.name << "' has a non-finite vector (NaN or Inf) at point "
+                  << i;
+                throw FormatError(s.str());
+            }
+    }
+    std::vector<glm::uvec3> kept;
+    kept.reserve(mesh.triangles.size());
+    size_t degenerate = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        if (tri.x >= n || tri.y >= n || tri.z >= n) {
+            std::ostringstream s;
+            s << where << ": triangle " << t << " refers to point " << std::max({tri.x, tri.y, tri.z})
+              << " but there are only " << n << " points";
+            throw FormatError(s.str());
+        }
+        glm::vec3 c = glm::cross(mesh.positions[tri.y] - mesh.positions[tri.x],
+                                 mesh.positions[tri.z] - mesh.positions[tri.x]);
+        if (tri.x == tri.y || tri.y == tri.z || tri.x == tri.z || glm::dot(c, c) == 0.0f) {
+            ++degenerate;
+            continue;
+        }
+        kept.push_back(tri);
+    }
+    if (kept.empty())
+        throw FormatError(where + ": all " + std::to_string(mesh.triangles.size()) +
+                          " triangles are degenerate (zero area)");
+    mesh.triangles.swap(kept);
+    if (mesh.normals.empty()) mesh.normals = computeVertexNormals(mesh.positions, mesh.triangles);
+    return degenerate;
+}
+
+}  // namespace flowsurf::core

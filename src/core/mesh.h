@@ -1,0 +1,69 @@
+// flowsurf — the data model: a triangle surface with per-vertex vector fields over
+// a list of time steps ([W]/[L] §0 of ALGORITHMS.md). No GL here.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace flowsurf::core {
+
+struct Bounds {
+    glm::vec3 lo{std::numeric_limits<float>::max()};
+    glm::vec3 hi{-std::numeric_limits<float>::max()};
+    bool valid() const { return lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z; }
+    glm::vec3 center() const { return 0.5f * (lo + hi); }
+    float radius() const { return 0.5f * glm::length(hi - lo); }
+    void extend(const glm::vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void extend(const Bounds& b) { if (b.valid()) { extend(b.lo); extend(b.hi); } }
+};
+
+// One named per-vertex array with 3 components (velocity, wall shear stress...).
+struct VectorField {
+    std::string name;
+    std::vector<glm::vec3> values;  // one per vertex, object (P-) space units
+};
+
+// The surface at one time step. Positions and triangles may differ between steps
+// (dynamic meshes, changing topology [L Fig. 11]).
+struct SurfaceMesh {
+    std::vector<glm::vec3> positions;   // object space
+    std::vector<glm::vec3> normals;     // unit, one per vertex
+    std::vector<glm::uvec3> triangles;  // indices into positions
+    std::vector<VectorField> fields;    // per-vertex vectors, same count as positions
+
+    size_t vertexCount() const { return positions.size(); }
+    size_t triangleCount() const { return triangles.size(); }
+    const VectorField* findField(const std::string& name) const;
+    Bounds bounds() const;
+};
+
+struct TimeStep {
+    double time = 0.0;
+    SurfaceMesh mesh;
+};
+
+// What a reader returns: one or more time steps of a surface.
+struct Dataset {
+    std::string source;              // file name or builtin:NAME, for messages
+    std::vector<TimeStep> steps;     // sorted by time, at least one
+    Bounds bounds() const;           // over all steps
+};
+
+// Computes area-weighted vertex normals (used when a file carries none).
+std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
+                                            const std::vector<glm::uvec3>& triangles);
+
+// §0: v <- v - (v.n) n for every vertex.
+void makeTangential(std::vector<glm::vec3>& vectors, const std::vector<glm::vec3>& normals);
+
+// Checks a mesh for what would crash or poison rendering: empty, indices out of
+// range, field size mismatch, NaN/Inf positions or vectors. Throws FormatError naming
+// `where` (file) and the first offending element. Degenerate (zero-area) triangles are
+// removed and counted rather than refused; the count is returned.
+size_t validateMesh(SurfaceMesh& mesh, const std::string& where);
+
+}  // namespace flowsurf::core

@@ -1,0 +1,27 @@
+// flowsurf — headless OpenGL 4.5 core context through EGL. Tries every EGL device
+// (vendor drivers on a GPU machine) and then Mesa's surfaceless platform (llvmpipe),
+// and logs which one it picked (GL_RENDERER).
+#pragma once
+
+#include <string>
+
+namespace flowsurf::gl {
+
+class HeadlessContext {
+public:
+    // Throws GlError with what was tried when no 4.5 core context can be made.
+    explicit HeadlessContext(bool verbose = false);
+    ~HeadlessContext();
+    HeadlessContext(const HeadlessContext&) = delete;
+    HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+    const std::string& renderer() const { return renderer_; }
+    const std::string& description() const { return description_; }
+
+private:
+    void* display_ = nullptr;
+    void* context_ = nullptr;
+    std::string renderer_, description_;
+};
+
+}  // namespace flowsurf::gl

@@ -1,0 +1,114 @@
+// flowsurf — move-only RAII wrappers of OpenGL 4.5 objects (direct state access).
+// A default-constructed wrapper owns nothing and needs no context.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <utility>
+
+namespace flowsurf::gl {
+
+template <void (*Delete)(GLuint)>
+class Handle {
+public:
+    Handle() = default;
+    explicit Handle(GLuint id) : id_(id) {}
+    ~Handle() { reset(); }
+    Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+    Handle& operator=(Handle&& o) noexcept {
+        if (this != &o) { reset(); id_ = std::exchange(o.id_, 0); }
+        return *this;
+    }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    GLuint id() const { return id_; }
+    explicit operator bool() const { return id_ != 0; }
+    void reset() { if (id_) Delete(id_); id_ = 0; }
+
+private:
+    GLuint id_ = 0;
+};
+
+namespace detail {
+inline void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
+inline void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+inline void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+inline void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
+inline void deleteProgram(GLuint id) { glDeleteProgram(id); }
+inline void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
+}  // namespace detail
+
+// A 2D texture with immutable storage.
+class Texture2D {
+public:
+    Texture2D() = default;
+    Texture2D(GLenum internalFormat, int width, int height, GLenum filter = GL_LINEAR);
+    GLuint id() const { return h_.id(); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    GLenum format() const { return format_; }
+    explicit operator bool() const { return bool(h_); }
+
+private:
+    Handle<detail::deleteTexture> h_;
+    int width_ = 0, height_ = 0;
+    GLenum format_ = 0;
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    // Immutable storage of `bytes`, optionally initialised from `data`.
+    Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+    GLuint id() const { return h_.id(); }
+    GLsizeiptr size() const { return size_; }
+    explicit operator bool() const { return bool(h_); }
+
+private:
+    Handle<detail::deleteBuffer> h_;
+    GLsizeiptr size_ = 0;
+};
+
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    static Framebuffer create();
+    GLuint id() const { return h_.id(); }
+    void attach(GLenum attachment, const Texture2D& texture);
+    // Sets the draw buffers to COLOR_ATTACHMENT0..n-1 and checks completeness.
+    void finish(int colorAttachments);
+
+private:
+    Handle<detail::deleteFramebuffer> h_;
+};
+
+class VertexArray {
+public:
+    VertexArray() = default;
+    static VertexArray create();
+    GLuint id() const { return h_.id(); }
+
+private:
+    Handle<detail::deleteVertexArray> h_;
+};
+
+// A linked program from embedded shader sources (see cmake/EmbedShaders.cmake).
+class Program {
+public:
+    Program() = default;
+    // `stages`: pairs of (GL shader type, embedded shader name such as "isa/overlay.frag").
+    // `defines` are prepended after #version to make variants. Throws ShaderError.
+    Program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines = "");
+    GLuint id() const { return h_.id(); }
+    GLint uniform(const char* name) const { return glGetUniformLocation(h_.id(), name); }
+    void use() const { glUseProgram(h_.id()); }
+
+private:
+    Handle<detail::deleteProgram> h_;
+};
+
+// Looks up an embedded shader source by name; throws ShaderError if unknown.
+const std::string& shaderSource(const std::string& name);
+
+}  // namespace flowsurf::gl

@@ -1,0 +1,40 @@
+// flowsurf — from a reader's output to a triangle surface with point vector fields
+// (private to src/io). Stages, in order:
+//   check data sets → surface per block → merge blocks → cell data to point data →
+//   triangulate → copy into core::SurfaceMesh → core::validateMesh.
+#pragma once
+
+#include "core/mesh.h"
+#include "io/vtk_messages.h"
+
+#include <vtkSmartPointer.h>
+
+#include <functional>
+#include <string>
+
+class vtkDataObject;
+class vtkDataSet;
+class vtkPolyData;
+
+namespace flowsurf::io::detail {
+
+// Calls `visit` for every non-empty data set: `data` itself or the leaves of a composite.
+void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit);
+
+// Refuses what would make VTK filters read out of bounds: array lengths that do not
+// match the point/cell counts, connectivity outside the points. Throws FormatError.
+void checkDataSet(vtkDataSet* data, const std::string& where);
+
+// Stages 1–5. Point arrays win over converted cell arrays of the same name.
+vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
+                                            const std::string& where);
+
+// Stage 6: positions, triangles, normals ("Normals" or the active normals, dropped if
+// any is zero or non-finite), and every other 3-component point array as a field.
+core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where);
+
+// All stages, validation included.
+core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap,
+                                  const std::string& where);
+
+}  // namespace flowsurf::io::detail

@@ -1,0 +1,56 @@
+// flowsurf — turning VTK's error reports into exceptions (private to src/io).
+// VTK readers never throw: they report through vtkErrorMacro and return partial or
+// empty output. A VtkMessageTrap collects those reports for the duration of one read —
+// from observers on the objects we create, and from a capturing output window for
+// objects created inside VTK — so nothing reaches the terminal and the first error
+// becomes a FormatError naming the file.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkObject;
+class vtkCallbackCommand;
+class vtkOutputWindow;
+
+namespace flowsurf::io::detail {
+
+class VtkMessageTrap {
+public:
+    // Installs the capturing output window for this thread until destruction.
+    VtkMessageTrap();
+    ~VtkMessageTrap();
+    VtkMessageTrap(const VtkMessageTrap&) = delete;
+    VtkMessageTrap& operator=(const VtkMessageTrap&) = delete;
+
+    // Observes ErrorEvent and WarningEvent of `object` (a reader or filter).
+    void watch(vtkObject* object);
+
+    // Throws FormatError("PATH: WHAT: first error") if an error was reported since
+    // the last clear(); otherwise does nothing.
+    void throwIfError(const std::string& path, const std::string& what) const;
+
+    bool hasError() const { return !errors_.empty(); }
+    const std::vector<std::string>& errors() const { return errors_; }
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    void clear();
+
+    // Called by the observers and the output window; the text is cleaned first.
+    void addError(const char* text);
+    void addWarning(const char* text);
+
+private:
+    std::vector<std::string> errors_, warnings_;
+    vtkSmartPointer<vtkCallbackCommand> callback_;
+    std::vector<std::pair<vtkSmartPointer<vtkObject>, unsigned long>> observed_;
+    vtkSmartPointer<vtkOutputWindow> previousWindow_;
+    VtkMessageTrap* outerTrap_ = nullptr;
+};
+
+// "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
+std::string cleanVtkMessage(const char* text);
+
+}  // namespace flowsurf::io::detail

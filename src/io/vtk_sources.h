@@ -1,0 +1,42 @@
+// flowsurf — one VTK reader per file extension, seen as a list of time steps
+// (private to src/io). A StepSource hands out the reader's raw output per step;
+// surface_pipeline.h turns that into a triangle surface.
+#pragma once
+
+#include "io/vtk_messages.h"
+
+#include <vtkDataObject.h>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flowsurf::io::detail {
+
+class StepSource {
+public:
+    virtual ~StepSource() = default;
+
+    // Human-readable format, e.g. "VTK XML PolyData".
+    virtual std::string format() const = 0;
+    // Sorted time values; empty when the file carries no time information (one step).
+    virtual const std::vector<double>& times() const = 0;
+    size_t stepCount() const { return times().empty() ? 1 : times().size(); }
+    // The reader's output for step `index` (may be composite). Throws FormatError.
+    virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
+};
+
+// Picks the reader by extension (case-insensitive) and reads the file's metadata.
+// Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
+// empty file, header the reader refuses). Every reader is watched by `trap`.
+std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap);
+
+// "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
+// just the path for a single step.
+std::string stepLabel(const std::string& path, const StepSource& source, size_t index);
+
+// ".vtp .vtu ..." for messages.
+std::string supportedExtensions();
+
+}  // namespace flowsurf::io::detail

@@ -1,0 +1,23 @@
+#include "methods/common/frame.h"
+
+#include "core/errors.h"
+#include "methods/isa/isa_renderer.h"
+
+#include <algorithm>
+
+namespace flowsurf::methods {
+
+std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
+                                       const core::Viewport& viewport) {
+    if (name == "isa") return std::make_unique<isa::IsaRenderer>(params, viewport);
+    throw ConfigError("unknown method '" + name + "' (available: isa)");
+}
+
+float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx) {
+    float speed = in.surface->maxSpeed();
+    if (speed <= 0.0f) return 0.0f;
+    float pxPerUnit = core::maxPixelsPerUnit(in.camera, viewport, in.surface->bounds());
+    return stepPx / (speed * std::max(pxPerUnit, 1e-30f));
+}
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,49 @@
+// flowsurf — what a method gets each frame, and the interface every method implements.
+#pragma once
+
+#include "core/camera.h"
+#include "gl/objects.h"
+#include "gl/stage_timer.h"
+#include "methods/common/params.h"
+#include "methods/common/surface_gpu.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace flowsurf::methods {
+
+struct FrameInput {
+    const SurfaceGpu* surface = nullptr;  // the surface at this frame's data time
+    core::Camera camera;
+    uint32_t frame = 0;                   // k: the clock of the noise
+};
+
+class FlowMethod {
+public:
+    virtual ~FlowMethod() = default;
+    virtual const char* name() const = 0;
+    // Runs the paper's stage list for frame k (see each orchestrator).
+    virtual void renderFrame(const FrameInput& in) = 0;
+    // F_a: the advected flow texture alone (R32F, channel r).
+    virtual const gl::Texture2D& flowTexture() const = 0;
+    // The displayed image after the overlay (RGBA8).
+    virtual const gl::Texture2D& composite() const = 0;
+    // Window depth of the surface for the last frame (1 = background): the surface mask.
+    virtual const gl::Texture2D& surfaceDepth() const = 0;
+    // True if the last renderFrame ran the dynamic case.
+    virtual bool lastFrameDynamic() const = 0;
+    gl::StageTimer& timer() { return timer_; }
+
+protected:
+    gl::StageTimer timer_;
+};
+
+// "isa" (more to come). Throws ConfigError for an unknown name.
+std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
+                                       const core::Viewport& viewport);
+
+// Object-space time step so that the fastest vector moves at most stepPx pixels.
+float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx);
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,40 @@
+// flowsurf — parameters of the methods: plain structs, in-class defaults, one line each
+// with unit and the papers' range. No globals: methods run side by side.
+#pragma once
+
+#include "core/noise.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace flowsurf::methods {
+
+enum class Colormap { None, Viridis, CoolWarm, Gray };
+
+// Eq. 9 and 10, shared by every method.
+struct CommonParams {
+    float alpha = 0.1f;         // noise blend alpha, [L] 0.1..0.2
+    float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
+    float stepPx = 2.0f;         // largest displacement per frame, pixels ([L] dt)
+    core::NoiseParams noise;     // scale s (px), period, profile, seed
+    float contrast = 3.0f;       // display gain of F_a about the noise mean (overlay only)
+    Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s
+    bool lighting = true;        // diffuse head light in F_s
+    bool velocityMask = false;   // texture contrast follows speed [L ref 14]
+    glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
+};
+
+// ISA only, [L §IV-C.1..IV-F.1].
+struct IsaParams {
+    int gridRes = 256;           // R: advection mesh cells per side, 64..1024
+    float edgeEpsilon = 0.01f;   // eps of eq. 14: depth range fraction per pixel
+    bool edgeBlending = true;    // blend gray at edge advection points
+};
+
+struct MethodParams {
+    CommonParams common;
+    IsaParams isa;
+};
+
+}  // namespace flowsurf::methods

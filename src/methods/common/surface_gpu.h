@@ -1,0 +1,39 @@
+// flowsurf — one time step of the surface on the GPU: interleaved position, normal and
+// tangential velocity per vertex (§0), and the triangles. Shared by every method.
+#pragma once
+
+#include "core/mesh.h"
+#include "gl/objects.h"
+
+#include <string>
+
+namespace flowsurf::methods {
+
+class SurfaceGpu {
+public:
+    SurfaceGpu() = default;
+    // Uploads `mesh` with the vector field `fieldName` made tangential. Throws FieldError.
+    SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName);
+
+    void draw() const;  // binds the VAO and draws the triangles
+    GLuint vertexArray() const { return vao_.id(); }
+    size_t triangleCount() const { return triangles_; }
+    float maxSpeed() const { return maxSpeed_; }
+    const core::Bounds& bounds() const { return bounds_; }
+    // Increments with every upload: methods compare it to see the dynamic case.
+    uint64_t generation() const { return generation_; }
+
+private:
+    gl::Buffer vertices_, indices_;
+    gl::VertexArray vao_;
+    size_t triangles_ = 0;
+    float maxSpeed_ = 0.0f;
+    core::Bounds bounds_;
+    uint64_t generation_ = 0;
+};
+
+// Picks the field to show: `requested` if given (FieldError if absent), else the first.
+std::string selectField(const core::SurfaceMesh& mesh, const std::string& requested,
+                        const std::string& where);
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,36 @@
+#include "methods/isa/advection_mesh.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace flowsurf::methods::isa {
+
+AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes)
+    : viewport_(viewport),
+      gridRes_(gridRes),
+      vertices_(GLsizeiptr(gridRes + 1) * (gridRes + 1) * 4 * sizeof(float), nullptr, 0),
+      program_({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}}) {}
+
+void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& depth,
+                            const core::Camera& camera, float dt, float edgeEpsilon) {
+    program_.use();
+    glm::mat4 viewProj = camera.viewProjection(viewport_.aspect());
+    glm::mat4 inv = glm::inverse(viewProj);
+    glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    glUniformMatrix4fv(program_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
+    glUniform2f(program_.uniform("uViewport"), float(viewport_.width), float(viewport_.height));
+    glUniform1i(program_.uniform("uGridRes"), gridRes_);
+    glUniform1f(program_.uniform("uDt"), dt);
+    glUniform1f(program_.uniform("uEdgeEps"), edgeEpsilon);
+    glUniform1f(program_.uniform("uNear"), camera.nearPlane);
+    glUniform1f(program_.uniform("uFar"), camera.farPlane);
+    glUniform1i(program_.uniform("uOrtho"), camera.orthographic());
+    glBindTextureUnit(0, velocity.id());
+    glBindTextureUnit(1, depth.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices_.id());
+    GLuint groups = GLuint((gridRes_ + 1 + 15) / 16);
+    glDispatchCompute(groups, groups, 1);
+    // The next stage reads the buffer as vertex attributes.
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+}
+
+}  // namespace flowsurf::methods::isa

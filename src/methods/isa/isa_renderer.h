@@ -1,0 +1,45 @@
+// flowsurf — ISA, Image Space Advection [L §IV, ALGORITHMS.md §3]: the orchestrator.
+#pragma once
+
+#include "methods/common/frame.h"
+#include "methods/common/noise_injection.h"
+#include "methods/common/overlay.h"
+#include "methods/isa/advection_mesh.h"
+#include "methods/isa/texture_advection.h"
+#include "methods/isa/velocity_image.h"
+
+namespace flowsurf::methods::isa {
+
+class IsaRenderer final : public FlowMethod {
+public:
+    IsaRenderer(const MethodParams& params, const core::Viewport& viewport);
+    const char* name() const override { return "isa"; }
+    void renderFrame(const FrameInput& in) override;
+    const gl::Texture2D& flowTexture() const override { return flow_[current_]; }
+    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& surfaceDepth() const override { return velocityImage_.depth(); }
+    bool lastFrameDynamic() const override { return lastDynamic_; }
+
+private:
+    bool isDynamic(const FrameInput& in) const;
+
+    MethodParams params_;
+    core::Viewport viewport_;
+    VelocityImage velocityImage_;
+    AdvectionMesh advectionMesh_;
+    TextureAdvection textureAdvection_;
+    NoiseInjection noiseInjection_;
+    Overlay overlay_;
+    gl::Texture2D flow_[2];       // F_a ping-pong, R32F
+    gl::Framebuffer flowFbo_[2];
+    gl::Texture2D composite_;     // RGBA8
+    gl::Framebuffer compositeFbo_;
+    int current_ = 0;
+    // What the cached velocity image and advection mesh were made for (static case).
+    bool haveCache_ = false;
+    uint64_t cachedGeneration_ = 0;
+    core::Camera cachedCamera_;
+    bool lastDynamic_ = false;
+};
+
+}  // namespace flowsurf::methods::isa

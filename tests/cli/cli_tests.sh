@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Command-line tests: the documented commands work, bad input gets a one-line message
+# naming the file and the problem, a distinct non-zero exit code, and no partial output.
+set -u
+FLOWSURF=${1:?usage: cli_tests.sh path/to/flowsurf}
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+pass=0
+fail=0
+
+ok()   { pass=$((pass + 1)); echo "ok   - $1"; }
+bad()  { fail=$((fail + 1)); echo "FAIL - $1"; }
+
+# expect_fail NAME CODE PATTERN OUTPUT -- ARGS...: exit code CODE, stderr matches PATTERN,
+# OUTPUT (a file) does not exist afterwards.
+expect_fail() {
+    local name=$1 code=$2 pattern=$3 out=$4
+    shift 5
+    local err rc
+    err=$("$FLOWSURF" "$@" 2>&1 >/dev/null)
+    rc=$?
+    if [ "$rc" -ne "$code" ]; then bad "$name: exit $rc, expected $code ($err)"; return; fi
+    if ! grep -qE -- "$pattern" <<<"$err"; then bad "$name: message '$err' lacks /$pattern/"; return; fi
+    if [ "$(wc -l <<<"$err")" -gt 2 ]; then bad "$name: message longer than expected: $err"; return; fi
+    if [ -n "$out" ] && ls "$out"* >/dev/null 2>&1; then bad "$name: left output $(ls "$out"*)"; return; fi
+    ok "$name"
+}
+
+# --- files that go wrong --------------------------------------------------------
+: > "$WORK/empty.vtp"
+printf '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n<PolyData><Piece NumberOfPoints="4"' > "$WORK/truncated.vtp"
+head -c 3000 /dev/urandom > "$WORK/garbage.vtp"
+printf 'solid x\nendsolid x\n' > "$WORK/nogeometry.stl"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' > "$WORK/badindex.obj"
+
+expect_fail "missing file"        3 "nosuch.vtp"           "$WORK/o1.png" -- render "$WORK/nosuch.vtp" -o "$WORK/o1.png" -q
+expect_fail "empty file"          4 "empty.vtp"            "$WORK/o2.png" -- render "$WORK/empty.vtp" -o "$WORK/o2.png" -q
+expect_fail "truncated file"      4 "truncated.vtp"        "$WORK/o3.png" -- render "$WORK/truncated.vtp" -o "$WORK/o3.png" -q
+expect_fail "garbage file"        4 "garbage.vtp"          "$WORK/o4.png" -- render "$WORK/garbage.vtp" -o "$WORK/o4.png" -q
+expect_fail "no triangles"        4 "nogeometry.stl"       "$WORK/o5.png" -- render "$WORK/nogeometry.stl" -o "$WORK/o5.png" -q
+expect_fail "index out of range"  4 "badindex.obj"         "$WORK/o6.png" -- render "$WORK/badindex.obj" -o "$WORK/o6.png" -q
+expect_fail "geometry only"       5 "vector"               "$WORK/o7.png" -- render "$WORK/badindex.obj" -o "$WORK/o7.png" -q --field U
+expect_fail "unknown extension"   4 "\.xyz"                "$WORK/o8.png" -- render "$WORK/a.xyz" -o "$WORK/o8.png" -q
+expect_fail "missing field"       5 "no vector field 'p'"  "$WORK/o9.png" -- render builtin:sphere --field p -o "$WORK/o9.png" -q
+expect_fail "unknown builtin"     2 "unknown built-in"     "$WORK/oa.png" -- render builtin:nosuch -o "$WORK/oa.png" -q
+expect_fail "zero-size image"     2 "--size"               "$WORK/ob.png" -- render builtin:sphere --size 0x100 -o "$WORK/ob.png" -q
+expect_fail "absurd image size"   2 "out of range"         "$WORK/oc.png" -- render builtin:sphere --size 100000x100000 -o "$WORK/oc.png" -q
+expect_fail "unknown method"      2 "method"               "$WORK/od.png" -- render builtin:sphere --method lic -o "$WORK/od.png" -q
+expect_fail "bad output kind"     2 "\.gif"                "$WORK/oe.gif" -- render builtin:sphere -o "$WORK/oe.gif" -q
+expect_fail "unwritable output"   3 "nodir"                "$WORK/nodir/of.png" -- render builtin:sphere --size 64x64 --frames 2 -o "$WORK/nodir/of.png" -q
+expect_fail "info missing file"   3 "nosuch.vtu"           "" -- info "$WORK/nosuch.vtu"
+
+# --- commands that must work ------------------------------------------------------
+if "$FLOWSURF" render --list-builtins | grep -q sphere; then ok "list builtins"; else bad "list builtins"; fi
+if "$FLOWSURF" render --help | grep -q -- "--grid-res"; then ok "help lists options"; else bad "help lists options"; fi
+if "$FLOWSURF" info builtin:tori | grep -q triangles; then ok "info builtin"; else bad "info builtin"; fi
+if "$FLOWSURF" render builtin:sphere --size 96x64 --frames 3 -q -o "$WORK/s.png" --flow-texture "$WORK/f.png" \
+   && [ -s "$WORK/s.png" ] && [ -s "$WORK/f.png" ] && ! ls "$WORK"/*.tmp* >/dev/null 2>&1; then
+    ok "render png + flow texture"
+else
+    bad "render png + flow texture"
+fi
+if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 2 -q -o "$WORK/seq_%03d.png" && [ -s "$WORK/seq_002.png" ]; then
+    ok "render png sequence"
+else
+    bad "render png sequence"
+fi
+if command -v ffmpeg >/dev/null; then
+    if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 4 --orbit 2 -q -o "$WORK/a.mp4" && [ -s "$WORK/a.mp4" ]; then
+        ok "render mp4"
+    else
+        bad "render mp4"
+    fi
+fi
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,131 @@
+#include "gl_test_util.h"
+
+#include "gl/readback.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace flowsurf::test {
+
+namespace {
+// Debugging aid: FLOWSURF_TEST_DUMP=DIR writes each rendered result as PGM/PPM.
+void dumpImages(const Rendered& r, const std::string& dir) {
+    static int counter = 0;
+    std::string base = dir + "/" + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                       std::to_string(counter++);
+    if (FILE* f = std::fopen((base + "_flow.pgm").c_str(), "wb")) {
+        std::fprintf(f, "P5 %d %d 255\n", r.width, r.height);
+        for (int y = r.height - 1; y >= 0; --y)
+            for (int x = 0; x < r.width; ++x) std::fputc(int(std::clamp(r.f(x, y), 0.0f, 1.0f) * 255.0f), f);
+        std::fclose(f);
+    }
+    if (FILE* f = std::fopen((base + "_rgb.ppm").c_str(), "wb")) {
+        std::fprintf(f, "P6 %d %d 255\n", r.width, r.height);
+        std::fwrite(r.rgb.data(), 1, r.rgb.size(), f);
+        std::fclose(f);
+    }
+}
+}  // namespace
+
+Rendered renderScene(const core::Dataset& data, const std::string& method, const methods::MethodParams& params,
+                     const core::Viewport& viewport, const core::Camera& camera, int frames) {
+    methods::SurfaceGpu surface(data.steps.front().mesh, "velocity");
+    auto m = methods::makeMethod(method, params, viewport);
+    for (int k = 0; k <= frames; ++k) m->renderFrame({&surface, camera, uint32_t(k)});
+    Rendered r;
+    r.width = viewport.width;
+    r.height = viewport.height;
+    r.flow = gl::readChannel(m->flowTexture(), 0);
+    r.depth = gl::readDepth(m->surfaceDepth());
+    r.rgb = gl::readRgb8TopDown(m->composite());
+    if (const char* dir = std::getenv("FLOWSURF_TEST_DUMP")) dumpImages(r, dir);
+    return r;
+}
+
+core::Camera orthoFront(float height) {
+    core::Camera c;
+    c.eye = {0, 0, 5};
+    c.target = {0, 0, 0};
+    c.up = {0, 1, 0};
+    c.orthoHeight = height;
+    c.nearPlane = 1.0f;
+    c.farPlane = 9.0f;
+    return c;
+}
+
+float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int dx, int dy) {
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            sum += r.f(x, y);
+            sum2 += double(r.f(x, y)) * r.f(x, y);
+            ++n;
+        }
+    double mean = sum / n, var = sum2 / n - mean * mean;
+    for (int lag = 1; lag < 200; ++lag) {
+        double c = 0;
+        int m = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                int xs = x + lag * dx, ys = y + lag * dy;
+                if (xs < x0 || xs >= x1 || ys < y0 || ys >= y1) continue;
+                c += (r.f(x, y) - mean) * (r.f(xs, ys) - mean);
+                ++m;
+            }
+        if (m == 0 || c / m / var < 0.5) return float(lag);
+    }
+    return 200.0f;
+}
+
+float columnCorrelation(const Rendered& r, int a, int b, int y0, int y1) {
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+        double u = r.f(a, y), v = r.f(b, y);
+        sa += u; sb += v; saa += u * u; sbb += v * v; sab += u * v;
+        ++n;
+    }
+    double cov = sab / n - sa / n * sb / n;
+    double va = saa / n - sa / n * sa / n, vb = sbb / n - sb / n * sb / n;
+    return float(cov / std::sqrt(std::max(va * vb, 1e-20)));
+}
+
+float streakOrientation(const Rendered& r, int x, int y, float sigma) {
+    int rad = int(std::ceil(2.5f * sigma));
+    double jxx = 0, jxy = 0, jyy = 0;
+    for (int j = -rad; j <= rad; ++j)
+        for (int i = -rad; i <= rad; ++i) {
+            int px = x + i, py = y + j;
+            if (px < 1 || py < 1 || px >= r.width - 1 || py >= r.height - 1) continue;
+            if (!r.onSurface(px - 1, py) || !r.onSurface(px + 1, py) || !r.onSurface(px, py - 1) ||
+                !r.onSurface(px, py + 1))
+                continue;
+            double w = std::exp(-(i * i + j * j) / (2.0 * sigma * sigma));
+            double gx = 0.5 * (r.f(px + 1, py) - r.f(px - 1, py));
+            double gy = 0.5 * (r.f(px, py + 1) - r.f(px, py - 1));
+            jxx += w * gx * gx;
+            jxy += w * gx * gy;
+            jyy += w * gy * gy;
+        }
+    // Dominant gradient angle; streaks run perpendicular to it.
+    double gradAngle = 0.5 * std::atan2(2 * jxy, jxx - jyy);
+    double a = gradAngle + glm::half_pi<double>();
+    a = std::fmod(a + 2 * glm::pi<double>(), glm::pi<double>());
+    return float(a);
+}
+
+float orientationErrorDeg(float a, float b) {
+    float d = std::fmod(std::abs(a - b), glm::pi<float>());
+    d = std::min(d, glm::pi<float>() - d);
+    return glm::degrees(d);
+}
+
+}  // namespace flowsurf::test

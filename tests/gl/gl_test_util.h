@@ -1,0 +1,44 @@
+// flowsurf GL tests — rendering a scene with a method and measuring image properties
+// (correlation lengths, structure-tensor orientation) on the read-back result.
+#pragma once
+
+#include "core/camera.h"
+#include "core/mesh.h"
+#include "methods/common/frame.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace flowsurf::test {
+
+struct Rendered {
+    int width = 0, height = 0;
+    std::vector<float> flow;      // F_a, rows bottom to top
+    std::vector<float> depth;     // window depth, rows bottom to top
+    std::vector<uint8_t> rgb;     // composite RGB8, rows top to bottom
+    bool onSurface(int x, int y) const { return depth[size_t(y) * width + x] < 1.0f; }
+    float f(int x, int y) const { return flow[size_t(y) * width + x]; }
+};
+
+// Renders `frames` + 1 frames of `data` step 0 (field "velocity") with `method`.
+Rendered renderScene(const core::Dataset& data, const std::string& method, const methods::MethodParams& params,
+                     const core::Viewport& viewport, const core::Camera& camera, int frames);
+
+// Orthographic camera looking down -z at the origin, view height `height`.
+core::Camera orthoFront(float height);
+
+// Autocorrelation length of F_a along (dx, dy) in pixels: the first lag where the
+// normalised autocorrelation over the box drops below 0.5.
+float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int dx, int dy);
+
+// Pearson correlation of the columns x=a and x=b over rows y0..y1 of F_a.
+float columnCorrelation(const Rendered& r, int a, int b, int y0, int y1);
+
+// Direction of the streaks at (x, y): the minor eigenvector of the structure tensor
+// averaged with a Gaussian of `sigma` pixels; radians in [0, pi).
+float streakOrientation(const Rendered& r, int x, int y, float sigma);
+
+// Smallest angle between two undirected orientations, degrees in [0, 90].
+float orientationErrorDeg(float a, float b);
+
+}  // namespace flowsurf::test

@@ -1,0 +1,138 @@
+// ISA property tests [L §IV]: each asserts what a user sees, not just that it ran.
+#include "core/builtin_scenes.h"
+#include "gl_test_util.h"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+using namespace flowsurf;
+
+namespace {
+
+methods::MethodParams defaultParams() {
+    methods::MethodParams p;
+    p.common.noise.seed = 7;
+    return p;
+}
+
+}  // namespace
+
+// Uniform flow along x on a plane: streaks along x. The correlation length along the
+// flow must be several times the length across it.
+TEST(IsaProperties, UniformFlowStreaksAlongFlow) {
+    core::Dataset d = core::makeBuiltin("builtin:uniform-plane");
+    test::Rendered r = test::renderScene(d, "isa", defaultParams(), {256, 256}, test::orthoFront(2.2f), 80);
+    float along = test::correlationLength(r, 40, 40, 216, 216, 1, 0);
+    float across = test::correlationLength(r, 40, 40, 216, 216, 0, 1);
+    std::printf("correlation length along %.0f px, across %.0f px\n", along, across);
+    EXPECT_GE(along, 3.0f * across) << "along " << along << " px, across " << across << " px";
+}
+
+// Spinning sphere: the structure orientation of F_a matches the projected field
+// (median error <= 10 degrees) where the surface faces the camera and moves.
+TEST(IsaProperties, SphereOrientationMatchesProjectedField) {
+    core::Dataset d = core::makeBuiltin("builtin:sphere");
+    const core::Viewport vp{320, 320};
+    core::Camera cam = core::fitCamera(d.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    test::Rendered r = test::renderScene(d, "isa", defaultParams(), vp, cam, 100);
+    const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+    const glm::mat4 invVP = glm::inverse(cam.viewProjection(vp.aspect()));
+    std::vector<float> errors;
+    for (int y = 8; y < vp.height - 8; y += 6)
+        for (int x = 8; x < vp.width - 8; x += 6) {
+            if (!r.onSurface(x, y)) continue;
+            float depth = r.depth[size_t(y) * vp.width + x];
+            glm::vec4 h = invVP * glm::vec4((x + 0.5f) / vp.width * 2 - 1, (y + 0.5f) / vp.height * 2 - 1,
+                                            depth * 2 - 1, 1);
+            glm::vec3 p = glm::vec3(h) / h.w;
+            glm::vec3 toEye = glm::normalize(cam.eye - p);
+            if (glm::dot(glm::normalize(p), toEye) < 0.4f) continue;  // near the silhouette
+            glm::vec3 v = glm::cross(w, p);
+            glm::vec3 a = core::projectToPixels(cam, vp, p), b = core::projectToPixels(cam, vp, p + 0.01f * v);
+            glm::vec2 vPx = glm::vec2(b - a);
+            if (glm::length(vPx) < 0.01f * 0.4f * 120.0f) continue;  // near the rotation poles
+            float expected = std::fmod(std::atan2(vPx.y, vPx.x) + glm::two_pi<float>(), glm::pi<float>());
+            errors.push_back(test::orientationErrorDeg(test::streakOrientation(r, x, y, 4.0f), expected));
+        }
+    ASSERT_GT(errors.size(), 200u);
+    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+    float median = errors[errors.size() / 2];
+    std::printf("median orientation error %.2f deg over %zu samples\n", median, errors.size());
+    EXPECT_LE(median, 10.0f) << "over " << errors.size() << " samples";
+}
+
+// Texture clipping: every background pixel equals the background colour exactly.
+TEST(IsaProperties, BackgroundStaysBackgroundColour) {
+    core::Dataset d = core::makeBuiltin("builtin:tori");
+    methods::MethodParams p = defaultParams();
+    p.common.background = {0.2f, 0.4f, 0.6f};
+    const core::Viewport vp{256, 192};
+    core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.6f, 1.0f});
+    test::Rendered r = test::renderScene(d, "isa", p, vp, cam, 30);
+    const uint8_t expect[3] = {51, 102, 153};
+    int background = 0, wrong = 0;
+    for (int y = 0; y < vp.height; ++y)
+        for (int x = 0; x < vp.width; ++x) {
+            if (r.onSurface(x, y)) continue;
+            ++background;
+            const uint8_t* px = &r.rgb[(size_t(vp.height - 1 - y) * vp.width + x) * 3];
+            if (px[0] != expect[0] || px[1] != expect[1] || px[2] != expect[2]) ++wrong;
+        }
+    EXPECT_GT(background, vp.width * vp.height / 5);
+    EXPECT_EQ(wrong, 0) << "of " << background << " background pixels";
+}
+
+// Same inputs, seed and frame count: identical images.
+TEST(IsaProperties, DeterministicForSameSeed) {
+    core::Dataset d = core::makeBuiltin("builtin:vortex-plane");
+    const core::Viewport vp{200, 160};
+    core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.3f, 1.0f});
+    test::Rendered a = test::renderScene(d, "isa", defaultParams(), vp, cam, 40);
+    test::Rendered b = test::renderScene(d, "isa", defaultParams(), vp, cam, 40);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.flow, b.flow);
+    methods::MethodParams other = defaultParams();
+    other.common.noise.seed = 8;
+    test::Rendered c = test::renderScene(d, "isa", other, vp, cam, 40);
+    EXPECT_NE(a.flow, c.flow) << "a different seed must give a different texture";
+}
+
+// Occluding edge: the back plane flows along +x out from under the front plane's edge.
+// Render twice with the front plane's flow reversed: downstream of the edge the back
+// plane must not change (no front texture carried across) with edge blending on, and
+// must change with it off.
+TEST(IsaProperties, EdgeBlendingStopsTextureAtOccludingEdge) {
+    core::Dataset d = core::makeBuiltin("builtin:overlap-planes");
+    core::Dataset reversed = d;
+    auto& mesh = reversed.steps[0].mesh;
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        if (mesh.positions[i].z > -0.5f) mesh.fields[0].values[i] *= -1.0f;  // front plane only
+    const core::Viewport vp{256, 256};
+    core::Camera cam = test::orthoFront(2.2f);
+    const int edge = 128;  // the front plane's right edge x = 0 is at the image centre
+    auto meanDiff = [](const test::Rendered& a, const test::Rendered& b, int x0, int x1) {
+        double sum = 0;
+        int n = 0;
+        for (int y = 30; y < 226; ++y)
+            for (int x = x0; x < x1; ++x, ++n) sum += std::abs(a.f(x, y) - b.f(x, y));
+        return sum / n;
+    };
+    for (bool blending : {false, true}) {
+        methods::MethodParams p = defaultParams();
+        p.isa.edgeBlending = blending;
+        test::Rendered a = test::renderScene(d, "isa", p, vp, cam, 60);
+        test::Rendered b = test::renderScene(reversed, "isa", p, vp, cam, 60);
+        double front = meanDiff(a, b, edge - 40, edge - 2);
+        double downstream = meanDiff(a, b, edge + 2, edge + 8) / front;
+        std::printf("edge blending %s: downstream change %.3f of the front plane's\n", blending ? "on" : "off",
+                    downstream);
+        if (blending)
+            EXPECT_LT(downstream, 0.05) << "with edge blending the texture must not cross the edge";
+        else
+            EXPECT_GT(downstream, 0.3) << "without edge blending the texture should cross the edge";
+    }
+}

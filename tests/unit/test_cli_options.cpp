@@ -1,0 +1,82 @@
+// Option parsing of `flowsurf render`: the names scripts depend on, and refusals.
+#include "core/errors.h"
+#include "options.h"
+
+#include <gtest/gtest.h>
+
+using namespace flowsurf;
+using namespace flowsurf::app;
+
+namespace {
+RenderOptions parse(std::vector<std::string> args) {
+    CLI::App app;
+    RenderOptions o;
+    addRenderOptions(app, o);
+    std::vector<std::string> rev(args.rbegin(), args.rend());
+    app.parse(rev);
+    return o;
+}
+}  // namespace
+
+TEST(CliOptions, ParsesTheDocumentedNames) {
+    RenderOptions o = parse({"builtin:sphere", "--method", "isa", "--size", "640x480", "--frames", "12", "--seed",
+                             "9", "--eye", "1,2,3", "--target", "0,0,0", "--up", "0,0,1", "--fov", "40", "--orbit",
+                             "2", "--output", "a.mp4", "--flow-texture", "f.png", "--background", "#ff8000",
+                             "--grid-res", "128", "--step-px", "3", "--edge-epsilon", "0.02", "--alpha", "0.2",
+                             "--noise-scale", "4", "--beta", "0.3", "--edge-blending", "off", "--quiet"});
+    EXPECT_EQ(o.input, "builtin:sphere");
+    EXPECT_EQ(o.size.width, 640);
+    EXPECT_EQ(o.size.height, 480);
+    EXPECT_EQ(o.frames, 12);
+    EXPECT_EQ(o.params.common.noise.seed, 9u);
+    EXPECT_EQ(*o.eye, glm::vec3(1, 2, 3));
+    EXPECT_EQ(*o.up, glm::vec3(0, 0, 1));
+    EXPECT_FLOAT_EQ(o.fov, 40.0f);
+    EXPECT_FLOAT_EQ(o.orbit, 2.0f);
+    EXPECT_EQ(o.output, "a.mp4");
+    EXPECT_EQ(o.flowTexture, "f.png");
+    EXPECT_NEAR(o.params.common.background.g, 128.0f / 255.0f, 1e-6f);
+    EXPECT_EQ(o.params.isa.gridRes, 128);
+    EXPECT_FLOAT_EQ(o.params.common.stepPx, 3.0f);
+    EXPECT_FLOAT_EQ(o.params.isa.edgeEpsilon, 0.02f);
+    EXPECT_FLOAT_EQ(o.params.common.alpha, 0.2f);
+    EXPECT_FLOAT_EQ(o.params.common.noise.scale, 4.0f);
+    EXPECT_FLOAT_EQ(o.params.common.beta, 0.3f);
+    EXPECT_FALSE(o.params.isa.edgeBlending);
+    EXPECT_TRUE(o.quiet);
+    EXPECT_NO_THROW(validateRenderOptions(o));
+}
+
+TEST(CliOptions, RefusesOutOfRangeAndUnknownValues) {
+    EXPECT_THROW(parse({"x", "--grid-res", "32"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--grid-res", "2048"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--method", "lic"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--alpha", "1.5"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--frames", "0"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--size", "0x100"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--size", "100000x100000"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--size", "big"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--eye", "1,2"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--eye", "1,nan,2"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--background", "#12345"}), ConfigError);
+}
+
+TEST(CliOptions, OutputKindsAndValidation) {
+    EXPECT_EQ(outputKind("a.png"), OutputKind::Png);
+    EXPECT_EQ(outputKind("A.MP4"), OutputKind::Mp4);
+    EXPECT_EQ(outputKind("f_%04d.png"), OutputKind::PngSequence);
+    EXPECT_THROW(outputKind("a.gif"), ConfigError);
+    RenderOptions o = parse({"x", "--output", "a.png", "--flow-texture", "f.mp4"});
+    EXPECT_THROW(validateRenderOptions(o), ConfigError);
+    RenderOptions noInput;
+    EXPECT_THROW(validateRenderOptions(noInput), ConfigError);
+}
+
+TEST(CliOptions, SizeAndColourSyntaxes) {
+    EXPECT_EQ(parseSize("1920x1080").width, 1920);
+    EXPECT_EQ(parseSize("16X16").height, 16);
+    EXPECT_THROW(parseSize("1920x1080x3"), ConfigError);
+    EXPECT_EQ(parseColor("white"), glm::vec3(1.0f));
+    EXPECT_EQ(parseColor("0,0.5,1"), glm::vec3(0, 0.5f, 1));
+    EXPECT_THROW(parseColor("0,0.5,2"), ConfigError);
+}

@@ -1,0 +1,115 @@
+// Shared by the test_io_*.cpp unit tests: a fresh folder per test and small files.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace flowsurf::testing_io {
+
+namespace fs = std::filesystem;
+
+// ::testing::TempDir()/flowsurf_io_SUITE_TEST_PID, removed at the end of the test.
+class ScratchDir {
+public:
+    ScratchDir() {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::path(::testing::TempDir()) /
+                ("flowsurf_io_" + std::string(test->test_suite_name()) + "_" + test->name() + "_" +
+                 std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    const fs::path& path() const { return path_; }
+    // Names of everything in the folder (to check that no temporary is left behind).
+    std::vector<std::string> list() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path path_;
+};
+
+inline void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline vtkSmartPointer<vtkFloatArray> makeArray(const char* name, int components) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    return a;
+}
+
+// A flat nx × ny grid of unit quads in z = 0, point (i, j) at (i, j, 0), with
+//   point "U" = (1, 0.5 x, 0), point scalar "p" = x,
+//   cell "cellVec" = (cell index, 0, 2), cell scalar "cellId" = cell index.
+// Cells are quads (or split into two triangles each with `triangles`).
+inline vtkSmartPointer<vtkPolyData> makeGrid(int nx, int ny, bool triangles = false) {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto u = makeArray("U", 3);
+    auto p = makeArray("p", 1);
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            points->InsertNextPoint(i, j, 0);
+            u->InsertNextTuple3(1, 0.5 * i, 0);
+            p->InsertNextTuple1(i);
+        }
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    auto cellVec = makeArray("cellVec", 3);
+    auto cellId = makeArray("cellId", 1);
+    auto id = [nx](int i, int j) { return vtkIdType(j * (nx + 1) + i); };
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            vtkIdType q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+            if (triangles) {
+                vtkIdType a[3] = {q[0], q[1], q[2]}, b[3] = {q[0], q[2], q[3]};
+                polys->InsertNextCell(3, a);
+                polys->InsertNextCell(3, b);
+            } else {
+                polys->InsertNextCell(4, q);
+            }
+        }
+    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c) {
+        cellVec->InsertNextTuple3(double(c), 0, 2);
+        cellId->InsertNextTuple1(double(c));
+    }
+    auto grid = vtkSmartPointer<vtkPolyData>::New();
+    grid->SetPoints(points);
+    grid->SetPolys(polys);
+    grid->GetPointData()->AddArray(u);
+    grid->GetPointData()->AddArray(p);
+    grid->GetCellData()->AddArray(cellVec);
+    grid->GetCellData()->AddArray(cellId);
+    return grid;
+}
+
+}  // namespace flowsurf::testing_io

@@ -1,0 +1,206 @@
+// Bad input to the readers: each case throws the right type, names the file, and
+// prints nothing (VTK's own reports are captured, not shown).
+#include "core/errors.h"
+#include "io/dataset_reader.h"
+
+#include "test_io_common.h"
+
+#include <vtkOutputWindow.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+using namespace flowsurf;
+using namespace flowsurf::testing_io;
+
+namespace {
+
+// Runs readDataset and checks the exception type and that the message names `mustName`.
+template <class Error>
+void expectReadError(const std::string& path, const std::string& mustName,
+                     const std::string& mustSay = "") {
+    SCOPED_TRACE(path);
+    try {
+        io::readDataset(path);
+        ADD_FAILURE() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(mustName), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "wrong exception type: " << e.what();
+    }
+}
+
+void writeVtp(vtkPolyData* data, const std::string& path, int mode = vtkXMLWriter::Ascii,
+              bool zlib = false) {
+    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    w->SetInputData(data);
+    w->SetFileName(path.c_str());
+    w->SetDataMode(mode);
+    w->EncodeAppendedDataOff();
+    if (zlib) w->SetCompressorTypeToZLib();
+    else w->SetCompressorTypeToNone();
+    ASSERT_EQ(w->Write(), 1);
+}
+
+// A hand-written ASCII .vtp: three points, one triangle, with the given U values.
+std::string tinyVtp(const std::string& uValues, const std::string& connectivity = "0 1 2") {
+    return "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">\n"
+           "<PointData><DataArray type=\"Float32\" Name=\"U\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">" + uValues + "</DataArray></PointData>\n"
+           "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">"
+           "0 0 0 1 0 0 0 1 0</DataArray></Points>\n"
+           "<Polys><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">" +
+           connectivity + "</DataArray>\n"
+           "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n"
+           "</Piece></PolyData></VTKFile>\n";
+}
+
+}  // namespace
+
+TEST(IoReaders, MissingFileIsIoError) {
+    ScratchDir dir;
+    expectReadError<IoError>(dir.file("nope.vtp"), "nope.vtp: cannot open (No such file or directory)");
+    EXPECT_THROW(io::inspectFile(dir.file("nope.vtp")), IoError);
+    expectReadError<IoError>(dir.path().string(), dir.path().string(), "Is a directory");
+}
+
+TEST(IoReaders, UnknownExtensionIsFormatErrorListingSupported) {
+    ScratchDir dir;
+    writeText(dir.file("mesh.xyz"), "1 2 3\n");
+    expectReadError<FormatError>(dir.file("mesh.xyz"), "mesh.xyz", ".vtp .vtu .vtk");
+}
+
+TEST(IoReaders, EmptyFileIsFormatError) {
+    ScratchDir dir;
+    for (const char* name : {"e.vtp", "e.vtu", "e.vtk", "e.obj", "e.stl", "e.ply", "e.e", "e.case", "e.pvd"}) {
+        writeText(dir.file(name), "");
+        expectReadError<FormatError>(dir.file(name), name, "empty");
+    }
+}
+
+TEST(IoReaders, TruncatedVtpIsFormatErrorInEveryEncoding) {
+    ScratchDir dir;
+    struct Mode {
+        const char* name;
+        int mode;
+        bool zlib;
+    };
+    const Mode modes[] = {{"ascii.vtp", vtkXMLWriter::Ascii, false},
+                          {"base64.vtp", vtkXMLWriter::Binary, false},
+                          {"raw.vtp", vtkXMLWriter::Appended, false},
+                          {"zlib.vtp", vtkXMLWriter::Appended, true}};
+    for (const auto& m : modes) {
+        writeVtp(makeGrid(12, 10), dir.file(m.name), m.mode, m.zlib);
+        const std::string bytes = readBytes(dir.file(m.name));
+        // Cut points across header, arrays and (for appended) the raw block; not the
+        // closing tags, after which the data is complete.
+        for (int percent = 5; percent <= 90; percent += 5) {
+            const std::string cut = "cut" + std::to_string(percent) + "_" + m.name;
+            writeText(dir.file(cut), bytes.substr(0, bytes.size() * percent / 100));
+            expectReadError<FormatError>(dir.file(cut), cut);
+        }
+    }
+}
+
+TEST(IoReaders, GarbageBytesAreFormatError) {
+    ScratchDir dir;
+    std::string garbage(4096, '\0');
+    uint32_t state = 12345;  // our own LCG: the same bytes everywhere
+    for (auto& c : garbage) {
+        state = state * 1664525u + 1013904223u;
+        c = static_cast<char>(state >> 24);
+    }
+    // Not .stl: binary STL has no signature, so any bytes are some triangles.
+    for (const char* name : {"g.vtp", "g.vtu", "g.vtk", "g.ply", "g.obj", "g.e", "g.case", "g.pvd"}) {
+        writeText(dir.file(name), garbage);
+        expectReadError<FormatError>(dir.file(name), name);
+    }
+}
+
+TEST(IoReaders, MismatchedArrayLengthIsFormatError) {
+    ScratchDir dir;
+    writeText(dir.file("short.vtp"), tinyVtp("1 0 0 1 0 0"));  // 2 vectors for 3 points
+    expectReadError<FormatError>(dir.file("short.vtp"), "short.vtp", "U");
+    writeText(dir.file("ok.vtp"), tinyVtp("1 0 0 1 0 0 1 0 0"));
+    EXPECT_EQ(io::readDataset(dir.file("ok.vtp")).steps[0].mesh.triangleCount(), 1u);
+}
+
+TEST(IoReaders, OutOfRangeConnectivityIsFormatError) {
+    ScratchDir dir;
+    writeText(dir.file("index.vtp"), tinyVtp("1 0 0 1 0 0 1 0 0", "0 1 99"));
+    expectReadError<FormatError>(dir.file("index.vtp"), "index.vtp", "point 99");
+    // The same through VTK's legacy writer, which does not check indices either.
+    auto grid = makeGrid(1, 1, true);
+    vtkIdType bad[3] = {0, 1, 42};
+    grid->GetPolys()->InsertNextCell(3, bad);
+    grid->GetCellData()->Initialize();  // keep the cell arrays' length consistent
+    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
+    w->SetInputData(grid);
+    w->SetFileName(dir.file("index.vtk").c_str());
+    ASSERT_EQ(w->Write(), 1);
+    expectReadError<FormatError>(dir.file("index.vtk"), "index.vtk", "point 42");
+}
+
+TEST(IoReaders, NanVectorIsFormatError) {
+    ScratchDir dir;
+    auto grid = makeGrid(2, 2);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    grid->GetPointData()->GetArray("U")->SetTuple3(4, nan, 0, 0);
+    writeVtp(grid, dir.file("nan.vtp"));
+    expectReadError<FormatError>(dir.file("nan.vtp"), "nan.vtp", "'U' has a non-finite vector");
+    // A NaN in a cell vector reaches the points around it.
+    grid = makeGrid(2, 2);
+    grid->GetCellData()->GetArray("cellVec")->SetTuple3(0, 0, nan, 0);
+    writeVtp(grid, dir.file("cellnan.vtp"));
+    expectReadError<FormatError>(dir.file("cellnan.vtp"), "cellnan.vtp", "'cellVec'");
+}
+
+TEST(IoReaders, PointsWithoutTrianglesIsFormatError) {
+    ScratchDir dir;
+    auto grid = makeGrid(2, 1);
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    vtkIdType line[2] = {0, 1};
+    lines->InsertNextCell(2, line);
+    grid->SetPolys(vtkSmartPointer<vtkCellArray>::New());
+    grid->SetLines(lines);
+    grid->GetCellData()->Initialize();
+    writeVtp(grid, dir.file("lines.vtp"));
+    expectReadError<FormatError>(dir.file("lines.vtp"), "lines.vtp", "no triangles");
+    writeText(dir.file("comments.obj"), "# nothing here\n");
+    expectReadError<FormatError>(dir.file("comments.obj"), "comments.obj", "no points");
+}
+
+TEST(IoReaders, PvdErrorsNameCollectionAndMember) {
+    ScratchDir dir;
+    writeText(dir.file("missing.pvd"),
+              "<VTKFile type=\"Collection\"><Collection>"
+              "<DataSet timestep=\"0\" file=\"gone.vtp\"/></Collection></VTKFile>");
+    expectReadError<IoError>(dir.file("missing.pvd"), "missing.pvd", "gone.vtp: cannot open");
+    writeText(dir.file("bad.vtp"), "<VTKFile");
+    writeText(dir.file("bad.pvd"),
+              "<VTKFile type=\"Collection\"><Collection>"
+              "<DataSet timestep=\"0\" file=\"bad.vtp\"/></Collection></VTKFile>");
+    expectReadError<FormatError>(dir.file("bad.pvd"), "bad.pvd", "bad.vtp");
+    writeText(dir.file("none.pvd"), "<VTKFile type=\"Collection\"><Collection/></VTKFile>");
+    expectReadError<FormatError>(dir.file("none.pvd"), "none.pvd", "no DataSet");
+}
+
+TEST(IoReaders, BadFilesPrintNothingAndRestoreVtkOutput) {
+    ScratchDir dir;
+    writeText(dir.file("cut.vtp"), tinyVtp("1 0 0 1 0 0 1 0 0").substr(0, 200));
+    writeText(dir.file("text.vtk"), "hello\n");
+    writeText(dir.file("x.ply"), "ply\nformat ascii 1.0\nelement vertex 9\nend_header\n1 2\n");
+    writeText(dir.file("x.case"), "FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: missing.geo\n");
+    vtkOutputWindow* before = vtkOutputWindow::GetInstance();
+    ::testing::internal::CaptureStderr();
+    for (const char* name : {"cut.vtp", "text.vtk", "x.ply", "x.case"})
+        EXPECT_THROW(io::readDataset(dir.file(name)), FormatError) << name;
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(vtkOutputWindow::GetInstance(), before);
+}
