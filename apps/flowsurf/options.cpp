@@ -108,6 +108,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
     cmd.add_option("--step-px", p.common.stepPx, "Largest displacement per frame in pixels (dt)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 64.0f));
+    cmd.add_option("--speed-percentile", p.common.speedPercentile,
+                   "Clamp advection speed at this percentile of the surface's speeds (100: no clamp)")
+        ->group(gMethod)->capture_default_str()->check(CLI::Range(1.0f, 100.0f));
+    cmd.add_option_function<std::string>("--normalize", [&p](const std::string& s) { p.common.normalize = s == "on"; },
+                                         "on: unit-length vectors, uniform streaks (default); off: streak length shows speed")
+        ->group(gMethod)->check(CLI::IsMember({"on", "off"}));
     cmd.add_option("--noise-scale", p.common.noise.scale, "Noise cell size s in pixels (papers: 1-10)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(1.0f, 64.0f));
     cmd.add_option("--noise-period", p.common.noise.period, "Frames per cycle of each noise cell's profile")

@@ -28,8 +28,9 @@ int gridForTriangles(long tris, int minimum) {
 
 // Sphere in solid-body rotation about the axis (0.3, 1, 0.2): v = w x x.
 Dataset sphereScene(long tris) {
-    int n = gridForTriangles(tris > 0 ? tris : 20000, 8);
-    SurfaceMesh m = makeUvSphere(1.0f, n, std::max(4, n / 2) * 2 / 2);
+    // slices n, stacks n/2: about n^2 triangles.
+    int n = std::max(8, int(std::sqrt(double(tris > 0 ? tris : 40000))));
+    SurfaceMesh m = makeUvSphere(1.0f, n, std::max(4, n / 2));
     glm::vec3 w = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
     addField(m, [&](const glm::vec3& p, double) { return glm::cross(w, p); }, 0.0);
     return {"builtin:sphere", {{0.0, std::move(m)}}};

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace flowsurf::core {
 
@@ -38,6 +39,30 @@ Camera fitCamera(const Bounds& bounds, const Viewport& viewport, const glm::vec3
     c.eye = c.target + dir * dist;
     c.up = std::abs(dir.y) > 0.95f ? glm::vec3(0, 0, dir.y > 0 ? -1 : 1) : glm::vec3(0, 1, 0);
     fitClipPlanes(c, bounds);
+    // The sphere is conservative: move closer until the box corners fill the view
+    // (largest |ndc| about 0.92), by bisection on the distance.
+    auto extent = [&](const Camera& cam) {
+        float m = 0.0f;
+        glm::mat4 vp = cam.viewProjection(viewport.aspect());
+        for (int i = 0; i < 8; ++i) {
+            glm::vec3 p(i & 1 ? bounds.hi.x : bounds.lo.x, i & 2 ? bounds.hi.y : bounds.lo.y,
+                        i & 4 ? bounds.hi.z : bounds.lo.z);
+            glm::vec4 h = vp * glm::vec4(p, 1.0f);
+            if (h.w <= 0.0f) return 1e9f;
+            m = std::max({m, std::abs(h.x / h.w), std::abs(h.y / h.w)});
+        }
+        return m;
+    };
+    float lo = r * 0.2f, hi = dist;
+    for (int it = 0; it < 24; ++it) {
+        float mid = 0.5f * (lo + hi);
+        Camera t = c;
+        t.eye = c.target + dir * mid;
+        fitClipPlanes(t, bounds);
+        (extent(t) > 0.92f ? lo : hi) = mid;
+    }
+    c.eye = c.target + dir * hi;
+    fitClipPlanes(c, bounds);
     return c;
 }
 
@@ -65,9 +90,16 @@ Camera orbitCamera(const Camera& camera, float degrees) {
 
 float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds) {
     if (camera.orthographic()) return float(viewport.height) / camera.orthoHeight;
+    // The nearest box corner along the view axis bounds the scale of what is visible
+    // (the bounding sphere would be far too pessimistic for flat domains).
     glm::vec3 fwd = glm::normalize(camera.target - camera.eye);
-    float dc = glm::dot(bounds.center() - camera.eye, fwd);
-    float nearest = std::max(dc - bounds.radius(), camera.nearPlane);
+    float nearest = std::numeric_limits<float>::max();
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p(i & 1 ? bounds.hi.x : bounds.lo.x, i & 2 ? bounds.hi.y : bounds.lo.y,
+                    i & 4 ? bounds.hi.z : bounds.lo.z);
+        nearest = std::min(nearest, glm::dot(p - camera.eye, fwd));
+    }
+    nearest = std::max(nearest, camera.nearPlane);
     float viewHeight = 2.0f * nearest * std::tan(glm::radians(camera.fovDeg) * 0.5f);
     return float(viewport.height) / viewHeight;
 }

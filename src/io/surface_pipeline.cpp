@@ -61,9 +61,10 @@ void checkCells(vtkCellArray* cells, vtkIdType points, const char* kind, const s
     double range[2];
     cells->GetConnectivityArray()->GetRange(range, 0);
     if (range[0] < 0 || range[1] >= static_cast<double>(points))
-        throw FormatError(where + ": a " + kind + " cell refers to point " +
+        throw FormatError(where + ": a " + kind + " cell refers to point index " +
                           std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) +
-                          " but there are only " + std::to_string(points) + " points");
+                          " (counting from 0) but there are only " + std::to_string(points) +
+                          " points");
 }
 
 }  // namespace

@@ -107,6 +107,19 @@ std::string printable(const std::string& s, size_t maxLength = 300) {
     return out;
 }
 
+// Some readers report unreadable data only as a warning and return what they got:
+// the legacy reader's "Error reading ascii data. Possible mismatch of datasize with
+// declaration." for a truncated file, for instance. These count as errors.
+bool signalsBadData(const std::string& message) {
+    std::string m = message;
+    std::transform(m.begin(), m.end(), m.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const char* key : {"error reading", "premature", "unexpected end", "truncat",
+                            "mismatch of datasize", "end of file"})
+        if (m.find(key) != std::string::npos) return true;
+    return false;
+}
+
 }  // namespace
 
 std::string cleanVtkMessage(const char* text) {
@@ -175,7 +188,9 @@ void VtkMessageTrap::addError(const char* text) {
 
 void VtkMessageTrap::addWarning(const char* text) {
     std::string s = cleanVtkMessage(text);
-    if (!s.empty()) warnings_.push_back(s);
+    if (s.empty()) return;
+    if (signalsBadData(s)) errors_.push_back(s);
+    else warnings_.push_back(s);
 }
 
 void VtkMessageTrap::clear() {

@@ -2,6 +2,7 @@
 #include "io/vtk_sources.h"
 
 #include "core/errors.h"
+#include "io/ply_reader.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkExodusIIReader.h>
@@ -11,7 +12,6 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkOBJReader.h>
 #include <vtkOpenFOAMReader.h>
-#include <vtkPLYReader.h>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLDataElement.h>
@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -78,6 +79,28 @@ std::string fileStart(const std::string& path, size_t bytes) {
     return head;
 }
 
+// vtkSTLReader reads a truncated binary STL without complaint (fewer triangles).
+// Binary STL: 80-byte header, uint32 triangle count, 50 bytes per triangle. A file
+// starting with "solid" is ASCII unless its size matches the binary layout exactly.
+void checkBinaryStlSize(const std::string& path) {
+    const std::string head = fileStart(path, 84);
+    const size_t size = fs::file_size(path);
+    uint32_t count = 0;
+    if (head.size() == 84) {
+        for (int i = 3; i >= 0; --i) count = count * 256 + static_cast<unsigned char>(head[80 + i]);
+    }
+    const uint64_t binarySize = 84 + 50 * uint64_t(count);
+    size_t first = head.find_first_not_of(" \t\r\n");
+    const bool saysSolid = first != std::string::npos && head.compare(first, 5, "solid") == 0;
+    if (saysSolid || (head.size() == 84 && binarySize == size)) return;
+    if (head.size() < 84)
+        throw FormatError(path + ": not an STL file (too short for a binary STL header, no 'solid')");
+    if (binarySize > size)
+        throw FormatError(path + ": truncated binary STL: the header declares " + std::to_string(count) +
+                          " triangles (" + std::to_string(binarySize) + " bytes), the file has " +
+                          std::to_string(size) + " bytes");
+}
+
 // --- reader-backed sources -----------------------------------------------------------
 class AlgorithmSource : public StepSource {
 public:
@@ -112,6 +135,21 @@ private:
     vtkSmartPointer<vtkAlgorithm> reader_;
     std::string path_, format_;
     VtkMessageTrap& trap_;
+    std::vector<double> times_;
+};
+
+// A data object read without a VTK reader (PLY): one step, already in memory.
+class ReadySource : public StepSource {
+public:
+    ReadySource(vtkSmartPointer<vtkDataObject> data, std::string format)
+        : data_(std::move(data)), format_(std::move(format)) {}
+    std::string format() const override { return format_; }
+    const std::vector<double>& times() const override { return times_; }
+    vtkSmartPointer<vtkDataObject> readStep(size_t) override { return data_; }
+
+private:
+    vtkSmartPointer<vtkDataObject> data_;
+    std::string format_;
     std::vector<double> times_;
 };
 
@@ -296,11 +334,12 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     if (ext == ".vtu")
         return makeSource(readerFor<vtkXMLUnstructuredGridReader>(path), path, name, trap);
     if (ext == ".vtk") return openLegacy(path, trap);
-    if (ext == ".ply" && fileStart(path, 3) != "ply")
-        throw FormatError(path + ": not a PLY file (it does not start with 'ply')");
-    if (ext == ".ply") return makeSource(readerFor<vtkPLYReader>(path), path, name, trap);
+    if (ext == ".ply") return std::make_unique<ReadySource>(readPly(path), name);
     if (ext == ".obj") return makeSource(readerFor<vtkOBJReader>(path), path, name, trap);
-    if (ext == ".stl") return makeSource(readerFor<vtkSTLReader>(path), path, name, trap);
+    if (ext == ".stl") {
+        checkBinaryStlSize(path);
+        return makeSource(readerFor<vtkSTLReader>(path), path, name, trap);
+    }
     if (ext == ".foam") return openOpenFoam(path, trap);
     if (ext == ".case") {
         auto r = vtkSmartPointer<vtkGenericEnSightReader>::New();

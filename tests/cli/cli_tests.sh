@@ -32,6 +32,8 @@ printf '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n<PolyDat
 head -c 3000 /dev/urandom > "$WORK/garbage.vtp"
 printf 'solid x\nendsolid x\n' > "$WORK/nogeometry.stl"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' > "$WORK/badindex.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$WORK/plain.obj"
+echo "1 2 3" > "$WORK/a.xyz"
 
 expect_fail "missing file"        3 "nosuch.vtp"           "$WORK/o1.png" -- render "$WORK/nosuch.vtp" -o "$WORK/o1.png" -q
 expect_fail "empty file"          4 "empty.vtp"            "$WORK/o2.png" -- render "$WORK/empty.vtp" -o "$WORK/o2.png" -q
@@ -39,7 +41,7 @@ expect_fail "truncated file"      4 "truncated.vtp"        "$WORK/o3.png" -- ren
 expect_fail "garbage file"        4 "garbage.vtp"          "$WORK/o4.png" -- render "$WORK/garbage.vtp" -o "$WORK/o4.png" -q
 expect_fail "no triangles"        4 "nogeometry.stl"       "$WORK/o5.png" -- render "$WORK/nogeometry.stl" -o "$WORK/o5.png" -q
 expect_fail "index out of range"  4 "badindex.obj"         "$WORK/o6.png" -- render "$WORK/badindex.obj" -o "$WORK/o6.png" -q
-expect_fail "geometry only"       5 "vector"               "$WORK/o7.png" -- render "$WORK/badindex.obj" -o "$WORK/o7.png" -q --field U
+expect_fail "geometry only"       5 "vector"               "$WORK/o7.png" -- render "$WORK/plain.obj" -o "$WORK/o7.png" -q
 expect_fail "unknown extension"   4 "\.xyz"                "$WORK/o8.png" -- render "$WORK/a.xyz" -o "$WORK/o8.png" -q
 expect_fail "missing field"       5 "no vector field 'p'"  "$WORK/o9.png" -- render builtin:sphere --field p -o "$WORK/o9.png" -q
 expect_fail "unknown builtin"     2 "unknown built-in"     "$WORK/oa.png" -- render builtin:nosuch -o "$WORK/oa.png" -q

@@ -36,7 +36,7 @@ void dumpImages(const Rendered& r, const std::string& dir) {
 
 Rendered renderScene(const core::Dataset& data, const std::string& method, const methods::MethodParams& params,
                      const core::Viewport& viewport, const core::Camera& camera, int frames) {
-    methods::SurfaceGpu surface(data.steps.front().mesh, "velocity");
+    methods::SurfaceGpu surface(data.steps.front().mesh, "velocity", params.common);
     auto m = methods::makeMethod(method, params, viewport);
     for (int k = 0; k <= frames; ++k) m->renderFrame({&surface, camera, uint32_t(k)});
     Rendered r;

@@ -6,7 +6,9 @@
 #include "test_io_common.h"
 
 #include <vtkOutputWindow.h>
+#include <vtkPLYWriter.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkSTLWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <cmath>
@@ -108,6 +110,63 @@ TEST(IoReaders, TruncatedVtpIsFormatErrorInEveryEncoding) {
     }
 }
 
+TEST(IoReaders, TruncatedLegacyStlPlyAreFormatErrors) {
+    ScratchDir dir;
+    auto grid = makeGrid(12, 10, true);
+    auto legacy = vtkSmartPointer<vtkPolyDataWriter>::New();
+    legacy->SetInputData(grid);
+    legacy->SetFileName(dir.file("ascii.vtk").c_str());
+    ASSERT_EQ(legacy->Write(), 1);
+    legacy->SetFileName(dir.file("binary.vtk").c_str());
+    legacy->SetFileTypeToBinary();
+    ASSERT_EQ(legacy->Write(), 1);
+    auto stl = vtkSmartPointer<vtkSTLWriter>::New();
+    stl->SetInputData(grid);
+    stl->SetFileName(dir.file("binary.stl").c_str());
+    stl->SetFileTypeToBinary();
+    ASSERT_EQ(stl->Write(), 1);
+    auto ply = vtkSmartPointer<vtkPLYWriter>::New();
+    ply->SetInputData(grid);
+    ply->SetFileName(dir.file("ascii.ply").c_str());
+    ply->SetFileTypeToASCII();
+    ASSERT_EQ(ply->Write(), 1);
+    ply->SetFileName(dir.file("binary.ply").c_str());
+    ply->SetFileTypeToBinary();
+    ASSERT_EQ(ply->Write(), 1);
+    for (const char* name : {"ascii.vtk", "binary.vtk", "binary.stl", "ascii.ply", "binary.ply"}) {
+        ASSERT_NO_THROW(io::readDataset(dir.file(name))) << name;
+        const std::string bytes = readBytes(dir.file(name));
+        for (int percent = 5; percent <= 95; percent += 5) {
+            const std::string cut = "cut" + std::to_string(percent) + "_" + name;
+            writeText(dir.file(cut), bytes.substr(0, bytes.size() * percent / 100));
+            expectReadError<FormatError>(dir.file(cut), cut);
+        }
+    }
+}
+
+TEST(IoReaders, MalformedPlyHeadersAreFormatErrors) {
+    ScratchDir dir;
+    const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"ply\nformat weird 1.0\nelement vertex 1\n" + xyz + "end_header\n0 0 0\n", "unknown format"},
+        {"ply\nformat ascii 1.0\nelement vertex 9\nend_header\n1 2\n", "x, y, z"},
+        {"ply\nformat ascii 1.0\nelement vertex 4\n" + xyz, "no end_header"},
+        {"ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n", "before any element"},
+        {"ply\nformat ascii 1.0\nelement vertex -5\n" + xyz + "end_header\n", "count"},
+        {"ply\nformat ascii 1.0\nelement vertex 3\n" + xyz +
+             "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+             "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n",
+         "list length"},
+        {"ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "end_header\nA B C\n", "not a number"},
+    };
+    int i = 0;
+    for (const auto& [text, why] : cases) {
+        const std::string name = "bad" + std::to_string(i++) + ".ply";
+        writeText(dir.file(name), text);
+        expectReadError<FormatError>(dir.file(name), name, why);
+    }
+}
+
 TEST(IoReaders, GarbageBytesAreFormatError) {
     ScratchDir dir;
     std::string garbage(4096, '\0');
@@ -116,8 +175,8 @@ TEST(IoReaders, GarbageBytesAreFormatError) {
         state = state * 1664525u + 1013904223u;
         c = static_cast<char>(state >> 24);
     }
-    // Not .stl: binary STL has no signature, so any bytes are some triangles.
-    for (const char* name : {"g.vtp", "g.vtu", "g.vtk", "g.ply", "g.obj", "g.e", "g.case", "g.pvd"}) {
+    for (const char* name :
+         {"g.vtp", "g.vtu", "g.vtk", "g.ply", "g.obj", "g.stl", "g.e", "g.case", "g.pvd"}) {
         writeText(dir.file(name), garbage);
         expectReadError<FormatError>(dir.file(name), name);
     }
@@ -134,7 +193,7 @@ TEST(IoReaders, MismatchedArrayLengthIsFormatError) {
 TEST(IoReaders, OutOfRangeConnectivityIsFormatError) {
     ScratchDir dir;
     writeText(dir.file("index.vtp"), tinyVtp("1 0 0 1 0 0 1 0 0", "0 1 99"));
-    expectReadError<FormatError>(dir.file("index.vtp"), "index.vtp", "point 99");
+    expectReadError<FormatError>(dir.file("index.vtp"), "index.vtp", "point index 99");
     // The same through VTK's legacy writer, which does not check indices either.
     auto grid = makeGrid(1, 1, true);
     vtkIdType bad[3] = {0, 1, 42};
@@ -144,7 +203,7 @@ TEST(IoReaders, OutOfRangeConnectivityIsFormatError) {
     w->SetInputData(grid);
     w->SetFileName(dir.file("index.vtk").c_str());
     ASSERT_EQ(w->Write(), 1);
-    expectReadError<FormatError>(dir.file("index.vtk"), "index.vtk", "point 42");
+    expectReadError<FormatError>(dir.file("index.vtk"), "index.vtk", "point index 42");
 }
 
 TEST(IoReaders, NanVectorIsFormatError) {

@@ -17,6 +17,13 @@ struct CommonParams {
     float alpha = 0.1f;         // noise blend alpha, [L] 0.1..0.2
     float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
     float stepPx = 2.0f;         // largest displacement per frame, pixels ([L] dt)
+    // Advection speed: vectors faster than this percentile of the surface's speeds are
+    // clamped to it (CFD fields span decades; the max would freeze most of the
+    // surface). 100 = no clamping. Streak length shows speed below it.
+    float speedPercentile = 95.0f;
+    // Unit-length vectors: uniform streak length [W Fig. 5]. On by default, as in
+    // ParaView's Surface LIC: CFD wall fields span decades of magnitude.
+    bool normalize = true;
     core::NoiseParams noise;     // scale s (px), period, profile, seed
     float contrast = 3.0f;       // display gain of F_a about the noise mean (overlay only)
     Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s

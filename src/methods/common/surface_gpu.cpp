@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -21,17 +22,36 @@ std::string selectField(const core::SurfaceMesh& mesh, const std::string& reques
     throw FieldError(where + ": no vector field '" + requested + "' (available: " + names + ")");
 }
 
-SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName) {
+namespace {
+// The p-th percentile (0..100) of the non-zero values; 0 if none.
+float percentile(std::vector<float> values, float p) {
+    values.erase(std::remove(values.begin(), values.end(), 0.0f), values.end());
+    if (values.empty()) return 0.0f;
+    size_t k = std::min(values.size() - 1, size_t(double(p) / 100.0 * double(values.size() - 1) + 0.5));
+    std::nth_element(values.begin(), values.begin() + long(k), values.end());
+    return values[k];
+}
+}  // namespace
+
+SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
     const core::VectorField* field = mesh.findField(fieldName);
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
     std::vector<glm::vec3> vel = field->values;
     core::makeTangential(vel, mesh.normals);
+    std::vector<float> speed(vel.size());
+    for (size_t i = 0; i < vel.size(); ++i) speed[i] = glm::length(vel[i]);
+    colorSpeedMax_ = percentile(speed, 98.0f);
+    const float clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(speed, params.speedPercentile);
     std::vector<float> interleaved;
-    interleaved.reserve(mesh.vertexCount() * 9);
+    interleaved.reserve(mesh.vertexCount() * 10);
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
-        for (const glm::vec3* v : {&mesh.positions[i], &mesh.normals[i], static_cast<const glm::vec3*>(&vel[i])})
-            interleaved.insert(interleaved.end(), {v->x, v->y, v->z});
-        maxSpeed_ = std::max(maxSpeed_, glm::length(vel[i]));
+        glm::vec3 v = vel[i];
+        if (params.normalize && speed[i] > 0.0f) v /= speed[i];
+        else if (clampSpeed > 0.0f && speed[i] > clampSpeed) v *= clampSpeed / speed[i];
+        const glm::vec3& p = mesh.positions[i];
+        const glm::vec3& n = mesh.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, speed[i]});
+        maxSpeed_ = std::max(maxSpeed_, glm::length(v));
     }
     bounds_ = mesh.bounds();
     triangles_ = mesh.triangleCount();
@@ -39,11 +59,12 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     indices_ = gl::Buffer(GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)), mesh.triangles.data(), 0);
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();
-    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, 9 * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, 10 * sizeof(float));
     glVertexArrayElementBuffer(vao, indices_.id());
-    for (GLuint a = 0; a < 3; ++a) {
+    // 0: position, 1: normal, 2: advection velocity (P-space), 3: true speed.
+    for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+        glVertexArrayAttribFormat(vao, a, a < 3 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
         glVertexArrayAttribBinding(vao, a, 0);
     }
     generation_ = nextGeneration++;

@@ -4,6 +4,7 @@
 
 #include "core/mesh.h"
 #include "gl/objects.h"
+#include "methods/common/params.h"
 
 #include <string>
 
@@ -12,13 +13,17 @@ namespace flowsurf::methods {
 class SurfaceGpu {
 public:
     SurfaceGpu() = default;
-    // Uploads `mesh` with the vector field `fieldName` made tangential. Throws FieldError.
-    SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName);
+    // Uploads `mesh` with the vector field `fieldName` made tangential, scaled for
+    // advection as `params` say (speedPercentile, normalize). Throws FieldError.
+    SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {});
 
     void draw() const;  // binds the VAO and draws the triangles
     GLuint vertexArray() const { return vao_.id(); }
     size_t triangleCount() const { return triangles_; }
+    // Largest speed of the advection velocity (after clamping/normalising): sets dt.
     float maxSpeed() const { return maxSpeed_; }
+    // Top of the colour map's speed range (98th percentile of the true speed).
+    float colorSpeedMax() const { return colorSpeedMax_; }
     const core::Bounds& bounds() const { return bounds_; }
     // Increments with every upload: methods compare it to see the dynamic case.
     uint64_t generation() const { return generation_; }
@@ -28,6 +33,7 @@ private:
     gl::VertexArray vao_;
     size_t triangles_ = 0;
     float maxSpeed_ = 0.0f;
+    float colorSpeedMax_ = 0.0f;
     core::Bounds bounds_;
     uint64_t generation_ = 0;
 };

@@ -69,7 +69,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
     overlay_.apply(flow_[current_], velocityImage_.depth(), velocityImage_.shade(), compositeFbo_,
-                   in.surface->maxSpeed());
+                   in.surface->colorSpeedMax());
     timer_.endFrame();
 }
 

@@ -1,0 +1,283 @@
+// Sections: scalar types · header · body values · readPly.
+#include "io/ply_reader.h"
+
+#include "core/errors.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+namespace flowsurf::io::detail {
+
+namespace {
+
+// --- scalar types ----------------------------------------------------------------------
+enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+bool parseScalar(const std::string& name, Scalar& out) {
+    static const std::pair<const char*, Scalar> kNames[] = {
+        {"char", Scalar::Int8},     {"int8", Scalar::Int8},      {"uchar", Scalar::UInt8},
+        {"uint8", Scalar::UInt8},   {"short", Scalar::Int16},    {"int16", Scalar::Int16},
+        {"ushort", Scalar::UInt16}, {"uint16", Scalar::UInt16},  {"int", Scalar::Int32},
+        {"int32", Scalar::Int32},   {"uint", Scalar::UInt32},    {"uint32", Scalar::UInt32},
+        {"float", Scalar::Float32}, {"float32", Scalar::Float32}, {"double", Scalar::Float64},
+        {"float64", Scalar::Float64}};
+    for (const auto& [n, s] : kNames)
+        if (name == n) {
+            out = s;
+            return true;
+        }
+    return false;
+}
+
+size_t sizeOf(Scalar s) {
+    switch (s) {
+        case Scalar::Int8: case Scalar::UInt8: return 1;
+        case Scalar::Int16: case Scalar::UInt16: return 2;
+        case Scalar::Float64: return 8;
+        default: return 4;
+    }
+}
+
+// --- header ----------------------------------------------------------------------------
+struct Property {
+    std::string name;
+    Scalar type = Scalar::Float32;
+    bool isList = false;
+    Scalar countType = Scalar::UInt8;
+};
+struct Element {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<Property> properties;
+};
+enum class Encoding { Ascii, LittleEndian, BigEndian };
+struct Header {
+    Encoding encoding = Encoding::Ascii;
+    std::vector<Element> elements;
+    size_t dataStart = 0;
+};
+
+Header parseHeader(const std::string& bytes, const std::string& path) {
+    Header h;
+    bool haveFormat = false;
+    size_t pos = 0;
+    for (int lineNo = 1;; ++lineNo) {
+        size_t end = bytes.find('\n', pos);
+        if (end == std::string::npos) throw FormatError(path + ": the PLY header has no end_header line");
+        std::istringstream line(bytes.substr(pos, end - pos));
+        pos = end + 1;
+        auto bad = [&](const std::string& why) {
+            return FormatError(path + ": PLY header line " + std::to_string(lineNo) + ": " + why);
+        };
+        std::string key, a, b, c;
+        line >> key;
+        if (lineNo == 1) {
+            if (key != "ply") throw bad("the file does not start with 'ply'");
+        } else if (key == "format") {
+            line >> a >> b;
+            if (a == "ascii") h.encoding = Encoding::Ascii;
+            else if (a == "binary_little_endian") h.encoding = Encoding::LittleEndian;
+            else if (a == "binary_big_endian") h.encoding = Encoding::BigEndian;
+            else throw bad("unknown format '" + a + "'");
+            haveFormat = true;
+        } else if (key == "element") {
+            Element e;
+            line >> e.name >> a;
+            auto [p, ec] = std::from_chars(a.data(), a.data() + a.size(), e.count);
+            if (e.name.empty() || ec != std::errc() || p != a.data() + a.size())
+                throw bad("element needs a name and a count, not '" + a + "'");
+            h.elements.push_back(e);
+        } else if (key == "property") {
+            if (h.elements.empty()) throw bad("property before any element");
+            Property p;
+            line >> a;
+            if (a == "list") {
+                p.isList = true;
+                line >> b >> c >> p.name;
+                if (!parseScalar(b, p.countType) || !parseScalar(c, p.type)) throw bad("unknown list types");
+            } else {
+                line >> p.name;
+                if (!parseScalar(a, p.type)) throw bad("unknown property type '" + a + "'");
+            }
+            if (p.name.empty()) throw bad("property without a name");
+            h.elements.back().properties.push_back(p);
+        } else if (key == "end_header") {
+            if (!haveFormat) throw bad("end_header before any format line");
+            h.dataStart = pos;
+            return h;
+        } else if (key != "comment" && key != "obj_info" && !key.empty()) {
+            throw bad("unknown keyword '" + key + "'");
+        }
+    }
+}
+
+// --- body values -----------------------------------------------------------------------
+class Body {
+public:
+    Body(const std::string& bytes, size_t pos, Encoding encoding)
+        : bytes_(bytes), pos_(pos), encoding_(encoding) {}
+
+    // False at the end of the data or on a token that is not a number.
+    bool read(Scalar type, double& value) {
+        return encoding_ == Encoding::Ascii ? readAscii(value) : readBinary(type, value);
+    }
+    size_t remaining() const { return bytes_.size() - pos_; }
+
+private:
+    bool readAscii(double& value) {
+        const char* s = bytes_.data();
+        while (pos_ < bytes_.size() && std::isspace(static_cast<unsigned char>(s[pos_]))) ++pos_;
+        size_t end = pos_;
+        while (end < bytes_.size() && !std::isspace(static_cast<unsigned char>(s[end]))) ++end;
+        if (end == pos_) return false;
+        auto [p, ec] = std::from_chars(s + pos_, s + end, value);
+        if (ec != std::errc() || p != s + end) return false;
+        pos_ = end;
+        return true;
+    }
+
+    template <class T>
+    double take() {
+        T v;
+        std::memcpy(&v, bytes_.data() + pos_, sizeof v);
+        const bool swap = (encoding_ == Encoding::BigEndian) != (std::endian::native == std::endian::big);
+        if (swap && sizeof v > 1) {
+            auto* b = reinterpret_cast<unsigned char*>(&v);
+            std::reverse(b, b + sizeof v);
+        }
+        pos_ += sizeof v;
+        return static_cast<double>(v);
+    }
+
+    bool readBinary(Scalar type, double& value) {
+        if (remaining() < sizeOf(type)) return false;
+        switch (type) {
+            case Scalar::Int8: value = take<int8_t>(); break;
+            case Scalar::UInt8: value = take<uint8_t>(); break;
+            case Scalar::Int16: value = take<int16_t>(); break;
+            case Scalar::UInt16: value = take<uint16_t>(); break;
+            case Scalar::Int32: value = take<int32_t>(); break;
+            case Scalar::UInt32: value = take<uint32_t>(); break;
+            case Scalar::Float32: value = take<float>(); break;
+            case Scalar::Float64: value = take<double>(); break;
+        }
+        return true;
+    }
+
+    const std::string& bytes_;
+    size_t pos_;
+    Encoding encoding_;
+};
+
+std::string number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+int indexOf(const Element& e, const char* name) {
+    for (size_t i = 0; i < e.properties.size(); ++i)
+        if (!e.properties[i].isList && e.properties[i].name == name) return int(i);
+    return -1;
+}
+
+// Smallest size one item can have: a count larger than the data allows is refused
+// before anything is allocated for it.
+uint64_t minItemBytes(const Element& e, Encoding encoding) {
+    uint64_t n = 0;
+    for (const auto& p : e.properties)
+        n += encoding == Encoding::Ascii ? 2 : sizeOf(p.isList ? p.countType : p.type);
+    return n;
+}
+
+}  // namespace
+
+// --- readPly ---------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> readPly(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const Header header = parseHeader(bytes, path);
+
+    auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
+                               [](const Element& e) { return e.name == "vertex"; });
+    if (vertex == header.elements.end() || indexOf(*vertex, "x") < 0 || indexOf(*vertex, "y") < 0 ||
+        indexOf(*vertex, "z") < 0)
+        throw FormatError(path + ": the PLY file has no vertex element with x, y, z properties");
+
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto normals = vtkSmartPointer<vtkFloatArray>::New();
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    Body body(bytes, header.dataStart, header.encoding);
+
+    for (const Element& e : header.elements) {
+        const uint64_t need = minItemBytes(e, header.encoding);
+        if (need > 0 && e.count > body.remaining() / need)
+            throw FormatError(path + ": truncated PLY: the header declares " + std::to_string(e.count) +
+                              " '" + e.name + "' items, more than the rest of the file can hold");
+        const bool isVertex = &e == &*vertex;
+        const int xyz[3] = {indexOf(e, "x"), indexOf(e, "y"), indexOf(e, "z")};
+        const int nxyz[3] = {indexOf(e, "nx"), indexOf(e, "ny"), indexOf(e, "nz")};
+        const bool hasNormals = isVertex && nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+        std::vector<double> values(e.properties.size());
+        std::vector<vtkIdType> ids;
+        for (uint64_t item = 0; item < e.count; ++item) {
+            auto fail = [&](const Property& p, const std::string& why) {
+                return FormatError(path + ": PLY element '" + e.name + "' item " + std::to_string(item) +
+                                   " of " + std::to_string(e.count) + ", property '" + p.name + "': " + why);
+            };
+            for (size_t k = 0; k < e.properties.size(); ++k) {
+                const Property& p = e.properties[k];
+                if (!p.isList) {
+                    if (!body.read(p.type, values[k])) throw fail(p, "truncated or not a number");
+                    continue;
+                }
+                double count;
+                if (!body.read(p.countType, count)) throw fail(p, "truncated or not a number");
+                if (count < 0 || count != std::floor(count) || count > double(body.remaining()))
+                    throw fail(p, "bad list length " + number(count));
+                const bool keep = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+                ids.clear();
+                for (int i = 0; i < int(count); ++i) {
+                    double v;
+                    if (!body.read(p.type, v)) throw fail(p, "truncated or not a number");
+                    if (keep && (v < 0 || v != std::floor(v) || v > 9.0e15))
+                        throw fail(p, "bad vertex index " + number(v));
+                    if (keep) ids.push_back(static_cast<vtkIdType>(v));
+                }
+                if (keep && ids.size() >= 3) polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
+            }
+            if (isVertex) {
+                points->InsertNextPoint(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+                if (hasNormals) normals->InsertNextTuple3(values[nxyz[0]], values[nxyz[1]], values[nxyz[2]]);
+            }
+        }
+    }
+
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetPolys(polys);
+    if (normals->GetNumberOfTuples() > 0) poly->GetPointData()->SetNormals(normals);
+    return poly;
+}
+
+}  // namespace flowsurf::io::detail
