@@ -125,6 +125,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--seed", p.common.noise.seed, "Noise seed")->group(gMethod)->capture_default_str();
     cmd.add_option("--grid-res", p.isa.gridRes, "ISA advection mesh resolution R (R x R cells)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(64, 1024));
+    cmd.add_option_function<std::string>("--isa-warp", [&p](const std::string& s) {
+        p.isa.warp = s == "mesh" ? methods::IsaWarp::Mesh : methods::IsaWarp::Pixel;
+    }, "ISA texture advection: pixel (mesh interpolated per pixel, default) or mesh (draw the R x R grid)")
+        ->group(gMethod)->check(CLI::IsMember({"pixel", "mesh"}));
     cmd.add_option("--edge-epsilon", p.isa.edgeEpsilon, "ISA edge detection eps [L eq. 14], depth range per pixel")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 10.0f));
     cmd.add_option_function<std::string>("--edge-blending", [&p](const std::string& s) { p.isa.edgeBlending = s == "on"; },

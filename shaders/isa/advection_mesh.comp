@@ -1,12 +1,13 @@
 // ISA stage 2, advection mesh [L §IV-D.1, eq. 12] with edge detection (eq. 14):
 // for each vertex x' of the R x R image grid on the surface, v' = T(x + v dt) - T(x)
 // and the texture coordinate x' - v' (backward integration). Output per vertex:
-// (texcoord in [0,1]^2, edge flag, 0). The static case reuses this buffer.
+// (texcoord in [0,1]^2, edge flag, 0) in an (R+1)^2 RGBA32F image that the static
+// case reuses.
 #include "isa/edge_detection.glsl"
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uVelocity;  // RGBA32F, xyz P-space velocity
 layout(binding = 1) uniform sampler2D uDepth;     // window depth, 1 = background
-layout(std430, binding = 0) writeonly buffer Mesh { vec4 vertexOut[]; };
+layout(binding = 0, rgba32f) writeonly uniform image2D uMesh;  // (R+1)^2 vertices
 uniform mat4 uViewProj;
 uniform mat4 uInvViewProj;
 uniform vec2 uViewport;    // pixels
@@ -41,5 +42,5 @@ void main() {
         float depthPrev = texelFetch(uDepth, prevTexel, 0).r;
         edge = edgeFlag(depthK, depthPrev, pK, pPrev, uEdgeEps, uNear, uFar, uOrtho != 0);
     }
-    vertexOut[g.y * (uGridRes + 1) + g.x] = vec4(pPrev / uViewport, edge, 0.0);
+    imageStore(uMesh, g, vec4(pPrev / uViewport, edge, 0.0));
 }

@@ -5,10 +5,20 @@
 layout(binding = 0) uniform sampler2D uPrevFlow;  // F_a(k-1), R32F, linear filtering
 uniform int uEdgeBlending;
 uniform float uGray;
+#ifdef PER_PIXEL
+layout(binding = 1) uniform sampler2D uMesh;
+in vec2 vGridUv;
+#else
 in vec2 vTexcoord;
 in float vEdge;
+#endif
 out vec4 outFlow;
 void main() {
+#ifdef PER_PIXEL
+    vec4 m = texture(uMesh, vGridUv);
+    vec2 vTexcoord = m.xy;
+    float vEdge = m.z;
+#endif
     float f = texture(uPrevFlow, vTexcoord).r;
     if (uEdgeBlending != 0 && vEdge > 1e-3) f = uGray;
     outFlow = vec4(f, 0.0, 0.0, 1.0);

@@ -2,6 +2,7 @@
 #include "io/vtk_sources.h"
 
 #include "core/errors.h"
+#include "io/exodus_check.h"
 #include "io/ply_reader.h"
 
 #include <vtkAlgorithm.h>
@@ -208,11 +209,7 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap
 }
 
 std::unique_ptr<StepSource> openExodus(const std::string& path, VtkMessageTrap& trap) {
-    // The Exodus library prints its own complaints to stderr, past VTK's output window;
-    // refuse files that are not NetCDF or HDF5 (its two containers) before it sees them.
-    const std::string head = fileStart(path, 8);
-    if (head.rfind("CDF", 0) != 0 && head != "\x89HDF\r\n\x1a\n")
-        throw FormatError(path + ": not an Exodus II file (neither NetCDF nor HDF5)");
+    checkExodusFile(path);  // what the Exodus library would print, crash on or miss
     auto r = readerFor<vtkExodusIIReader>(path);
     return makeSource(r, path, "Exodus II", trap, [&] {
         // The reader loads no result variables unless asked.

@@ -1,5 +1,6 @@
 // Readers on small files written here (VTK writers, or text for OBJ/STL/PLY/OpenFOAM):
 // counts after triangulation, field names and values, cell data → point data, time steps.
+#include "core/errors.h"
 #include "io/dataset_reader.h"
 
 #include "test_io_common.h"
@@ -250,4 +251,89 @@ TEST(IoReaders, InspectFileListsPointAndCellArrays) {
     EXPECT_NE(text.find("grid.vtp"), std::string::npos);
     EXPECT_NE(text.find("9 points, 8 triangles"), std::string::npos);
     EXPECT_NE(text.find("Vector fields U, cellVec"), std::string::npos);
+}
+
+namespace {
+
+std::string foamFile(const char* cls, const char* object, const std::string& body) {
+    return std::string("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class ") + cls +
+           ";\n    object " + object + ";\n}\n" + body;
+}
+
+// A one-cell OpenFOAM case: a unit cube with patches "bottom" (1 face) and "walls" (5),
+// time directories 0 and 1 with U = (t, 0, 0) on bottom and (1, 2, t) on walls.
+void writeCubeCase(const ScratchDir& dir) {
+    for (const char* sub : {"system", "constant/polyMesh", "0", "1"})
+        std::filesystem::create_directories(dir.path() / sub);
+    writeText(dir.file("cube.foam"), "");
+    writeText(dir.file("system/controlDict"),
+              foamFile("dictionary", "controlDict",
+                       "application icoFoam;\nstartTime 0;\nendTime 1;\ndeltaT 1;\n"));
+    writeText(dir.file("constant/polyMesh/points"),
+              foamFile("vectorField", "points",
+                       "8\n(\n(0 0 0)\n(1 0 0)\n(1 1 0)\n(0 1 0)\n(0 0 1)\n(1 0 1)\n(1 1 1)\n(0 1 1)\n)\n"));
+    writeText(dir.file("constant/polyMesh/faces"),
+              foamFile("faceList", "faces",
+                       "6\n(\n4(0 3 2 1)\n4(4 5 6 7)\n4(0 1 5 4)\n4(3 7 6 2)\n4(0 4 7 3)\n4(1 2 6 5)\n)\n"));
+    writeText(dir.file("constant/polyMesh/owner"), foamFile("labelList", "owner", "6\n(\n0 0 0 0 0 0\n)\n"));
+    writeText(dir.file("constant/polyMesh/neighbour"), foamFile("labelList", "neighbour", "0\n(\n)\n"));
+    writeText(dir.file("constant/polyMesh/boundary"),
+              foamFile("polyBoundaryMesh", "boundary",
+                       "2\n(\nbottom\n{\ntype wall;\nnFaces 1;\nstartFace 0;\n}\n"
+                       "walls\n{\ntype wall;\nnFaces 5;\nstartFace 1;\n}\n)\n"));
+    for (const char* t : {"0", "1"})
+        writeText(dir.file(std::string(t) + "/U"),
+                  foamFile("volVectorField", "U",
+                           std::string("dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (1 0 0);\n"
+                                       "boundaryField\n{\nbottom\n{\ntype fixedValue;\nvalue uniform (") +
+                               t + " 0 0);\n}\nwalls\n{\ntype fixedValue;\nvalue uniform (1 2 " + t +
+                               ");\n}\n}\n"));
+}
+
+}  // namespace
+
+TEST(IoReaders, OpenFoamBoundaryPatchesAndTimeDirectories) {
+    ScratchDir dir;
+    writeCubeCase(dir);
+    core::Dataset ds = io::readDataset(dir.file("cube.foam"));
+    ASSERT_EQ(ds.steps.size(), 2u);  // 0/ included
+    EXPECT_DOUBLE_EQ(ds.steps[1].time, 1.0);
+    for (const auto& step : ds.steps) {
+        // Two patch blocks, merged: 4 + 8 points, 6 quads. No internal mesh.
+        EXPECT_EQ(step.mesh.vertexCount(), 12u);
+        EXPECT_EQ(step.mesh.triangleCount(), 12u);
+        ASSERT_NE(step.mesh.findField("U"), nullptr);
+    }
+    // Patch values reach the points: at t = 1 every point is (1, 0, 0) or (1, 2, 1).
+    for (const auto& u : field(ds.steps[1].mesh, "U").values)
+        EXPECT_TRUE(u == glm::vec3(1, 0, 0) || u == glm::vec3(1, 2, 1)) << u.x << " " << u.y << " " << u.z;
+    // A broken mesh file is a FormatError naming the case.
+    writeText(dir.file("constant/polyMesh/faces"), foamFile("faceList", "faces", "6\n(\n4(0 3 2 1)\n"));
+    EXPECT_THROW(io::readDataset(dir.file("cube.foam")), FormatError);
+}
+
+TEST(IoReaders, EnSightGoldAsciiWithTimeSteps) {
+    ScratchDir dir;
+    writeText(dir.file("t.case"),
+              "FORMAT\ntype: ensight gold\n\nGEOMETRY\nmodel: mesh.geo\n\nVARIABLE\n"
+              "vector per node: U U.****\n\nTIME\ntime set: 1\nnumber of steps: 2\n"
+              "filename start number: 0\nfilename increment: 1\ntime values: 0.0 0.5\n");
+    auto column = [](std::initializer_list<double> values) {
+        std::string s;
+        for (double v : values) s += " " + std::to_string(v) + "\n";
+        return s;
+    };
+    writeText(dir.file("mesh.geo"),
+              "EnSight test\ngeometry\nnode id off\nelement id off\npart\n         1\nquad\n"
+              "coordinates\n         4\n" + column({0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0}) +
+              "quad4\n         1\n         1         2         3         4\n");
+    for (int t : {0, 1})
+        writeText(dir.file("U.000" + std::to_string(t)),
+                  "vector per node\npart\n         1\ncoordinates\n" +
+                      column({1, 1, 1, 1, double(t), double(t), double(t), double(t), 0, 0, 0, 0}));
+    core::Dataset ds = io::readDataset(dir.file("t.case"));
+    ASSERT_EQ(ds.steps.size(), 2u);
+    EXPECT_DOUBLE_EQ(ds.steps[1].time, 0.5);
+    EXPECT_EQ(ds.steps[1].mesh.triangleCount(), 2u);
+    EXPECT_EQ(field(ds.steps[1].mesh, "U").values[2], glm::vec3(1, 1, 0));
 }

@@ -32,8 +32,12 @@ struct CommonParams {
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
 };
 
+// How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
+enum class IsaWarp { Pixel, Mesh };
+
 // ISA only, [L §IV-C.1..IV-F.1].
 struct IsaParams {
+    IsaWarp warp = IsaWarp::Pixel;  // Mesh: draw the R x R grid as in the paper
     int gridRes = 256;           // R: advection mesh cells per side, 64..1024
     float edgeEpsilon = 0.01f;   // eps of eq. 14: depth range fraction per pixel
     bool edgeBlending = true;    // blend gray at edge advection points

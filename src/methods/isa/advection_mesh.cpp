@@ -7,7 +7,7 @@ namespace flowsurf::methods::isa {
 AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes)
     : viewport_(viewport),
       gridRes_(gridRes),
-      vertices_(GLsizeiptr(gridRes + 1) * (gridRes + 1) * 4 * sizeof(float), nullptr, 0),
+      vertices_(GL_RGBA32F, gridRes + 1, gridRes + 1, GL_LINEAR),
       program_({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}}) {}
 
 void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& depth,
@@ -26,11 +26,11 @@ void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& 
     glUniform1i(program_.uniform("uOrtho"), camera.orthographic());
     glBindTextureUnit(0, velocity.id());
     glBindTextureUnit(1, depth.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices_.id());
+    glBindImageTexture(0, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     GLuint groups = GLuint((gridRes_ + 1 + 15) / 16);
     glDispatchCompute(groups, groups, 1);
-    // The next stage reads the buffer as vertex attributes.
-    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    // The next stage reads the mesh through texture fetches.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 }  // namespace flowsurf::methods::isa

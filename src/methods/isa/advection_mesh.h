@@ -1,6 +1,6 @@
 // ISA stage 2 — advection mesh [L §IV-D.1, eq. 12] with edge detection [L eq. 14]
 // (shaders/isa/advection_mesh.comp, shaders/isa/edge_detection.glsl). Inputs: velocity
-// and depth images. Output: a buffer of (R+1)^2 vec4 (texcoord, edge flag) that the
+// and depth images. Output: an (R+1)^2 RGBA32F texture (texcoord, edge flag) that the
 // static case reuses. Cost grows with the grid M = R^2.
 #pragma once
 
@@ -16,13 +16,13 @@ public:
     void compute(const gl::Texture2D& velocity, const gl::Texture2D& depth, const core::Camera& camera,
                  float dt, float edgeEpsilon);
 
-    const gl::Buffer& vertices() const { return vertices_; }
+    const gl::Texture2D& vertices() const { return vertices_; }
     int gridRes() const { return gridRes_; }
 
 private:
     core::Viewport viewport_;
     int gridRes_;
-    gl::Buffer vertices_;
+    gl::Texture2D vertices_;
     gl::Program program_;
 };
 

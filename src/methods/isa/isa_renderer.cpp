@@ -15,7 +15,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       viewport_(viewport),
       velocityImage_(viewport),
       advectionMesh_(viewport, params.isa.gridRes),
-      textureAdvection_(params.isa.gridRes),
+      textureAdvection_(params.isa.gridRes, params.isa.warp),
       overlay_(params.common),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {

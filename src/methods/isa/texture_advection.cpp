@@ -4,10 +4,21 @@
 
 namespace flowsurf::methods::isa {
 
-TextureAdvection::TextureAdvection(int gridRes)
-    : gridRes_(gridRes),
-      vao_(gl::VertexArray::create()),
-      program_({{GL_VERTEX_SHADER, "isa/texture_advection.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}}) {
+namespace {
+gl::Program makeProgram(IsaWarp warp) {
+    if (warp == IsaWarp::Pixel)
+        return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
+                            {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+                           "#define PER_PIXEL 1\n");
+    return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"},
+                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}});
+}
+}  // namespace
+
+TextureAdvection::TextureAdvection(int gridRes, IsaWarp warp)
+    : gridRes_(gridRes), warp_(warp), vao_(gl::VertexArray::create()), program_(makeProgram(warp)) {
+    if (warp != IsaWarp::Mesh) return;
+    // Two triangles per grid cell; vertices come from the mesh texture by gl_VertexID.
     std::vector<uint32_t> idx;
     idx.reserve(size_t(gridRes) * gridRes * 6);
     const uint32_t row = uint32_t(gridRes + 1);
@@ -19,25 +30,25 @@ TextureAdvection::TextureAdvection(int gridRes)
     indexCount_ = GLsizei(idx.size());
     indices_ = gl::Buffer(GLsizeiptr(idx.size() * sizeof(uint32_t)), idx.data(), 0);
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
-    glEnableVertexArrayAttrib(vao_.id(), 0);
-    glVertexArrayAttribFormat(vao_.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.id(), 0, 0);
 }
 
-void TextureAdvection::apply(const gl::Buffer& meshVertices, const gl::Texture2D& prevFlow,
+void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow,
                              const gl::Framebuffer& nextFlow, bool edgeBlending, float gray) const {
     glBindFramebuffer(GL_FRAMEBUFFER, nextFlow.id());
     glViewport(0, 0, prevFlow.width(), prevFlow.height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glVertexArrayVertexBuffer(vao_.id(), 0, meshVertices.id(), 0, 4 * sizeof(float));
     program_.use();
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
     glUniform1f(program_.uniform("uGray"), gray);
     glBindTextureUnit(0, prevFlow.id());
+    glBindTextureUnit(1, mesh.id());
     glBindVertexArray(vao_.id());
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    if (warp_ == IsaWarp::Mesh)
+        glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    else
+        glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 }  // namespace flowsurf::methods::isa

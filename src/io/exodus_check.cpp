@@ -1,0 +1,196 @@
+// The NetCDF classic layout (CDF1/2/5), big-endian throughout:
+//   magic numrecs dim_list gatt_list var_list, var := name dimids vatts type vsize begin
+// (https://docs.unidata.ucar.edu/netcdf-c/current/file_format_specifications.html).
+#include "io/exodus_check.h"
+
+#include "core/errors.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <system_error>
+#include <vector>
+
+namespace flowsurf::io::detail {
+
+namespace {
+
+struct Mapping {
+    const unsigned char* data = nullptr;
+    size_t size = 0;
+    ~Mapping() {
+        if (data) ::munmap(const_cast<unsigned char*>(data), size);
+    }
+};
+
+class Cursor {
+public:
+    Cursor(const Mapping& m, const std::string& path, int version)
+        : m_(m), path_(path), version_(version) {}
+
+    uint64_t be(size_t bytes) {
+        need(bytes);
+        uint64_t v = 0;
+        for (size_t i = 0; i < bytes; ++i) v = (v << 8) | m_.data[pos_ + i];
+        pos_ += bytes;
+        return v;
+    }
+    uint64_t u32() { return be(4); }
+    uint64_t count() { return be(version_ == 5 ? 8 : 4); }  // NON_NEG
+    uint64_t offset() { return be(version_ == 1 ? 4 : 8); }  // OFFSET
+    void skip(uint64_t bytes) {
+        need(bytes);
+        pos_ += bytes;
+    }
+    std::string name() {
+        uint64_t n = count();
+        need(n);
+        std::string s(reinterpret_cast<const char*>(m_.data + pos_), n);
+        skip((n + 3) / 4 * 4);
+        return s;
+    }
+    size_t pos() const { return pos_; }
+
+private:
+    void need(uint64_t bytes) const {
+        if (bytes > m_.size - pos_) throw FormatError(path_ + ": truncated Exodus II (NetCDF) header");
+    }
+    const Mapping& m_;
+    const std::string& path_;
+    int version_;
+    size_t pos_ = 4;  // after the magic
+};
+
+uint64_t typeSize(uint64_t type) {
+    static const uint64_t kSizes[] = {0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8};  // NC_BYTE .. NC_UINT64
+    return type < 12 ? kSizes[type] : 0;
+}
+
+uint64_t mul(uint64_t a, uint64_t b, const std::string& path) {
+    uint64_t r;
+    if (__builtin_mul_overflow(a, b, &r)) throw FormatError(path + ": impossible variable sizes in the Exodus II header");
+    return r;
+}
+
+struct Variable {
+    std::string name;
+    std::vector<uint64_t> dims;
+    uint64_t type = 0, begin = 0;
+};
+
+void skipAttributes(Cursor& c, const std::string& path) {
+    uint64_t tag = c.u32(), n = c.count();
+    if (tag == 0 && n == 0) return;
+    if (tag != 0x0C) throw FormatError(path + ": malformed Exodus II (NetCDF) attribute list");
+    for (uint64_t i = 0; i < n; ++i) {
+        c.name();
+        uint64_t size = typeSize(c.u32());
+        if (size == 0) throw FormatError(path + ": unknown NetCDF attribute type");
+        c.skip((mul(c.count(), size, path) + 3) / 4 * 4);
+    }
+}
+
+}  // namespace
+
+void checkExodusFile(const std::string& path) {
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
+    struct stat st {};
+    ::fstat(fd, &st);
+    Mapping m;
+    m.size = static_cast<size_t>(st.st_size);
+    void* p = m.size >= 8 ? ::mmap(nullptr, m.size, PROT_READ, MAP_PRIVATE, fd, 0) : MAP_FAILED;
+    ::close(fd);
+    if (p == MAP_FAILED) throw FormatError(path + ": not an Exodus II file (too short or unreadable)");
+    m.data = static_cast<const unsigned char*>(p);
+
+    if (std::memcmp(m.data, "\x89HDF\r\n\x1a\n", 8) == 0) return;  // netCDF-4: left to VTK
+    const int version = m.data[3];
+    if (std::memcmp(m.data, "CDF", 3) != 0 || (version != 1 && version != 2 && version != 5))
+        throw FormatError(path + ": not an Exodus II file (neither NetCDF nor HDF5)");
+
+    // Header.
+    Cursor c(m, path, version);
+    uint64_t numRecs = c.count();
+    if (numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) numRecs = 0;  // streaming
+    std::vector<std::pair<std::string, uint64_t>> dims;
+    uint64_t tag = c.u32(), n = c.count();
+    if (!(tag == 0 && n == 0)) {
+        if (tag != 0x0A) throw FormatError(path + ": malformed Exodus II (NetCDF) dimension list");
+        for (uint64_t i = 0; i < n; ++i) {
+            std::string name = c.name();
+            dims.emplace_back(name, c.count());
+        }
+    }
+    skipAttributes(c, path);
+    std::vector<Variable> vars;
+    tag = c.u32();
+    n = c.count();
+    if (!(tag == 0 && n == 0) && tag != 0x0B)
+        throw FormatError(path + ": malformed Exodus II (NetCDF) variable list");
+    for (uint64_t i = 0; tag == 0x0B && i < n; ++i) {
+        Variable v;
+        v.name = c.name();
+        for (uint64_t k = 0, nd = c.count(); k < nd; ++k) {
+            uint64_t id = c.count();
+            if (id >= dims.size()) throw FormatError(path + ": variable '" + v.name + "' has a bad dimension");
+            v.dims.push_back(id);
+        }
+        skipAttributes(c, path);
+        v.type = c.u32();
+        if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
+        c.count();  // vsize: recomputed below, it saturates for huge variables
+        v.begin = c.offset();
+        vars.push_back(std::move(v));
+    }
+
+    // Every variable's data inside the file. A record variable's first dimension is
+    // the unlimited one (length 0); its records interleave with the other ones'.
+    auto isRecord = [&](const Variable& v) { return !v.dims.empty() && dims[v.dims[0]].second == 0; };
+    auto bytesPerRecord = [&](const Variable& v) {
+        uint64_t b = typeSize(v.type);
+        for (size_t k = isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, dims[v.dims[k]].second, path);
+        return b;
+    };
+    uint64_t recordSize = 0, recordVars = 0;
+    for (const auto& v : vars)
+        if (isRecord(v)) {
+            recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
+            ++recordVars;
+        }
+    for (const auto& v : vars) {
+        uint64_t size = bytesPerRecord(v);
+        uint64_t end = v.begin + size;
+        if (isRecord(v))
+            end = numRecs == 0 ? v.begin
+                               : v.begin + mul(numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
+        if (end > m.size || end < v.begin)
+            throw FormatError(path + ": truncated Exodus II file: variable '" + v.name + "' needs " +
+                              std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
+    }
+
+    // Element connectivity: 1-based node numbers.
+    uint64_t nodes = 0;
+    for (const auto& [name, length] : dims)
+        if (name == "num_nodes") nodes = length;
+    for (const auto& v : vars) {
+        if (v.name.rfind("connect", 0) != 0 || isRecord(v) || (v.type != 4 && v.type != 10)) continue;
+        const uint64_t width = typeSize(v.type), count = bytesPerRecord(v) / width;
+        for (uint64_t i = 0; i < count; ++i) {
+            uint64_t raw = 0;
+            for (uint64_t b = 0; b < width; ++b) raw = (raw << 8) | m.data[v.begin + i * width + b];
+            int64_t node = width == 4 ? int64_t(int32_t(uint32_t(raw))) : int64_t(raw);
+            if (node < 1 || uint64_t(node) > nodes)
+                throw FormatError(path + ": Exodus II connectivity '" + v.name + "' entry " + std::to_string(i) +
+                                  " names node " + std::to_string(node) + ", the file has " +
+                                  std::to_string(nodes) + " nodes");
+        }
+    }
+}
+
+}  // namespace flowsurf::io::detail
