@@ -1,7 +1,7 @@
 # Embeds every file under shaders/ into a generated C++ source as raw strings, so the
 # binaries need no shader files at run time. Names are paths relative to shaders/.
 function(flowsurf_embed_shaders target)
-  file(GLOB_RECURSE shader_files CONFIGURE_DEPENDS
+  file(GLOB_RECURSE shader_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/*.geom
        ${PROJECT_SOURCE_DIR}/shaders/*.vert ${PROJECT_SOURCE_DIR}/shaders/*.frag
        ${PROJECT_SOURCE_DIR}/shaders/*.comp ${PROJECT_SOURCE_DIR}/shaders/*.glsl)
   set(out ${CMAKE_CURRENT_BINARY_DIR}/embedded_shaders.cpp)

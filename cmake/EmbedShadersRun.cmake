@@ -1,6 +1,6 @@
 # Script mode: writes OUT with a map from shader name to source text.
 file(GLOB_RECURSE files RELATIVE ${SHADER_DIR}
-     ${SHADER_DIR}/*.vert ${SHADER_DIR}/*.frag ${SHADER_DIR}/*.comp ${SHADER_DIR}/*.glsl)
+     ${SHADER_DIR}/*.vert ${SHADER_DIR}/*.frag ${SHADER_DIR}/*.geom ${SHADER_DIR}/*.comp ${SHADER_DIR}/*.glsl)
 list(SORT files)
 set(body "")
 foreach(f ${files})

@@ -101,7 +101,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
 
     const std::string gMethod = "Method";
     cmd.add_option("-m,--method", o.method, "Visualization method")
-        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({"isa"}));
+        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({"isa", "ibfvs"}));
     cmd.add_option("--alpha", p.common.alpha, "Noise blend alpha [L eq. 9], 0..1 (papers: 0.1-0.2)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
     cmd.add_option("--beta", p.common.beta, "Texture strength beta [L eq. 10], 0..1")
@@ -129,6 +129,14 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         p.isa.warp = s == "mesh" ? methods::IsaWarp::Mesh : methods::IsaWarp::Pixel;
     }, "ISA texture advection: pixel (mesh interpolated per pixel, default) or mesh (draw the R x R grid)")
         ->group(gMethod)->check(CLI::IsMember({"pixel", "mesh"}));
+    cmd.add_flag("--edge-mask", p.ibfvs.edgeMask, "IBFVS silhouette edge mask over the image [L §IV-E.2]")
+        ->group(gMethod);
+    cmd.add_option_function<std::string>("--on-camera-move", [&p](const std::string& s) {
+        p.common.onCameraMove = s == "none" ? methods::CameraMoveRemedy::None
+                              : s == "freeze" ? methods::CameraMoveRemedy::Freeze
+                                              : methods::CameraMoveRemedy::Translate;
+    }, "When the camera moves: translate (reproject the texture with the surface, default), freeze, none")
+        ->group(gMethod)->check(CLI::IsMember({"translate", "freeze", "none"}));
     cmd.add_option("--edge-epsilon", p.isa.edgeEpsilon, "ISA edge detection eps [L eq. 14], depth range per pixel")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 10.0f));
     cmd.add_option_function<std::string>("--edge-blending", [&p](const std::string& s) { p.isa.edgeBlending = s == "on"; },

@@ -43,7 +43,7 @@ int runRender(const RenderOptions& o) {
     core::Camera camera0 = makeCamera(o, data.bounds());
 
     gl::HeadlessContext context(o.verbose);
-    methods::SurfaceGpu surface(mesh, field, o.params.common);
+    methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
     std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, o.params, o.size);
 
     std::unique_ptr<io::VideoWriter> video;

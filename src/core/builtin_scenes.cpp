@@ -162,31 +162,42 @@ Dataset makeBuiltin(const std::string& spec) {
 }
 
 SurfaceMesh makeUvSphere(float radius, int slices, int stacks) {
+    // Closed and welded: one vertex per pole, the seam shared, so every edge has two
+    // triangles (the silhouette edge mask relies on it).
     SurfaceMesh m;
-    for (int j = 0; j <= stacks; ++j) {
+    auto add = [&](const glm::vec3& n) {
+        m.positions.push_back(radius * n);
+        m.normals.push_back(n);
+    };
+    add({0, 1, 0});
+    for (int j = 1; j < stacks; ++j) {
         float theta = glm::pi<float>() * float(j) / float(stacks);
-        for (int i = 0; i <= slices; ++i) {
+        for (int i = 0; i < slices; ++i) {
             float phi = glm::two_pi<float>() * float(i) / float(slices);
-            glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            m.positions.push_back(radius * n);
-            m.normals.push_back(n);
+            add({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
         }
     }
-    auto id = [&](int i, int j) { return uint32_t(j * (slices + 1) + i); };
-    for (int j = 0; j < stacks; ++j)
+    add({0, -1, 0});
+    const uint32_t south = uint32_t(m.positions.size() - 1);
+    auto id = [&](int i, int j) { return uint32_t(1 + (j - 1) * slices + (i % slices)); };
+    for (int i = 0; i < slices; ++i) {
+        // Counter-clockwise seen from outside.
+        m.triangles.push_back({0, id(i + 1, 1), id(i, 1)});
+        m.triangles.push_back({south, id(i, stacks - 1), id(i + 1, stacks - 1)});
+    }
+    for (int j = 1; j < stacks - 1; ++j)
         for (int i = 0; i < slices; ++i) {
-            // Counter-clockwise seen from outside.
-            if (j > 0) m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-            if (j < stacks - 1) m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+            m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
         }
     return m;
 }
 
 SurfaceMesh makeTorus(const glm::vec3& center, float majorR, float minorR, int nu, int nv) {
-    SurfaceMesh m;
-    for (int j = 0; j <= nv; ++j) {
+    SurfaceMesh m;  // welded: indices wrap in both directions
+    for (int j = 0; j < nv; ++j) {
         float b = glm::two_pi<float>() * float(j) / float(nv);
-        for (int i = 0; i <= nu; ++i) {
+        for (int i = 0; i < nu; ++i) {
             float a = glm::two_pi<float>() * float(i) / float(nu);
             glm::vec3 ring(std::cos(a), 0.0f, std::sin(a));
             glm::vec3 n = std::cos(b) * ring + glm::vec3(0, std::sin(b), 0);
@@ -194,7 +205,7 @@ SurfaceMesh makeTorus(const glm::vec3& center, float majorR, float minorR, int n
             m.normals.push_back(n);
         }
     }
-    auto id = [&](int i, int j) { return uint32_t(j * (nu + 1) + i); };
+    auto id = [&](int i, int j) { return uint32_t((j % nv) * nu + (i % nu)); };
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
             m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});

@@ -18,6 +18,11 @@ glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane);
 }
 
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovDeg == b.fovDeg &&
+           a.orthoHeight == b.orthoHeight && a.nearPlane == b.nearPlane && a.farPlane == b.farPlane;
+}
+
 glm::vec3 projectToPixels(const Camera& camera, const Viewport& viewport, const glm::vec3& posObj) {
     glm::vec4 clip = camera.viewProjection(viewport.aspect()) * glm::vec4(posObj, 1.0f);
     glm::vec3 ndc = glm::vec3(clip) / clip.w;

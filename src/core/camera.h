@@ -29,6 +29,9 @@ struct Camera {
     glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
 };
 
+// Exact equality of every camera parameter (the static case needs "nothing changed").
+bool sameCamera(const Camera& a, const Camera& b);
+
 // T(x): object space -> (x px, y px, window depth in [0,1]); pixel origin bottom-left,
 // pixel centres at half-integers, as OpenGL rasterises.
 glm::vec3 projectToPixels(const Camera& camera, const Viewport& viewport, const glm::vec3& posObj);

@@ -80,8 +80,10 @@ uint64_t mul(uint64_t a, uint64_t b, const std::string& path) {
 struct Variable {
     std::string name;
     std::vector<uint64_t> dims;
-    uint64_t type = 0, begin = 0;
+    uint64_t type = 0, vsize = 0, begin = 0;
 };
+
+using Dims = std::vector<std::pair<std::string, uint64_t>>;
 
 void skipAttributes(Cursor& c, const std::string& path) {
     uint64_t tag = c.u32(), n = c.count();
@@ -94,6 +96,9 @@ void skipAttributes(Cursor& c, const std::string& path) {
         c.skip((mul(c.count(), size, path) + 3) / 4 * 4);
     }
 }
+
+void checkExodusSchema(const std::string& path, const Mapping& m, const Dims& dims,
+                       const std::vector<Variable>& vars, uint64_t numRecs);
 
 }  // namespace
 
@@ -118,7 +123,7 @@ void checkExodusFile(const std::string& path) {
     Cursor c(m, path, version);
     uint64_t numRecs = c.count();
     if (numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) numRecs = 0;  // streaming
-    std::vector<std::pair<std::string, uint64_t>> dims;
+    Dims dims;
     uint64_t tag = c.u32(), n = c.count();
     if (!(tag == 0 && n == 0)) {
         if (tag != 0x0A) throw FormatError(path + ": malformed Exodus II (NetCDF) dimension list");
@@ -144,7 +149,7 @@ void checkExodusFile(const std::string& path) {
         skipAttributes(c, path);
         v.type = c.u32();
         if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
-        c.count();  // vsize: recomputed below, it saturates for huge variables
+        v.vsize = c.count();
         v.begin = c.offset();
         vars.push_back(std::move(v));
     }
@@ -163,8 +168,32 @@ void checkExodusFile(const std::string& path) {
             recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
             ++recordVars;
         }
+    // Like netCDF's own check: data blocks in variable order, never overlapping;
+    // record variables after all the others.
+    uint64_t fixedEnd = c.pos(), recordEnd = 0;
+    for (const auto& v : vars) {
+        if (isRecord(v)) continue;
+        if (v.begin < fixedEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
+                                                  v.name + "' overlaps the one before");
+        fixedEnd = v.begin + bytesPerRecord(v);
+    }
+    recordEnd = fixedEnd;
+    for (const auto& v : vars) {
+        if (!isRecord(v)) continue;
+        if (v.begin < recordEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
+                                                   v.name + "' overlaps the one before");
+        recordEnd = v.begin + bytesPerRecord(v);
+    }
+    const size_t headerEnd = c.pos();
     for (const auto& v : vars) {
         uint64_t size = bytesPerRecord(v);
+        // netCDF refuses a file whose stored sizes disagree with its dimensions (vsize
+        // saturates for variables over 4 GiB, so only smaller ones are compared).
+        const uint64_t padded = (size + 3) / 4 * 4;
+        if ((padded < 0xFFFFFFFCu && v.vsize != padded && !(recordVars == 1 && isRecord(v) && v.vsize == size)) ||
+            v.begin < headerEnd)
+            throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" + v.name +
+                              "' has inconsistent size or offset");
         uint64_t end = v.begin + size;
         if (isRecord(v))
             end = numRecs == 0 ? v.begin
@@ -174,17 +203,63 @@ void checkExodusFile(const std::string& path) {
                               std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
     }
 
-    // Element connectivity: 1-based node numbers.
-    uint64_t nodes = 0;
-    for (const auto& [name, length] : dims)
-        if (name == "num_nodes") nodes = length;
+    checkExodusSchema(path, m, dims, vars, numRecs);
+}
+
+namespace {
+
+// Integer entry `i` of a non-record NC_INT or NC_INT64 variable (range checked above).
+int64_t intAt(const Mapping& m, const Variable& v, uint64_t i) {
+    const uint64_t width = typeSize(v.type);
+    uint64_t raw = 0;
+    for (uint64_t b = 0; b < width; ++b) raw = (raw << 8) | m.data[v.begin + i * width + b];
+    return width == 4 ? int64_t(int32_t(uint32_t(raw))) : int64_t(raw);
+}
+
+// The variables vtkExodusIIReader reads by default must exist (it dereferences a null
+// array otherwise), and connectivity must name existing nodes (1-based).
+void checkExodusSchema(const std::string& path, const Mapping& m, const Dims& dims,
+                       const std::vector<Variable>& vars, uint64_t numRecs) {
+    auto dim = [&](const std::string& name) {
+        for (const auto& [n, length] : dims)
+            if (n == name) return length;
+        return uint64_t(0);
+    };
+    auto var = [&](const std::string& name) -> const Variable* {
+        for (const auto& v : vars)
+            if (v.name == name) return &v;
+        return nullptr;
+    };
+    auto require = [&](const std::string& name) {
+        if (!var(name)) throw FormatError(path + ": Exodus II variable '" + name + "' is missing");
+    };
+    const uint64_t blocks = dim("num_el_blk"), elemVars = dim("num_elem_var");
+    if (!var("coord")) {
+        require("coordx");
+        if (dim("num_dim") >= 2) require("coordy");
+        if (dim("num_dim") >= 3) require("coordz");
+    }
+    if (numRecs > 0 && dim("num_nod_var") > 0 && !var("vals_nod_var"))
+        for (uint64_t j = 1; j <= dim("num_nod_var"); ++j) require("vals_nod_var" + std::to_string(j));
+    const Variable* truth = var("elem_var_tab");
+    if (truth && (truth->dims.size() != 2 || dims[truth->dims[0]].second != blocks ||
+                  dims[truth->dims[1]].second != elemVars || (truth->type != 4 && truth->type != 10)))
+        throw FormatError(path + ": Exodus II truth table 'elem_var_tab' has the wrong shape");
+    for (uint64_t i = 1; i <= blocks; ++i) {
+        const std::string block = std::to_string(i);
+        if (dim("num_el_in_blk" + block) > 0) require("connect" + block);
+        for (uint64_t j = 1; numRecs > 0 && j <= elemVars; ++j)
+            if (!truth || intAt(m, *truth, (i - 1) * elemVars + (j - 1)) != 0)
+                require("vals_elem_var" + std::to_string(j) + "eb" + block);
+    }
+    const uint64_t nodes = dim("num_nodes");
     for (const auto& v : vars) {
-        if (v.name.rfind("connect", 0) != 0 || isRecord(v) || (v.type != 4 && v.type != 10)) continue;
-        const uint64_t width = typeSize(v.type), count = bytesPerRecord(v) / width;
+        const bool record = !v.dims.empty() && dims[v.dims[0]].second == 0;
+        if (v.name.rfind("connect", 0) != 0 || record || (v.type != 4 && v.type != 10)) continue;
+        uint64_t count = 1;
+        for (uint64_t d : v.dims) count *= dims[d].second;  // sizes checked in checkExodusFile
         for (uint64_t i = 0; i < count; ++i) {
-            uint64_t raw = 0;
-            for (uint64_t b = 0; b < width; ++b) raw = (raw << 8) | m.data[v.begin + i * width + b];
-            int64_t node = width == 4 ? int64_t(int32_t(uint32_t(raw))) : int64_t(raw);
+            const int64_t node = intAt(m, v, i);
             if (node < 1 || uint64_t(node) > nodes)
                 throw FormatError(path + ": Exodus II connectivity '" + v.name + "' entry " + std::to_string(i) +
                                   " names node " + std::to_string(node) + ", the file has " +
@@ -192,5 +267,7 @@ void checkExodusFile(const std::string& path) {
         }
     }
 }
+
+}  // namespace
 
 }  // namespace flowsurf::io::detail

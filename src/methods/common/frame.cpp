@@ -1,6 +1,7 @@
 #include "methods/common/frame.h"
 
 #include "core/errors.h"
+#include "methods/ibfvs/ibfvs_renderer.h"
 #include "methods/isa/isa_renderer.h"
 
 #include <algorithm>
@@ -10,7 +11,8 @@ namespace flowsurf::methods {
 std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
                                        const core::Viewport& viewport) {
     if (name == "isa") return std::make_unique<isa::IsaRenderer>(params, viewport);
-    throw ConfigError("unknown method '" + name + "' (available: isa)");
+    if (name == "ibfvs") return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);
+    throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs)");
 }
 
 float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx) {

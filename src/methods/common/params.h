@@ -12,6 +12,13 @@ namespace flowsurf::methods {
 
 enum class Colormap { None, Viridis, CoolWarm, Gray };
 
+// What happens to the image-space texture when the camera moves [L §IV-I, §5 of
+// ALGORITHMS.md]. None: the pattern slides over the surface. Translate: the previous
+// texture is reprojected with the surface's image motion (per pixel: good for pan,
+// rotate and zoom). Freeze: no advection while the camera moves; the last texture is
+// mapped onto the surface from the view where it was made; resumes when it stops.
+enum class CameraMoveRemedy { None, Translate, Freeze };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.1f;         // noise blend alpha, [L] 0.1..0.2
@@ -30,6 +37,7 @@ struct CommonParams {
     bool lighting = true;        // diffuse head light in F_s
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
+    CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
 };
 
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
@@ -43,9 +51,18 @@ struct IsaParams {
     bool edgeBlending = true;    // blend gray at edge advection points
 };
 
+// IBFVS only, [L §IV-C.2..IV-F.2].
+struct IbfvsParams {
+    float flowBackground = 0.5f;  // F_a outside the surface: the noise mean, so inflow is invisible
+    bool edgeMask = false;        // silhouette edge mask over the display [L §IV-E.2]
+    float edgeMaskWidthPx = 2.0f; // line width of the mask
+    float edgeMaskOpacity = 0.85f;
+};
+
 struct MethodParams {
     CommonParams common;
     IsaParams isa;
+    IbfvsParams ibfvs;
 };
 
 }  // namespace flowsurf::methods

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <unordered_map>
 #include <vector>
 
 namespace flowsurf::methods {
@@ -23,6 +24,23 @@ std::string selectField(const core::SurfaceMesh& mesh, const std::string& reques
 }
 
 namespace {
+// Per edge: (v0, v1, opposite in the triangle with v0->v1, opposite in the other one).
+std::vector<uint32_t> edgeAdjacency(const std::vector<glm::uvec3>& triangles) {
+    std::unordered_map<uint64_t, size_t> slot;  // undirected edge -> index into out/4
+    slot.reserve(triangles.size() * 2);
+    std::vector<uint32_t> out;
+    out.reserve(triangles.size() * 6);
+    for (const auto& t : triangles)
+        for (int e = 0; e < 3; ++e) {
+            uint32_t a = t[e], b = t[(e + 1) % 3], c = t[(e + 2) % 3];
+            uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            auto [it, fresh] = slot.try_emplace(key, out.size() / 4);
+            if (fresh) out.insert(out.end(), {a, b, c, c});  // boundary until a second side shows up
+            else out[it->second * 4 + 3] = c;               // manifold: the other side
+        }
+    return out;
+}
+
 // The p-th percentile (0..100) of the non-zero values; 0 if none.
 float percentile(std::vector<float> values, float p) {
     values.erase(std::remove(values.begin(), values.end(), 0.0f), values.end());
@@ -33,7 +51,8 @@ float percentile(std::vector<float> values, float p) {
 }
 }  // namespace
 
-SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
+SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
+                       bool withEdges) {
     const core::VectorField* field = mesh.findField(fieldName);
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
     std::vector<glm::vec3> vel = field->values;
@@ -67,7 +86,24 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
         glVertexArrayAttribFormat(vao, a, a < 3 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
         glVertexArrayAttribBinding(vao, a, 0);
     }
+    if (withEdges) {
+        std::vector<uint32_t> edges = edgeAdjacency(mesh.triangles);
+        edgeCount_ = edges.size() / 4;
+        edgeIndices_ = gl::Buffer(GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), 0);
+        edgeVao_ = gl::VertexArray::create();
+        glVertexArrayVertexBuffer(edgeVao_.id(), 0, vertices_.id(), 0, 10 * sizeof(float));
+        glVertexArrayElementBuffer(edgeVao_.id(), edgeIndices_.id());
+        glEnableVertexArrayAttrib(edgeVao_.id(), 0);
+        glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(edgeVao_.id(), 0, 0);
+    }
     generation_ = nextGeneration++;
+}
+
+void SurfaceGpu::drawEdgesAdjacency() const {
+    if (!edgeCount_) return;
+    glBindVertexArray(edgeVao_.id());
+    glDrawElements(GL_LINES_ADJACENCY, GLsizei(edgeCount_ * 4), GL_UNSIGNED_INT, nullptr);
 }
 
 void SurfaceGpu::draw() const {

@@ -15,9 +15,15 @@ public:
     SurfaceGpu() = default;
     // Uploads `mesh` with the vector field `fieldName` made tangential, scaled for
     // advection as `params` say (speedPercentile, normalize). Throws FieldError.
-    SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {});
+    // `withEdges`: also build the edge adjacency the IBFVS edge mask draws.
+    SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {},
+               bool withEdges = false);
 
     void draw() const;  // binds the VAO and draws the triangles
+    // Draws every edge as GL_LINES_ADJACENCY (v0, v1, opposite vertex of the triangle
+    // on each side; boundary edges repeat the one opposite vertex). Needs withEdges.
+    void drawEdgesAdjacency() const;
+    bool hasEdges() const { return edgeCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
     size_t triangleCount() const { return triangles_; }
     // Largest speed of the advection velocity (after clamping/normalising): sets dt.
@@ -30,7 +36,9 @@ public:
 
 private:
     gl::Buffer vertices_, indices_;
-    gl::VertexArray vao_;
+    gl::VertexArray vao_, edgeVao_;
+    gl::Buffer edgeIndices_;
+    size_t edgeCount_ = 0;
     size_t triangles_ = 0;
     float maxSpeed_ = 0.0f;
     float colorSpeedMax_ = 0.0f;

@@ -11,21 +11,23 @@ AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes)
       program_({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}}) {}
 
 void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& depth,
-                            const core::Camera& camera, float dt, float edgeEpsilon) {
+                            const gl::Texture2D& sourceDepth, const core::Camera& camera,
+                            const core::Camera& sourceCamera, float dt, float edgeEpsilon) {
     program_.use();
-    glm::mat4 viewProj = camera.viewProjection(viewport_.aspect());
-    glm::mat4 inv = glm::inverse(viewProj);
-    glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    glm::mat4 inv = glm::inverse(camera.viewProjection(viewport_.aspect()));
+    glm::mat4 sourceViewProj = sourceCamera.viewProjection(viewport_.aspect());
+    glUniformMatrix4fv(program_.uniform("uSourceViewProj"), 1, GL_FALSE, glm::value_ptr(sourceViewProj));
     glUniformMatrix4fv(program_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
     glUniform2f(program_.uniform("uViewport"), float(viewport_.width), float(viewport_.height));
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1f(program_.uniform("uDt"), dt);
     glUniform1f(program_.uniform("uEdgeEps"), edgeEpsilon);
-    glUniform1f(program_.uniform("uNear"), camera.nearPlane);
-    glUniform1f(program_.uniform("uFar"), camera.farPlane);
-    glUniform1i(program_.uniform("uOrtho"), camera.orthographic());
+    glUniform1f(program_.uniform("uNear"), sourceCamera.nearPlane);
+    glUniform1f(program_.uniform("uFar"), sourceCamera.farPlane);
+    glUniform1i(program_.uniform("uOrtho"), sourceCamera.orthographic());
     glBindTextureUnit(0, velocity.id());
     glBindTextureUnit(1, depth.id());
+    glBindTextureUnit(2, sourceDepth.id());
     glBindImageTexture(0, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     GLuint groups = GLuint((gridRes_ + 1 + 15) / 16);
     glDispatchCompute(groups, groups, 1);

@@ -13,8 +13,10 @@ namespace flowsurf::methods::isa {
 class AdvectionMesh {
 public:
     AdvectionMesh(const core::Viewport& viewport, int gridRes);
-    void compute(const gl::Texture2D& velocity, const gl::Texture2D& depth, const core::Camera& camera,
-                 float dt, float edgeEpsilon);
+    // `sourceCamera`/`sourceDepth`: the view and depth image the source texture was
+    // made in (the current ones unless the camera moved and the remedy reprojects).
+    void compute(const gl::Texture2D& velocity, const gl::Texture2D& depth, const gl::Texture2D& sourceDepth,
+                 const core::Camera& camera, const core::Camera& sourceCamera, float dt, float edgeEpsilon);
 
     const gl::Texture2D& vertices() const { return vertices_; }
     int gridRes() const { return gridRes_; }

@@ -1,22 +1,17 @@
 #include "methods/isa/isa_renderer.h"
 
-#include <cstring>
 
 namespace flowsurf::methods::isa {
-
-namespace {
-bool sameCamera(const core::Camera& a, const core::Camera& b) {
-    return std::memcmp(&a, &b, sizeof(core::Camera)) == 0;
-}
-}  // namespace
 
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      velocityImage_(viewport),
+      velocityImage_{VelocityImage(viewport), VelocityImage(viewport)},
+      frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(params.isa.gridRes, params.isa.warp),
       overlay_(params.common),
+      motion_(params.common.onCameraMove),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {
     const float gray[4] = {0.5f, 0.0f, 0.0f, 1.0f};  // start at the noise mean
@@ -32,44 +27,58 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
 }
 
 bool IsaRenderer::isDynamic(const FrameInput& in) const {
-    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !sameCamera(in.camera, cachedCamera_);
+    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
 }
 
 void IsaRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
-    const int prev = current_, next = 1 - current_;
     timer_.beginFrame();
+
+    // Interaction remedy [L §IV-I]: which view the source texture was made in.
+    const MotionPlan plan = motion_.plan(in.camera);
+    if (plan.freezeStarts)  // keep where the frozen texture was made
+        glCopyImageSubData(velocityImage_[vi_].depth().id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
+                           GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
+    if (plan.advect || plan.freezeStarts) source_ = current_;
+    const int target = 1 - source_;
 
     // Dynamic case [L Table II]: view, geometry or data changed. Static: reuse (1)-(2).
     lastDynamic_ = isDynamic(in);
     if (lastDynamic_) {
+        const int prevVi = vi_;
+        vi_ = 1 - vi_;
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
         timer_.begin("velocity image");
-        velocityImage_.render(*in.surface, in.camera);
+        velocityImage_[vi_].render(*in.surface, in.camera);
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");
-        advectionMesh_.compute(velocityImage_.velocity(), velocityImage_.depth(), in.camera,
-                               dtForStep(in, viewport_, c.stepPx), params_.isa.edgeEpsilon);
+        const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
+        const gl::Texture2D& sourceDepth = !plan.advect ? frozenDepth_
+                                          : sameView    ? velocityImage_[vi_].depth()
+                                                        : velocityImage_[prevVi].depth();
+        advectionMesh_.compute(velocityImage_[vi_].velocity(), velocityImage_[vi_].depth(), sourceDepth, in.camera,
+                               plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
+                               params_.isa.edgeEpsilon);
         haveCache_ = true;
         cachedGeneration_ = in.surface->generation();
         cachedCamera_ = in.camera;
     }
+    const VelocityImage& vel = velocityImage_[vi_];
 
     // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1]
     timer_.begin("texture advection");
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_[prev], flowFbo_[next], params_.isa.edgeBlending,
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], flowFbo_[target], params_.isa.edgeBlending,
                             0.5f);
 
     // (4) noise injection and blending on the surface only [L eq. 9]
     timer_.begin("noise blend");
-    noiseInjection_.apply(flowFbo_[next], velocityImage_.depth(), in.frame, c.alpha, c.noise);
-    current_ = next;
+    if (plan.advect) noiseInjection_.apply(flowFbo_[target], vel.depth(), in.frame, c.alpha, c.noise);
+    current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_[current_], velocityImage_.depth(), velocityImage_.shade(), compositeFbo_,
-                   in.surface->colorSpeedMax());
+    overlay_.apply(flow_[current_], vel.depth(), vel.shade(), compositeFbo_, in.surface->colorSpeedMax());
     timer_.endFrame();
 }
 

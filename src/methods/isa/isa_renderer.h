@@ -1,6 +1,7 @@
 // flowsurf — ISA, Image Space Advection [L §IV, ALGORITHMS.md §3]: the orchestrator.
 #pragma once
 
+#include "methods/common/camera_motion.h"
 #include "methods/common/frame.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
@@ -17,7 +18,7 @@ public:
     void renderFrame(const FrameInput& in) override;
     const gl::Texture2D& flowTexture() const override { return flow_[current_]; }
     const gl::Texture2D& composite() const override { return composite_; }
-    const gl::Texture2D& surfaceDepth() const override { return velocityImage_.depth(); }
+    const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
 private:
@@ -25,16 +26,21 @@ private:
 
     MethodParams params_;
     core::Viewport viewport_;
-    VelocityImage velocityImage_;
+    // Two velocity images: the previous one's depth is where the source texture was
+    // made, for edge detection under camera motion (translate remedy).
+    VelocityImage velocityImage_[2];
+    int vi_ = 0;
+    gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
     NoiseInjection noiseInjection_;
     Overlay overlay_;
+    CameraMotion motion_;
     gl::Texture2D flow_[2];       // F_a ping-pong, R32F
     gl::Framebuffer flowFbo_[2];
     gl::Texture2D composite_;     // RGBA8
     gl::Framebuffer compositeFbo_;
-    int current_ = 0;
+    int current_ = 0, source_ = 0;
     // What the cached velocity image and advection mesh were made for (static case).
     bool haveCache_ = false;
     uint64_t cachedGeneration_ = 0;

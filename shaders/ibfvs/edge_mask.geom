@@ -1,0 +1,32 @@
+// Keeps boundary edges (both opposite vertices equal: one triangle) and edges between a
+// front- and a back-facing triangle; expands each kept edge to a quad `uWidthPx` wide.
+layout(lines_adjacency) in;
+layout(triangle_strip, max_vertices = 4) out;
+uniform vec2 uViewport;
+uniform float uWidthPx;
+vec2 toPx(vec4 c) { return (c.xy / c.w * 0.5 + 0.5) * uViewport; }
+float signedArea(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y); }
+void main() {
+    vec4 c0 = gl_in[0].gl_Position, c1 = gl_in[1].gl_Position;
+    vec4 ca = gl_in[2].gl_Position, cb = gl_in[3].gl_Position;
+    if (c0.w <= 0.0 || c1.w <= 0.0 || ca.w <= 0.0 || cb.w <= 0.0) return;
+    vec2 p0 = toPx(c0), p1 = toPx(c1), pa = toPx(ca), pb = toPx(cb);
+    bool boundary = ca == cb;
+    // Triangle A is (v0, v1, a) and B is (v1, v0, b) in consistent winding.
+    bool frontA = signedArea(p0, p1, pa) > 0.0;
+    bool frontB = signedArea(p1, p0, pb) > 0.0;
+    if (!boundary && frontA == frontB) return;
+    vec2 d = p1 - p0;
+    if (dot(d, d) < 1e-12) return;
+    vec2 n = normalize(vec2(-d.y, d.x)) * (0.5 * uWidthPx) / uViewport * 2.0;  // in NDC
+    vec2 n0 = n * c0.w, n1 = n * c1.w;
+    // Pull the line slightly towards the camera so it wins the depth test against the
+    // surface it lies on, but not against surfaces in front of it.
+    c0.z -= 0.002 * c0.w;
+    c1.z -= 0.002 * c1.w;
+    gl_Position = c0 + vec4(n0, 0.0, 0.0); EmitVertex();
+    gl_Position = c0 - vec4(n0, 0.0, 0.0); EmitVertex();
+    gl_Position = c1 + vec4(n1, 0.0, 0.0); EmitVertex();
+    gl_Position = c1 - vec4(n1, 0.0, 0.0); EmitVertex();
+    EndPrimitive();
+}

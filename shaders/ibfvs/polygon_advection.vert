@@ -1,0 +1,22 @@
+// IBFVS stage 2, polygonal texture advection [L §IV-D.2]: the surface at T(x_i) with
+// texture coordinates from the mesh projection, interpolated linearly in screen space
+// (noperspective) so large triangles at a steep depth gradient show no artefact
+// [L §IV-J].
+#include "ibfvs/mesh_projection.glsl"
+layout(location = 0) in vec3 aPosObj;
+layout(location = 1) in vec3 aNormalObj;
+layout(location = 2) in vec3 aVelObj;
+layout(location = 3) in float aSpeed;
+uniform mat4 uViewProj;
+uniform mat4 uPrevViewProj;
+uniform mat4 uView;
+uniform float uDt;
+noperspective out vec2 vTexcoord;
+out vec3 vNormalEye;
+out float vSpeed;
+void main() {
+    vTexcoord = pathlineTexcoord(aPosObj, aVelObj, uDt, uPrevViewProj);
+    vNormalEye = mat3(uView) * aNormalObj;
+    vSpeed = aSpeed;
+    gl_Position = uViewProj * vec4(aPosObj, 1.0);
+}

@@ -1,0 +1,73 @@
+#include "methods/ibfvs/ibfvs_renderer.h"
+
+namespace flowsurf::methods::ibfvs {
+
+IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
+    : params_(params),
+      viewport_(viewport),
+      overlay_(params.common),
+      motion_(params.common.onCameraMove),
+      shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
+      depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
+      composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
+      compositeFbo_(gl::Framebuffer::create()),
+      edgeFbo_(gl::Framebuffer::create()) {
+    const float gray[4] = {params.ibfvs.flowBackground, 0, 0, 1};
+    for (int i = 0; i < 2; ++i) {
+        flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
+        flowFbo_[i] = gl::Framebuffer::create();
+        flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
+        flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, shade_);
+        flowFbo_[i].attach(GL_DEPTH_ATTACHMENT, depth_);
+        flowFbo_[i].finish(2);
+        noiseFbo_[i] = gl::Framebuffer::create();
+        noiseFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
+        noiseFbo_[i].finish(1);
+        glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
+    }
+    compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
+    compositeFbo_.finish(1);
+    edgeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
+    edgeFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    edgeFbo_.finish(1);
+}
+
+void IbfvsRenderer::renderFrame(const FrameInput& in) {
+    const CommonParams& c = params_.common;
+    timer_.beginFrame();
+    // Static and dynamic cases run the same stages [L Table II: IBFVS cost ~ N in both].
+    lastDynamic_ = in.surface->generation() != lastGeneration_ || !core::sameCamera(in.camera, lastCamera_);
+    lastGeneration_ = in.surface->generation();
+    lastCamera_ = in.camera;
+
+    // Interaction remedy [L §IV-I]: which view the source texture was made in.
+    const MotionPlan plan = motion_.plan(in.camera);
+    if (plan.advect || plan.freezeStarts) source_ = current_;
+    const int target = 1 - source_;
+    const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
+
+    // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
+    // into a gray background [L eq. 13, §IV-D.2, §IV-F.2]
+    timer_.begin("texture advection");
+    polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_[source_],
+                            flowFbo_[target], params_.ibfvs.flowBackground);
+
+    // (3) noise injection clipped to the surface [L eq. 9, §IV-G]
+    timer_.begin("noise blend");
+    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], depth_, in.frame, c.alpha, c.noise);
+    current_ = target;
+
+    // (4) overlay [L eq. 10]
+    timer_.begin("overlay");
+    overlay_.apply(flow_[current_], depth_, shade_, compositeFbo_, in.surface->colorSpeedMax());
+
+    // (5) optional silhouette edge mask, display only [L §IV-E.2]
+    if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {
+        timer_.begin("edge mask");
+        edgeMask_.apply(*in.surface, in.camera, viewport_, edgeFbo_, c.background,
+                        params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx);
+    }
+    timer_.endFrame();
+}
+
+}  // namespace flowsurf::methods::ibfvs

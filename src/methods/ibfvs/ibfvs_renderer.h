@@ -1,0 +1,45 @@
+// flowsurf — IBFVS, Image Based Flow Visualization for curved Surfaces [L §IV,
+// ALGORITHMS.md §4]: the orchestrator.
+#pragma once
+
+#include "methods/common/camera_motion.h"
+#include "methods/common/frame.h"
+#include "methods/common/noise_injection.h"
+#include "methods/common/overlay.h"
+#include "methods/ibfvs/edge_mask.h"
+#include "methods/ibfvs/polygon_advection.h"
+
+namespace flowsurf::methods::ibfvs {
+
+class IbfvsRenderer final : public FlowMethod {
+public:
+    IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport);
+    const char* name() const override { return "ibfvs"; }
+    void renderFrame(const FrameInput& in) override;
+    const gl::Texture2D& flowTexture() const override { return flow_[current_]; }
+    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& surfaceDepth() const override { return depth_; }
+    bool lastFrameDynamic() const override { return lastDynamic_; }
+
+private:
+    MethodParams params_;
+    core::Viewport viewport_;
+    PolygonAdvection polygonAdvection_;
+    NoiseInjection noiseInjection_;
+    Overlay overlay_;
+    EdgeMask edgeMask_;
+    CameraMotion motion_;
+    gl::Texture2D flow_[2];        // F_a ping-pong, R32F
+    gl::Texture2D shade_, depth_;  // written by the advection draw
+    gl::Framebuffer flowFbo_[2];   // F_a + shade + depth: the advection draw
+    gl::Framebuffer noiseFbo_[2];  // F_a alone: noise injection samples depth, so it must not be attached
+    gl::Texture2D composite_;      // RGBA8
+    gl::Framebuffer compositeFbo_;
+    gl::Framebuffer edgeFbo_;      // composite + surface depth: the mask is depth tested
+    int current_ = 0, source_ = 0;
+    uint64_t lastGeneration_ = 0;
+    core::Camera lastCamera_;
+    bool lastDynamic_ = false;
+};
+
+}  // namespace flowsurf::methods::ibfvs
