@@ -20,10 +20,6 @@ void main() {
     if (dot(d, d) < 1e-12) return;
     vec2 n = normalize(vec2(-d.y, d.x)) * (0.5 * uWidthPx) / uViewport * 2.0;  // in NDC
     vec2 n0 = n * c0.w, n1 = n * c1.w;
-    // Pull the line slightly towards the camera so it wins the depth test against the
-    // surface it lies on, but not against surfaces in front of it.
-    c0.z -= 0.002 * c0.w;
-    c1.z -= 0.002 * c1.w;
     gl_Position = c0 + vec4(n0, 0.0, 0.0); EmitVertex();
     gl_Position = c0 - vec4(n0, 0.0, 0.0); EmitVertex();
     gl_Position = c1 + vec4(n1, 0.0, 0.0); EmitVertex();

@@ -10,13 +10,10 @@ EdgeMask::EdgeMask()
                 {GL_FRAGMENT_SHADER, "ibfvs/edge_mask.frag"}}) {}
 
 void EdgeMask::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Viewport& viewport,
-                     const gl::Framebuffer& target, const glm::vec3& color, float opacity, float widthPx) const {
+                     const gl::Texture2D& depth, const gl::Framebuffer& target, const glm::vec3& color, float opacity, float widthPx) const {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
-    // Depth tested against the surface (no writes): hidden silhouettes stay hidden.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+    glDisable(GL_DEPTH_TEST);  // visibility is tested in the fragment shader
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     program_.use();
@@ -25,10 +22,13 @@ void EdgeMask::apply(const SurfaceGpu& surface, const core::Camera& camera, cons
     glUniform2f(program_.uniform("uViewport"), float(viewport.width), float(viewport.height));
     glUniform1f(program_.uniform("uWidthPx"), widthPx);
     glUniform4f(program_.uniform("uColor"), color.r, color.g, color.b, opacity);
+    glUniform1f(program_.uniform("uNear"), camera.nearPlane);
+    glUniform1f(program_.uniform("uFar"), camera.farPlane);
+    glUniform1i(program_.uniform("uOrtho"), camera.orthographic());
+    glUniform1f(program_.uniform("uTolerance"), 0.06f);
+    glBindTextureUnit(0, depth.id());
     surface.drawEdgesAdjacency();
     glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_DEPTH_TEST);
 }
 
 }  // namespace flowsurf::methods::ibfvs

@@ -16,7 +16,7 @@ class EdgeMask {
 public:
     EdgeMask();
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Viewport& viewport,
-               const gl::Framebuffer& target, const glm::vec3& color, float opacity, float widthPx) const;
+               const gl::Texture2D& depth, const gl::Framebuffer& target, const glm::vec3& color, float opacity, float widthPx) const;
 
 private:
     gl::Program program_;

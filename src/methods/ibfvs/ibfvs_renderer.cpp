@@ -10,8 +10,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
-      compositeFbo_(gl::Framebuffer::create()),
-      edgeFbo_(gl::Framebuffer::create()) {
+      compositeFbo_(gl::Framebuffer::create()) {
     const float gray[4] = {params.ibfvs.flowBackground, 0, 0, 1};
     for (int i = 0; i < 2; ++i) {
         flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
@@ -27,9 +26,6 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
     }
     compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
     compositeFbo_.finish(1);
-    edgeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
-    edgeFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    edgeFbo_.finish(1);
 }
 
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
@@ -64,7 +60,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {
         timer_.begin("edge mask");
-        edgeMask_.apply(*in.surface, in.camera, viewport_, edgeFbo_, c.background,
+        edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, compositeFbo_, c.background,
                         params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx);
     }
     timer_.endFrame();

@@ -35,7 +35,6 @@ private:
     gl::Framebuffer noiseFbo_[2];  // F_a alone: noise injection samples depth, so it must not be attached
     gl::Texture2D composite_;      // RGBA8
     gl::Framebuffer compositeFbo_;
-    gl::Framebuffer edgeFbo_;      // composite + surface depth: the mask is depth tested
     int current_ = 0, source_ = 0;
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
