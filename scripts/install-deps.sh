@@ -9,6 +9,7 @@ PACKAGES=(
   libegl-mesa0 libgl1-mesa-dri                  # Mesa llvmpipe: GL without a GPU
   libglm-dev                                    # vector maths
   libpng-dev                                    # PNG output
+  libfreetype-dev fonts-dejavu-core             # labels on compare sheets
   libcli11-dev                                  # command-line parsing
   libgtest-dev                                  # tests
   ffmpeg                                        # MP4 (H.264) output

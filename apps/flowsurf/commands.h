@@ -9,6 +9,8 @@ namespace flowsurf::app {
 
 int runRender(const RenderOptions& options);
 int runInfo(const std::string& path);
+// Methods side by side on the same camera and frames, labelled with ms/frame.
+int runCompare(const RenderOptions& options, const std::string& methods);
 
 struct BenchOptions {
     std::string csv;          // also write CSV here

@@ -19,6 +19,12 @@ int main(int argc, char** argv) {
     CLI::App* renderCmd = app.add_subcommand("render", "Render a flow texture image or animation");
     app::addRenderOptions(*renderCmd, render);
 
+    app::RenderOptions compare;
+    std::string compareMethods = "isa,ibfvs";
+    CLI::App* compareCmd = app.add_subcommand("compare", "Methods side by side on one camera, labelled with ms/frame");
+    app::addRenderOptions(*compareCmd, compare);
+    compareCmd->add_option("--methods", compareMethods, "Comma-separated methods to compare")->capture_default_str();
+
     std::string infoPath;
     CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, bounds");
     infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
@@ -48,6 +54,7 @@ int main(int argc, char** argv) {
     try {
         if (*renderCmd) return app::runRender(render);
         if (*infoCmd) return app::runInfo(infoPath);
+        if (*compareCmd) return app::runCompare(compare, compareMethods);
         if (*benchCmd) return app::runBench(bench);
     } catch (const ConfigError& e) {
         std::fprintf(stderr, "flowsurf: %s\n", e.what());

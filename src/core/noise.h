@@ -10,7 +10,7 @@ namespace flowsurf::core {
 enum class NoiseProfile { Square, Sawtooth };
 
 struct NoiseParams {
-    float scale = 3.0f;        // s: noise cell size in pixels, [L] 1..10
+    float scale = 2.0f;        // s: noise cell size in pixels, [L] 1..10
     float period = 64.0f;      // f_rate: frames per cycle of the profile w
     NoiseProfile profile = NoiseProfile::Square;
     uint32_t seed = 1;

@@ -21,7 +21,7 @@ enum class CameraMoveRemedy { None, Translate, Freeze };
 
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
-    float alpha = 0.1f;         // noise blend alpha, [L] 0.1..0.2
+    float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2
     float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
     float stepPx = 2.0f;         // largest displacement per frame, pixels ([L] dt)
     // Advection speed: vectors faster than this percentile of the surface's speeds are
@@ -32,7 +32,7 @@ struct CommonParams {
     // ParaView's Surface LIC: CFD wall fields span decades of magnitude.
     bool normalize = true;
     core::NoiseParams noise;     // scale s (px), period, profile, seed
-    float contrast = 3.0f;       // display gain of F_a about the noise mean (overlay only)
+    float contrast = 2.5f;       // display gain of F_a about the noise mean (overlay only)
     Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s
     bool lighting = true;        // diffuse head light in F_s
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]

@@ -1,0 +1,82 @@
+#include "commands.h"
+
+#include "core/errors.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "io/image_writer.h"
+#include "label_text.h"
+#include "methods/common/frame.h"
+#include "progress.h"
+#include "scene_setup.h"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+namespace flowsurf::app {
+
+namespace {
+
+std::vector<std::string> splitMethods(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream ss(list);
+    for (std::string m; std::getline(ss, m, ',');)
+        if (!m.empty()) out.push_back(m);
+    if (out.empty()) throw ConfigError("--methods: give at least one method, e.g. isa,ibfvs");
+    return out;
+}
+
+}  // namespace
+
+int runCompare(const RenderOptions& o, const std::string& methodList) {
+    validateRenderOptions(o);
+    if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
+    const std::vector<std::string> names = splitMethods(methodList);
+
+    core::Dataset data = loadInput(o.input);
+    const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
+    const std::string field = methods::selectField(mesh, o.field, data.source);
+    const core::Camera camera0 = makeCamera(o, data.bounds());
+    gl::HeadlessContext context(o.verbose);
+    methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
+
+    // Same camera path, frame count and seed for every method ([L] Fig. 1).
+    const int label = std::max(24, o.size.height / 16), gap = 4;
+    RgbImage sheet;
+    sheet.width = int(names.size()) * o.size.width + int(names.size() - 1) * gap;
+    sheet.height = o.size.height + label;
+    sheet.pixels.assign(size_t(sheet.width) * sheet.height * 3, 255);
+    ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
+    for (size_t m = 0; m < names.size(); ++m) {
+        auto method = methods::makeMethod(names[m], o.params, o.size);
+        glFinish();
+        auto t0 = std::chrono::steady_clock::now();
+        for (int k = 0; k <= o.frames; ++k) {
+            method->renderFrame({&surface, core::orbitCamera(camera0, o.orbit * float(k)), uint32_t(k)});
+            progress.update(int(m) * (o.frames + 1) + k + 1);
+        }
+        glFinish();
+        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+                    (o.frames + 1);
+        std::vector<uint8_t> img = gl::readRgb8TopDown(method->composite());
+        const int x0 = int(m) * (o.size.width + gap);
+        for (int y = 0; y < o.size.height; ++y)
+            std::copy_n(&img[size_t(y) * o.size.width * 3], size_t(o.size.width) * 3,
+                        &sheet.pixels[(size_t(y + label) * sheet.width + x0) * 3]);
+        char text[128];
+        std::string upper = names[m];
+        for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+        std::snprintf(text, sizeof text, "%s  %.1f ms/frame (%.0f fps)", upper.c_str(), ms, 1000.0 / ms);
+        const uint8_t black[3] = {20, 20, 20};
+        drawText(sheet, text, x0 + 8, label * 3 / 4, label * 3 / 5, black);
+        if (!o.quiet) std::fprintf(stderr, "\nflowsurf: %s %.2f ms/frame\n", names[m].c_str(), ms);
+    }
+    progress.finish();
+    io::writePngRgb8(o.output, sheet.width, sheet.height, 3, sheet.pixels);
+    if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
+    return 0;
+}
+
+}  // namespace flowsurf::app

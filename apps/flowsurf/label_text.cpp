@@ -1,0 +1,47 @@
+#include "label_text.h"
+
+#include "core/errors.h"
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <algorithm>
+
+namespace flowsurf::app {
+
+namespace {
+const char* kFonts[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+                        "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"};
+}
+
+void drawText(RgbImage& image, const std::string& text, int x, int y, int sizePx, const uint8_t color[3]) {
+    FT_Library lib = nullptr;
+    if (FT_Init_FreeType(&lib)) throw IoError("FreeType could not be initialised");
+    FT_Face face = nullptr;
+    for (const char* f : kFonts)
+        if (!FT_New_Face(lib, f, 0, &face)) break;
+    if (!face) {
+        FT_Done_FreeType(lib);
+        throw IoError(std::string(kFonts[0]) + ": cannot load the label font (install fonts-dejavu-core)");
+    }
+    FT_Set_Pixel_Sizes(face, 0, FT_UInt(sizePx));
+    int penX = x;
+    for (unsigned char ch : text) {  // labels are ASCII
+        if (FT_Load_Char(face, ch, FT_LOAD_RENDER)) continue;
+        const FT_Bitmap& bm = face->glyph->bitmap;
+        int left = penX + face->glyph->bitmap_left, top = y - face->glyph->bitmap_top;
+        for (unsigned r = 0; r < bm.rows; ++r)
+            for (unsigned c = 0; c < bm.width; ++c) {
+                int px = left + int(c), py = top + int(r);
+                if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+                float a = bm.buffer[r * bm.pitch + c] / 255.0f;
+                uint8_t* dst = &image.pixels[(size_t(py) * image.width + px) * 3];
+                for (int k = 0; k < 3; ++k) dst[k] = uint8_t(dst[k] + a * (float(color[k]) - float(dst[k])) + 0.5f);
+            }
+        penX += int(face->glyph->advance.x >> 6);
+    }
+    FT_Done_Face(face);
+    FT_Done_FreeType(lib);
+}
+
+}  // namespace flowsurf::app
