@@ -12,6 +12,10 @@ namespace flowsurf::app {
 int runBench(const BenchOptions& o) {
     bench::BenchOptions b;
     b.frames = o.frames;
+    b.methods = o.methods;
+    b.triangles = o.triangles;
+    b.imageSizes = o.sizes;
+    b.gridRes = o.grids;
     if (o.quick) {
         b.triangles = {10'000, 220'000};
         b.imageSizes = {512};

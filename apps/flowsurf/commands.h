@@ -4,6 +4,7 @@
 #include "options.h"
 
 #include <string>
+#include <vector>
 
 namespace flowsurf::app {
 
@@ -16,7 +17,10 @@ struct BenchOptions {
     std::string csv;          // also write CSV here
     int frames = 20;          // timed frames per row
     bool quick = false;       // a small subset (for smoke runs)
-    std::string methods = "isa";
+    std::vector<std::string> methods{"isa", "ibfvs"};
+    std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
+    std::vector<int> sizes{512, 1024};
+    std::vector<int> grids{128, 256, 512, 1024};
 };
 int runBench(const BenchOptions& options);
 

@@ -34,6 +34,14 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--csv", bench.csv, "Also write the table as CSV to this file");
     benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
     benchCmd->add_flag("--quick", bench.quick, "A small subset of rows (smoke test)");
+    benchCmd->add_option("--methods", bench.methods, "Methods to time")->delimiter(',')->capture_default_str()
+        ->check(CLI::IsMember({"isa", "ibfvs"}));
+    benchCmd->add_option("--triangles", bench.triangles, "Sphere mesh sizes (triangles)")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(8L, 20'000'000L));
+    benchCmd->add_option("--sizes", bench.sizes, "Square image sizes (pixels)")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(16, 8192));
+    benchCmd->add_option("--grids", bench.grids, "ISA advection mesh resolutions")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(64, 1024));
 
     try {
         app.parse(argc, argv);
