@@ -11,6 +11,7 @@ PACKAGES=(
   libpng-dev                                    # PNG output
   libfreetype-dev fonts-dejavu-core             # labels on compare sheets
   libcli11-dev                                  # command-line parsing
+  nlohmann-json3-dev                            # camera path files (JSON)
   libgtest-dev                                  # tests
   ffmpeg                                        # MP4 (H.264) output
 )

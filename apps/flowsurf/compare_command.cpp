@@ -38,7 +38,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     core::Dataset data = loadInput(o.input);
     const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
     const std::string field = methods::selectField(mesh, o.field, data.source);
-    const core::Camera camera0 = makeCamera(o, data.bounds());
+    const FrameCameras cameras(o, data.bounds());
     gl::HeadlessContext context(o.verbose);
     methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
 
@@ -54,7 +54,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
         for (int k = 0; k <= o.frames; ++k) {
-            method->renderFrame({&surface, core::orbitCamera(camera0, o.orbit * float(k)), uint32_t(k)});
+            method->renderFrame({&surface, cameras.at(k), uint32_t(k)});
             progress.update(int(m) * (o.frames + 1) + k + 1);
         }
         glFinish();

@@ -172,6 +172,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->group(gCam)->check(CLI::PositiveNumber);
     cmd.add_option("--orbit", o.orbit, "Camera turns this many degrees per frame about the up axis (dynamic case)")
         ->group(gCam)->capture_default_str()->check(CLI::Range(-180.0f, 180.0f));
+    cmd.add_option("--camera-path", o.cameraPath, "Keyframed camera path (JSON); see README")->group(gCam);
 }
 
 void validateRenderOptions(const RenderOptions& o) {
@@ -179,6 +180,7 @@ void validateRenderOptions(const RenderOptions& o) {
     outputKind(o.output);
     if (!o.flowTexture.empty() && outputKind(o.flowTexture) != OutputKind::Png)
         throw ConfigError("--flow-texture: '" + o.flowTexture + "' must be a .png file");
+    if (!o.cameraPath.empty() && o.orbit != 0.0f) throw ConfigError("--camera-path and --orbit cannot be combined");
     if (o.up && glm::length(*o.up) == 0.0f) throw ConfigError("--up: the up vector must not be zero");
     if (o.eye && o.target && glm::length(*o.eye - *o.target) == 0.0f)
         throw ConfigError("--eye and --target must differ");

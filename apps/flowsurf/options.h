@@ -25,6 +25,7 @@ struct RenderOptions {
     float fov = 30.0f;
     float ortho = 0.0f;                 // > 0: orthographic view height
     float orbit = 0.0f;                 // degrees per frame about the up axis
+    std::string cameraPath;             // --camera-path FILE (JSON keyframes)
     size_t timeStep = 0;                // which time step to render (this issue: one)
     int fps = 30;
     int crf = 18;

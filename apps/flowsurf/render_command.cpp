@@ -40,7 +40,7 @@ int runRender(const RenderOptions& o) {
     core::Dataset data = loadInput(o.input);
     const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
     const std::string field = methods::selectField(mesh, o.field, data.source);
-    core::Camera camera0 = makeCamera(o, data.bounds());
+    const FrameCameras cameras(o, data.bounds());
 
     gl::HeadlessContext context(o.verbose);
     methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
@@ -57,7 +57,7 @@ int runRender(const RenderOptions& o) {
     const int total = o.frames + 1;
     ProgressBar progress("render", total, !o.quiet);
     for (int k = 0; k < total; ++k) {
-        methods::FrameInput in{&surface, core::orbitCamera(camera0, o.orbit * float(k)), uint32_t(k)};
+        methods::FrameInput in{&surface, cameras.at(k), uint32_t(k)};
         method->renderFrame(in);
         if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
         if (kind == OutputKind::PngSequence)

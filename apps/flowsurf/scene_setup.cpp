@@ -2,6 +2,7 @@
 
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
+#include "camera_path_file.h"
 #include "io/dataset_reader.h"
 
 namespace flowsurf::app {
@@ -32,6 +33,18 @@ core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
         throw ConfigError("--up is parallel to the viewing direction");
     core::fitClipPlanes(cam, bounds);
     return cam;
+}
+
+FrameCameras::FrameCameras(const RenderOptions& o, const core::Bounds& bounds)
+    : camera0_(makeCamera(o, bounds)), orbit_(o.orbit), bounds_(bounds) {
+    if (!o.cameraPath.empty()) path_ = readCameraPath(o.cameraPath, camera0_);
+}
+
+core::Camera FrameCameras::at(int frame) const {
+    if (path_.empty()) return core::orbitCamera(camera0_, orbit_ * float(frame));
+    core::Camera c = path_.at(frame);
+    core::fitClipPlanes(c, bounds_);
+    return c;
 }
 
 }  // namespace flowsurf::app

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/camera_path.h"
 #include "core/mesh.h"
 #include "options.h"
 
@@ -13,5 +14,18 @@ core::Dataset loadInput(const std::string& input);
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds);
+
+// The camera of every frame: fixed, orbiting (--orbit), or keyframed (--camera-path).
+class FrameCameras {
+public:
+    FrameCameras(const RenderOptions& o, const core::Bounds& bounds);
+    core::Camera at(int frame) const;
+
+private:
+    core::Camera camera0_;
+    float orbit_;
+    core::CameraPath path_;
+    core::Bounds bounds_;
+};
 
 }  // namespace flowsurf::app

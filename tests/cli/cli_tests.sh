@@ -50,6 +50,10 @@ expect_fail "absurd image size"   2 "out of range"         "$WORK/oc.png" -- ren
 expect_fail "unknown method"      2 "method"               "$WORK/od.png" -- render builtin:sphere --method lic -o "$WORK/od.png" -q
 expect_fail "bad output kind"     2 "\.gif"                "$WORK/oe.gif" -- render builtin:sphere -o "$WORK/oe.gif" -q
 expect_fail "unwritable output"   3 "nodir"                "$WORK/nodir/of.png" -- render builtin:sphere --size 64x64 --frames 2 -o "$WORK/nodir/of.png" -q
+echo '{"keyframes": [{"frame": 0}]}' > "$WORK/noeye.json"
+echo '{"keyframes": [' > "$WORK/broken.json"
+expect_fail "camera path no eye"  4 "noeye.json: keyframe 0" "$WORK/og.png" -- render builtin:sphere --camera-path "$WORK/noeye.json" -o "$WORK/og.png" -q
+expect_fail "camera path broken"  4 "broken.json"          "$WORK/oh.png" -- render builtin:sphere --camera-path "$WORK/broken.json" -o "$WORK/oh.png" -q
 expect_fail "info missing file"   3 "nosuch.vtu"           "" -- info "$WORK/nosuch.vtu"
 
 # --- commands that must work ------------------------------------------------------
@@ -66,6 +70,17 @@ if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 2 -q -o "$WORK/seq_%0
     ok "render png sequence"
 else
     bad "render png sequence"
+fi
+echo '{"keyframes": [{"frame": 0, "eye": [0,0,4]}, {"frame": 3, "eye": [3,1,2.5], "fov": 25}]}' > "$WORK/path.json"
+if "$FLOWSURF" render builtin:sphere --camera-path "$WORK/path.json" --size 64x64 --frames 3 -q -o "$WORK/p.png" && [ -s "$WORK/p.png" ]; then
+    ok "render along a camera path"
+else
+    bad "render along a camera path"
+fi
+if "$FLOWSURF" compare builtin:sphere --methods isa,ibfvs --size 64x64 --frames 3 -q -o "$WORK/c.png" && [ -s "$WORK/c.png" ]; then
+    ok "compare sheet"
+else
+    bad "compare sheet"
 fi
 if command -v ffmpeg >/dev/null; then
     if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 4 --orbit 2 -q -o "$WORK/a.mp4" && [ -s "$WORK/a.mp4" ]; then

@@ -60,3 +60,21 @@ TEST(Camera, OrbitKeepsDistanceAndTurnsAboutUp) {
     EXPECT_NEAR(o.eye.y, 1.0f, 1e-5f);
     EXPECT_NEAR(o.eye.z, 0.0f, 1e-5f);
 }
+
+#include "core/camera_path.h"
+#include "core/errors.h"
+
+TEST(CameraPath, InterpolatesLinearlyAndHoldsAtTheEnds) {
+    Camera a, b;
+    a.eye = {0, 0, 4};
+    b.eye = {4, 0, 0};
+    b.fovDeg = 50.0f;
+    CameraPath path({{20, b}, {10, a}});  // any order
+    EXPECT_EQ(path.at(0).eye, a.eye);
+    EXPECT_EQ(path.at(99).eye, b.eye);
+    Camera mid = path.at(15);
+    EXPECT_NEAR(mid.eye.x, 2.0f, 1e-6f);
+    EXPECT_NEAR(mid.eye.z, 2.0f, 1e-6f);
+    EXPECT_NEAR(mid.fovDeg, 40.0f, 1e-5f);
+    EXPECT_THROW(CameraPath({{3, a}, {3, b}}), flowsurf::ConfigError);
+}
