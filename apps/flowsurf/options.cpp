@@ -85,7 +85,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option_function<std::string>("--size", [&o](const std::string& s) { o.size = parseSize(s); },
                                          "Image size WxH in pixels (default 800x600)")->group(gOut);
     cmd.add_option("--frames", o.frames, "Advection frames before the output frame")
-        ->group(gOut)->capture_default_str()->check(CLI::Range(1, 100000));
+        ->group(gOut)->capture_default_str()->check(CLI::Range(0, 100000));
     cmd.add_option("--flow-texture", o.flowTexture, "Also write the advected texture F_a alone (16-bit gray PNG)")
         ->group(gOut);
     cmd.add_option("--fps", o.fps, "MP4 frame rate")->group(gOut)->capture_default_str()->check(CLI::Range(1, 240));
@@ -101,7 +101,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
 
     const std::string gMethod = "Method";
     cmd.add_option("-m,--method", o.method, "Visualization method")
-        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({"isa", "ibfvs"}));
+        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({"isa", "ibfvs", "hybrid"}));
     cmd.add_option("--alpha", p.common.alpha, "Noise blend alpha [L eq. 9], 0..1 (papers: 0.1-0.2)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
     cmd.add_option("--beta", p.common.beta, "Texture strength beta [L eq. 10], 0..1")
@@ -137,6 +137,21 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
                                               : methods::CameraMoveRemedy::Translate;
     }, "When the camera moves: translate (reproject the texture with the surface, default), freeze, none")
         ->group(gMethod)->check(CLI::IsMember({"translate", "freeze", "none"}));
+    cmd.add_option("--filter-length", p.hybrid.filterLength, "Hybrid LIC filter length L in samples ([W] 25-70)")
+        ->group(gMethod)->capture_default_str()->check(CLI::Range(1, 1001));
+    cmd.add_option_function<std::string>("--kernel", [&p](const std::string& s) {
+        p.hybrid.kernel = s == "box" ? methods::LicKernel::Box
+                        : s == "exponential" ? methods::LicKernel::Exponential
+                        : s == "hann" ? methods::LicKernel::Hann : methods::LicKernel::Gaussian;
+    }, "Hybrid LIC kernel: box, exponential, gaussian (default), hann")
+        ->group(gMethod)->check(CLI::IsMember({"box", "exponential", "gaussian", "hann"}));
+    cmd.add_option_function<std::string>("--integrator", [&p](const std::string& s) {
+        p.hybrid.integrator = s == "euler" ? methods::Integrator::Euler
+                            : s == "rk4" ? methods::Integrator::Rk4 : methods::Integrator::Rk2;
+    }, "Hybrid particle integrator: euler, rk2 (default), rk4")
+        ->group(gMethod)->check(CLI::IsMember({"euler", "rk2", "rk4"}));
+    cmd.add_option("--noise-size", p.hybrid.noiseSize, "Hybrid solid noise texels per side (64 or 128)")
+        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({64, 128}));
     cmd.add_option("--edge-epsilon", p.isa.edgeEpsilon, "ISA edge detection eps [L eq. 14], depth range per pixel")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 10.0f));
     cmd.add_option_function<std::string>("--edge-blending", [&p](const std::string& s) { p.isa.edgeBlending = s == "on"; },

@@ -30,7 +30,8 @@ void main() {
     float light = 1.0;
     if (uLighting != 0) {
         vec3 n = normalize(shade.xyz);
-        light = 0.35 + 0.65 * abs(n.z);  // head light, two-sided
+        // A key light above-left of the eye, two-sided (open CFD surfaces).
+        light = 0.3 + 0.7 * abs(dot(n, normalize(vec3(-0.35, 0.5, 0.8))));
     }
     vec3 color = uBeta * vec3(fa) + (1.0 - uBeta) * fs * light;
     // Lighting also shades the texture so the shape reads through it.

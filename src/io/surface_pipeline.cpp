@@ -1,7 +1,8 @@
-// Sections: leaves and checks · surface stages · copy into core::SurfaceMesh.
+// Sections: leaves · surface stages · copy into core::SurfaceMesh.
 #include "io/surface_pipeline.h"
 
 #include "core/errors.h"
+#include "io/dataset_check.h"
 
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
@@ -12,11 +13,9 @@
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetSurfaceFilter.h>
-#include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
-#include <vtkUnstructuredGrid.h>
 
 #include <cmath>
 #include <limits>
@@ -24,7 +23,7 @@
 
 namespace flowsurf::io::detail {
 
-// --- leaves and checks -------------------------------------------------------------------
+// --- leaves -------------------------------------------------------------------
 
 void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit) {
     if (auto* ds = vtkDataSet::SafeDownCast(data)) {
@@ -38,51 +37,6 @@ void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& vi
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
         auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
         if (ds && ds->GetNumberOfPoints() > 0) visit(ds);
-    }
-}
-
-namespace {
-
-void checkArrays(vtkFieldData* arrays, vtkIdType expected, const char* kind,
-                 const std::string& where) {
-    for (int i = 0; i < arrays->GetNumberOfArrays(); ++i) {
-        vtkAbstractArray* a = arrays->GetAbstractArray(i);
-        if (!a || a->GetNumberOfTuples() == expected) continue;
-        throw FormatError(where + ": " + kind + " array '" + (a->GetName() ? a->GetName() : "?") +
-                          "' has " + std::to_string(a->GetNumberOfTuples()) + " values for " +
-                          std::to_string(expected) + " " + kind + "s");
-    }
-}
-
-void checkCells(vtkCellArray* cells, vtkIdType points, const char* kind, const std::string& where) {
-    if (!cells || cells->GetNumberOfCells() == 0) return;
-    if (!cells->IsValid())
-        throw FormatError(where + ": the " + kind + " offsets are inconsistent with the connectivity");
-    double range[2];
-    cells->GetConnectivityArray()->GetRange(range, 0);
-    if (range[0] < 0 || range[1] >= static_cast<double>(points))
-        throw FormatError(where + ": a " + kind + " cell refers to point index " +
-                          std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) +
-                          " (counting from 0) but there are only " + std::to_string(points) +
-                          " points");
-}
-
-}  // namespace
-
-void checkDataSet(vtkDataSet* data, const std::string& where) {
-    const vtkIdType points = data->GetNumberOfPoints();
-    checkArrays(data->GetPointData(), points, "point", where);
-    checkArrays(data->GetCellData(), data->GetNumberOfCells(), "cell", where);
-    if (auto* pd = vtkPolyData::SafeDownCast(data)) {
-        checkCells(pd->GetVerts(), points, "vertex", where);
-        checkCells(pd->GetLines(), points, "line", where);
-        checkCells(pd->GetPolys(), points, "polygon", where);
-        checkCells(pd->GetStrips(), points, "strip", where);
-    } else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(data)) {
-        checkCells(ug->GetCells(), points, "cell", where);
-        if (ug->GetNumberOfCells() > 0 && ug->GetCellTypesArray() &&
-            ug->GetCellTypesArray()->GetNumberOfTuples() != ug->GetNumberOfCells())
-            throw FormatError(where + ": the cell types do not match the number of cells");
     }
 }
 

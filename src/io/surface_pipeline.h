@@ -21,10 +21,6 @@ namespace flowsurf::io::detail {
 // Calls `visit` for every non-empty data set: `data` itself or the leaves of a composite.
 void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit);
 
-// Refuses what would make VTK filters read out of bounds: array lengths that do not
-// match the point/cell counts, connectivity outside the points. Throws FormatError.
-void checkDataSet(vtkDataSet* data, const std::string& where);
-
 // Stages 1–5. Point arrays win over converted cell arrays of the same name.
 vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
                                             const std::string& where);

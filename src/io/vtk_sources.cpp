@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "io/exodus_check.h"
 #include "io/ply_reader.h"
+#include "io/xml_check.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkExodusIIReader.h>
@@ -327,9 +328,14 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
                           "' (supported: " + supportedExtensions() + ")");
     trap.clear();
     const std::string name = entry->name;
-    if (ext == ".vtp") return makeSource(readerFor<vtkXMLPolyDataReader>(path), path, name, trap);
-    if (ext == ".vtu")
-        return makeSource(readerFor<vtkXMLUnstructuredGridReader>(path), path, name, trap);
+    if (ext == ".vtp" || ext == ".vtu") {
+        vtkSmartPointer<vtkAlgorithm> reader;
+        if (ext == ".vtp") reader = readerFor<vtkXMLPolyDataReader>(path);
+        else reader = readerFor<vtkXMLUnstructuredGridReader>(path);
+        auto source = makeSource(reader, path, name, trap);
+        checkXmlCompressionHeaders(path);
+        return source;
+    }
     if (ext == ".vtk") return openLegacy(path, trap);
     if (ext == ".ply") return std::make_unique<ReadySource>(readPly(path), name);
     if (ext == ".obj") return makeSource(readerFor<vtkOBJReader>(path), path, name, trap);

@@ -70,6 +70,7 @@ float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int d
             ++n;
         }
     double mean = sum / n, var = sum2 / n - mean * mean;
+    double prev = 1.0;
     for (int lag = 1; lag < 200; ++lag) {
         double c = 0;
         int m = 0;
@@ -80,7 +81,10 @@ float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int d
                 c += (r.f(x, y) - mean) * (r.f(xs, ys) - mean);
                 ++m;
             }
-        if (m == 0 || c / m / var < 0.5) return float(lag);
+        if (m == 0) return float(lag);
+        double rho = c / m / var;
+        if (rho < 0.5) return float(lag - 1) + float((prev - 0.5) / (prev - rho));  // linear crossing
+        prev = rho;
     }
     return 200.0f;
 }

@@ -27,8 +27,8 @@ Rendered renderScene(const core::Dataset& data, const std::string& method, const
 // Orthographic camera looking down -z at the origin, view height `height`.
 core::Camera orthoFront(float height);
 
-// Autocorrelation length of F_a along (dx, dy) in pixels: the first lag where the
-// normalised autocorrelation over the box drops below 0.5.
+// Autocorrelation length of F_a along (dx, dy) in pixels: the lag where the normalised
+// autocorrelation over the box crosses 0.5 (linearly interpolated between lags).
 float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int dx, int dy);
 
 // Pearson correlation of the columns x=a and x=b over rows y0..y1 of F_a.

@@ -52,7 +52,7 @@ TEST(CliOptions, RefusesOutOfRangeAndUnknownValues) {
     EXPECT_THROW(parse({"x", "--grid-res", "2048"}), CLI::ValidationError);
     EXPECT_THROW(parse({"x", "--method", "lic"}), CLI::ValidationError);
     EXPECT_THROW(parse({"x", "--alpha", "1.5"}), CLI::ValidationError);
-    EXPECT_THROW(parse({"x", "--frames", "0"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--frames", "-1"}), CLI::ValidationError);
     EXPECT_THROW(parse({"x", "--size", "0x100"}), ConfigError);
     EXPECT_THROW(parse({"x", "--size", "100000x100000"}), ConfigError);
     EXPECT_THROW(parse({"x", "--size", "big"}), ConfigError);

@@ -1,6 +1,7 @@
 #include "methods/common/frame.h"
 
 #include "core/errors.h"
+#include "methods/hybrid/hybrid_renderer.h"
 #include "methods/ibfvs/ibfvs_renderer.h"
 #include "methods/isa/isa_renderer.h"
 
@@ -12,7 +13,12 @@ std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodPara
                                        const core::Viewport& viewport) {
     if (name == "isa") return std::make_unique<isa::IsaRenderer>(params, viewport);
     if (name == "ibfvs") return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);
-    throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs)");
+    if (name == "hybrid") {
+        if (params.hybrid.noiseSize != 64 && params.hybrid.noiseSize != 128)
+            throw ConfigError("--noise-size must be 64 or 128");
+        return std::make_unique<hybrid::HybridRenderer>(params, viewport);
+    }
+    throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs, hybrid)");
 }
 
 float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx) {

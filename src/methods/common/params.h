@@ -59,10 +59,23 @@ struct IbfvsParams {
     float edgeMaskOpacity = 0.85f;
 };
 
+enum class LicKernel { Box, Exponential, Gaussian, Hann };
+enum class Integrator { Euler, Rk2, Rk4 };
+
+// Hybrid physical/device-space LIC only, [W §3-6].
+struct HybridParams {
+    int filterLength = 31;            // L: samples along the streamline, [W] 25..70
+    LicKernel kernel = LicKernel::Gaussian;
+    Integrator integrator = Integrator::Rk2;
+    int noiseSize = 64;               // solid noise texels per side: 64 or 128
+    float depthTolerance = 0.03f;     // particle vs visible layer, fraction of depth range
+};
+
 struct MethodParams {
     CommonParams common;
     IsaParams isa;
     IbfvsParams ibfvs;
+    HybridParams hybrid;
 };
 
 }  // namespace flowsurf::methods

@@ -1,0 +1,62 @@
+#include "methods/hybrid/hybrid_renderer.h"
+
+#include "core/errors.h"
+
+namespace flowsurf::methods::hybrid {
+
+HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
+    : params_(params),
+      viewport_(viewport),
+      seeds_(viewport),
+      noise_(params.hybrid.noiseSize),
+      overlay_(params.common),
+      lic_(GL_R32F, viewport.width, viewport.height, GL_NEAREST),
+      licFbo_(gl::Framebuffer::create()),
+      composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
+      compositeFbo_(gl::Framebuffer::create()) {
+    licFbo_.attach(GL_COLOR_ATTACHMENT0, lic_);
+    licFbo_.finish(1);
+    compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
+    compositeFbo_.finish(1);
+}
+
+void HybridRenderer::renderFrame(const FrameInput& in) {
+    const CommonParams& c = params_.common;
+    timer_.beginFrame();
+
+    // (1) seed textures: P-space position and velocity per pixel [W §4]; the static
+    // case (same view, same data) reuses them.
+    lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
+                   !core::sameCamera(in.camera, seedCamera_);
+    if (lastDynamic_) {
+        timer_.begin("seed textures");
+        seeds_.render(*in.surface, in.camera);
+        haveSeeds_ = true;
+        seedGeneration_ = in.surface->generation();
+        seedCamera_ = in.camera;
+    }
+
+    // (2) solid noise N(r, t) at this frame's phase [W §5]
+    timer_.begin("solid noise");
+    noise_.update(in.frame, c.noise);
+
+    // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
+    timer_.begin("particle tracing");
+    TracingInput t;
+    t.seeds = &seeds_;
+    t.noise = noise_.texture();
+    t.noiseSize = noise_.size();
+    t.camera = in.camera;
+    t.viewport = viewport_;
+    t.stepPx = c.stepPx;
+    t.speedRef = in.surface->maxSpeed();
+    t.noiseScalePx = c.noise.scale;
+    tracing_.apply(t, params_.hybrid, licFbo_);
+
+    // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
+    timer_.begin("overlay");
+    overlay_.apply(lic_, seeds_.depth(), seeds_.shade(), compositeFbo_, in.surface->colorSpeedMax());
+    timer_.endFrame();
+}
+
+}  // namespace flowsurf::methods::hybrid

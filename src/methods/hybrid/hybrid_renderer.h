@@ -1,0 +1,43 @@
+// flowsurf — hybrid physical/device-space advection with solid noise and LIC (Weiskopf
+// & Ertl [W], ALGORITHMS.md §7): the orchestrator. The texture is computed from 3D
+// particle paths and object-fixed noise each frame, so it sticks to the surface when the
+// camera moves and has no inflow at silhouettes.
+#pragma once
+
+#include "methods/common/frame.h"
+#include "methods/common/overlay.h"
+#include "methods/hybrid/particle_tracing.h"
+#include "methods/hybrid/seed_textures.h"
+#include "methods/hybrid/solid_noise.h"
+
+namespace flowsurf::methods::hybrid {
+
+class HybridRenderer final : public FlowMethod {
+public:
+    HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
+    const char* name() const override { return "hybrid"; }
+    void renderFrame(const FrameInput& in) override;
+    const gl::Texture2D& flowTexture() const override { return lic_; }
+    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
+    bool lastFrameDynamic() const override { return lastDynamic_; }
+    // For tests: the solid noise volume.
+    GLuint noiseTexture() const { return noise_.texture(); }
+
+private:
+    MethodParams params_;
+    core::Viewport viewport_;
+    SeedTextures seeds_;
+    SolidNoise noise_;
+    ParticleTracing tracing_;
+    Overlay overlay_;
+    gl::Texture2D lic_;            // I, R32F
+    gl::Framebuffer licFbo_;
+    gl::Texture2D composite_;      // RGBA8
+    gl::Framebuffer compositeFbo_;
+    bool haveSeeds_ = false, lastDynamic_ = false;
+    uint64_t seedGeneration_ = 0;
+    core::Camera seedCamera_;
+};
+
+}  // namespace flowsurf::methods::hybrid
