@@ -159,6 +159,14 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->group(gMethod)->check(CLI::IsMember({"on", "off"}));
 
     const std::string gLook = "Overlay";
+    cmd.add_option_function<std::string>("--overlay", [&p](const std::string& s) {
+        using methods::OverlayScheme;
+        p.common.overlay = s == "gray" ? OverlayScheme::Gray
+                         : s == "gray-lit" ? OverlayScheme::GrayLit
+                         : s == "hue-lit" ? OverlayScheme::HueLit
+                         : s == "coolwarm" ? OverlayScheme::CoolWarm : OverlayScheme::Blend;
+    }, "blend (eq. 10: texture + colour map x lighting, default); or [W Fig. 6]: gray, gray-lit, hue-lit, coolwarm")
+        ->group(gLook)->check(CLI::IsMember({"blend", "gray", "gray-lit", "hue-lit", "coolwarm"}));
     cmd.add_option_function<std::string>("--colormap", [&p](const std::string& s) {
         p.common.colormap = s == "none" ? methods::Colormap::None
                           : s == "coolwarm" ? methods::Colormap::CoolWarm

@@ -6,6 +6,7 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
@@ -60,6 +61,43 @@ void forEachElement(vtkXMLDataElement* e, const std::function<void(vtkXMLDataEle
     for (int i = 0; i < e->GetNumberOfNestedElements(); ++i) forEachElement(e->GetNestedElement(i), visit);
 }
 
+int64_t intAttribute(vtkXMLDataElement* e, const char* name, int64_t fallback) {
+    const char* v = e ? e->GetAttribute(name) : nullptr;
+    return v ? std::strtoll(v, nullptr, 10) : fallback;
+}
+
+uint64_t wordSize(const char* type) {
+    static const std::pair<const char*, uint64_t> kSizes[] = {
+        {"Int8", 1}, {"UInt8", 1}, {"Int16", 2}, {"UInt16", 2}, {"Int32", 4},
+        {"UInt32", 4}, {"Float32", 4}, {"Int64", 8}, {"UInt64", 8}, {"Float64", 8}};
+    for (const auto& [n, size] : kSizes)
+        if (type && std::strcmp(type, n) == 0) return size;
+    return 0;
+}
+
+// The fewest values an array must hold, from its place in the piece (0: unknown).
+// VTK trusts the block table to cover them and reads past it otherwise.
+uint64_t minimumWords(vtkXMLDataElement* e) {
+    const int64_t components = std::max<int64_t>(1, intAttribute(e, "NumberOfComponents", 1));
+    if (e->GetAttribute("NumberOfTuples")) return uint64_t(std::max<int64_t>(0, intAttribute(e, "NumberOfTuples", 0) * components));
+    vtkXMLDataElement* parent = e->GetParent();
+    vtkXMLDataElement* piece = parent ? parent->GetParent() : nullptr;
+    if (!piece || std::strcmp(piece->GetName(), "Piece") != 0) return 0;
+    const std::string group = parent->GetName();
+    const std::string name = e->GetAttribute("Name") ? e->GetAttribute("Name") : "";
+    int64_t cells = intAttribute(piece, "NumberOfCells", 0);
+    for (const char* kind : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
+        cells += intAttribute(piece, kind, 0);
+    int64_t count = 0;
+    if (group == "PointData" || group == "Points") count = intAttribute(piece, "NumberOfPoints", 0) * components;
+    else if (group == "CellData") count = cells * components;
+    else if (group == "Cells" && (name == "offsets" || name == "types" || name == "connectivity"))
+        count = intAttribute(piece, "NumberOfCells", 0);  // connectivity: at least one point per cell
+    else if (group == "Verts" || group == "Lines" || group == "Strips" || group == "Polys")
+        count = intAttribute(piece, ("NumberOf" + group).c_str(), 0);
+    return uint64_t(std::max<int64_t>(0, count));
+}
+
 }  // namespace
 
 void checkXmlCompressionHeaders(const std::string& path) {
@@ -102,17 +140,32 @@ void checkXmlCompressionHeaders(const std::string& path) {
         }
         const char* name = e->GetAttribute("Name");
         const std::string what = path + ": compressed array '" + (name ? name : "?") + "'";
-        // The header's first integer is the block count.
-        const std::string bytes = headerBytes(in, pos, headerSize, base64);
+        // Header: block count, block size, last block size, compressed size per block.
+        auto headerInt = [&](const std::string& bytes, size_t i) {
+            uint64_t v = 0;
+            for (size_t b = 0; b < headerSize; ++b)
+                v = (v << 8) | static_cast<unsigned char>(bytes[i * headerSize + (bigEndian ? b : headerSize - 1 - b)]);
+            return v;
+        };
+        std::string bytes = headerBytes(in, pos, headerSize, base64);
         if (bytes.empty()) throw FormatError(what + " has a truncated or unreadable header");
-        uint64_t blocks = 0;
-        for (size_t i = 0; i < headerSize; ++i) {
-            const size_t k = bigEndian ? i : headerSize - 1 - i;
-            blocks = (blocks << 8) | static_cast<unsigned char>(bytes[k]);
-        }
-        if (blocks > fileSize / headerSize)
+        const uint64_t blocks = headerInt(bytes, 0);
+        if (blocks > fileSize / headerSize - 3)
             throw FormatError(what + " declares " + std::to_string(blocks) +
                               " blocks, more than the file can hold (corrupt header)");
+        bytes = headerBytes(in, pos, headerSize * (3 + blocks), base64);
+        if (bytes.empty()) throw FormatError(what + " has a truncated header");
+        const uint64_t blockSize = headerInt(bytes, 1), lastSize = headerInt(bytes, 2);
+        uint64_t compressed = 0;
+        for (uint64_t b = 0; b < blocks; ++b) compressed += headerInt(bytes, 3 + b);
+        const uint64_t room = fileSize - std::min<uint64_t>(fileSize, uint64_t(pos));
+        if ((blocks > 0 && (blockSize == 0 || lastSize > blockSize)) || compressed > room)
+            throw FormatError(what + " has an inconsistent block table (corrupt header)");
+        const uint64_t total = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastSize ? lastSize : blockSize);
+        const uint64_t need = minimumWords(e) * wordSize(e->GetAttribute("type"));
+        if (total < need)
+            throw FormatError(what + " holds " + std::to_string(total) + " bytes, at least " +
+                              std::to_string(need) + " needed (corrupt header)");
     });
 }
 

@@ -179,7 +179,7 @@ TEST(Hybrid, FilterLengthOneReproducesTheNoise) {
     };
     const glm::mat4 invVP = glm::inverse(cam.viewProjection(1.0f));
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(vp.height);
-    const float freq = (1.0f / float(n)) / (p.common.noise.scale * pixelPerDist);
+    const float freq = (2.0f / float(n)) / (p.common.noise.scale * pixelPerDist);
     double worst = 0;
     int count = 0;
     for (int y = 0; y < vp.height; ++y)

@@ -17,6 +17,7 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     program_.use();
+    glUniform1i(program_.uniform("uScheme"), int(params_.overlay));
     glUniform1f(program_.uniform("uBeta"), params_.beta);
     glUniform1f(program_.uniform("uContrast"), params_.contrast);
     glUniform1f(program_.uniform("uFlowMean"), 0.5f);  // mean of both noise profiles

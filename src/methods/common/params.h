@@ -12,6 +12,12 @@ namespace flowsurf::methods {
 
 enum class Colormap { None, Viridis, CoolWarm, Gray };
 
+// How the flow texture meets the surface in the displayed image. Blend: eq. 10 of [L]
+// with the colour map and lighting; the others are the colour schemes of [W Fig. 6]:
+// gray texture alone; gray x lit gray surface; texture on a blue-yellow hue ramp x lit
+// surface; gray x cool/warm (Gooch) shading.
+enum class OverlayScheme { Blend, Gray, GrayLit, HueLit, CoolWarm };
+
 // What happens to the image-space texture when the camera moves [L §IV-I, §5 of
 // ALGORITHMS.md]. None: the pattern slides over the surface. Translate: the previous
 // texture is reprojected with the surface's image motion (per pixel: good for pan,
@@ -33,6 +39,7 @@ struct CommonParams {
     bool normalize = true;
     core::NoiseParams noise;     // scale s (px), period, profile, seed
     float contrast = 2.5f;       // display gain of F_a about the noise mean (overlay only)
+    OverlayScheme overlay = OverlayScheme::Blend;
     Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s
     bool lighting = true;        // diffuse head light in F_s
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]

@@ -35,8 +35,9 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     const float speed = std::max(in.speedRef, 1e-30f);
     glUniform1f(program_.uniform("uStepPerDist"), in.stepPx * pixelPerDist / speed);
     glUniform1f(program_.uniform("uStepOrtho"), in.stepPx * pixelOrtho / speed);
-    // Texture coordinates per P-space unit so that one texel spans noiseScalePx pixels.
-    const float texel = 1.0f / float(in.noiseSize);
+    // Texture coordinates per P-space unit so that one texel spans half the noise scale:
+    // the blur and the lower octave make features about four texels wide.
+    const float texel = 2.0f / float(in.noiseSize);
     glUniform1f(program_.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program_.uniform("uDepthTolerance"), params.depthTolerance * (cam.farPlane - cam.nearPlane));
