@@ -1,7 +1,6 @@
 #include "bench.h"
 
 #include "core/builtin_scenes.h"
-#include "core/camera.h"
 #include "methods/common/frame.h"
 
 #include <epoxy/gl.h>
@@ -15,7 +14,26 @@ namespace flowsurf::bench {
 
 namespace {
 
-const char* kStages[] = {"velocity image", "advection mesh", "texture advection", "noise blend", "overlay"};
+// Table columns; each method's stages map onto them.
+struct Column {
+    const char* title;
+    std::vector<const char*> stages;
+};
+const std::vector<Column> kColumns = {
+    {"surface", {"velocity image", "seed textures"}},   // N-dependent pass of ISA / hybrid
+    {"adv.mesh", {"advection mesh"}},                   // ISA, M-dependent
+    {"advect", {"texture advection", "particle tracing"}},  // IBFVS: includes the mesh projection
+    {"noise", {"noise blend", "solid noise"}},
+    {"overlay", {"overlay", "edge mask"}},
+};
+
+double columnMs(const BenchRow& r, const Column& c) {
+    double sum = 0;
+    for (const auto& [name, ms] : r.stageMs)
+        for (const char* s : c.stages)
+            if (name == s) sum += ms;
+    return sum;
+}
 
 // Times `frames` frames of one case: first pipelined (total), then per stage.
 BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surface, const core::Camera& camera0,
@@ -42,39 +60,49 @@ BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surfac
     return row;
 }
 
-double stage(const BenchRow& r, const std::string& name) {
-    for (const auto& [n, ms] : r.stageMs)
-        if (n == name) return ms;
-    return 0.0;
+// The parameter sweep of one method: ISA grids, hybrid filter lengths, else one run.
+std::vector<std::pair<std::string, methods::MethodParams>> variants(const std::string& method,
+                                                                    const BenchOptions& o) {
+    std::vector<std::pair<std::string, methods::MethodParams>> v;
+    if (method == "isa")
+        for (int r : o.gridRes) {
+            methods::MethodParams p;
+            p.isa.gridRes = r;
+            v.emplace_back("R=" + std::to_string(r), p);
+        }
+    else if (method == "hybrid")
+        for (int l : o.filterLengths) {
+            methods::MethodParams p;
+            p.hybrid.filterLength = l;
+            v.emplace_back("L=" + std::to_string(l), p);
+        }
+    else
+        v.emplace_back("-", methods::MethodParams{});
+    return v;
 }
 
 }  // namespace
 
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<BenchRow> rows;
-    std::fputs(formatTable({}).c_str(), stdout);
+    std::fputs(tableHeader().c_str(), stdout);
     for (long tris : o.triangles) {
         core::Dataset data = core::makeBuiltin("builtin:sphere:" + std::to_string(tris));
         const core::SurfaceMesh& mesh = data.steps.front().mesh;
         methods::SurfaceGpu surface(mesh, "velocity");
-        for (int size : o.imageSizes) {
-            core::Viewport vp{size, size};
+        for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
             for (const std::string& name : o.methods)
-                for (int grid : o.gridRes) {
-                    // Only ISA has an advection mesh: other methods run once per size.
-                    if (name != "isa" && grid != o.gridRes.front()) continue;
-                    methods::MethodParams params;
-                    params.isa.gridRes = grid;
+                for (const auto& [param, params] : variants(name, o)) {
                     auto method = methods::makeMethod(name, params, vp);
                     uint32_t clock = 0;
                     for (bool dynamic : {false, true}) {
                         BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, clock);
                         r.method = name;
                         r.triangles = long(mesh.triangleCount());
-                        r.imageSize = size;
-                        r.gridRes = name == "isa" ? grid : 0;
-                        std::fputs(formatTable({r}).substr(formatTable({}).size()).c_str(), stdout);
+                        r.image = vp;
+                        r.param = param;
+                        std::fputs(formatRow(r).c_str(), stdout);
                         std::fflush(stdout);
                         rows.push_back(std::move(r));
                     }
@@ -84,33 +112,34 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     return rows;
 }
 
-std::string formatTable(const std::vector<BenchRow>& rows) {
-    std::ostringstream s;
+std::string tableHeader() {
     char line[512];
-    std::snprintf(line, sizeof line, "%-6s %-8s %9s %6s %5s | %9s %7s | %9s %9s %9s %9s %9s\n", "method", "case",
-                  "triangles", "image", "grid", "ms/frame", "fps", "vel.img", "adv.mesh", "tex.adv", "noise", "overlay");
-    s << line;
-    for (const auto& r : rows) {
-        char grid[16] = "    -";
-        if (r.gridRes > 0) std::snprintf(grid, sizeof grid, "%4d²", r.gridRes);
-        std::snprintf(line, sizeof line, "%-6s %-8s %9ld %5d² %s | %9.2f %7.1f | %9.2f %9.2f %9.2f %9.2f %9.2f\n",
-                      r.method.c_str(), r.caseName.c_str(), r.triangles, r.imageSize, grid, r.frameMs,
-                      1000.0 / r.frameMs, stage(r, kStages[0]), stage(r, kStages[1]), stage(r, kStages[2]),
-                      stage(r, kStages[3]), stage(r, kStages[4]));
-        s << line;
-    }
-    return s.str();
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s | %9s %7s |", "method", "case", "triangles",
+                          "image", "param", "ms/frame", "fps");
+    for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9s", c.title);
+    std::snprintf(line + n, sizeof line - n, "\n");
+    return line;
+}
+
+std::string formatRow(const BenchRow& r) {
+    char line[512], image[32];
+    std::snprintf(image, sizeof image, "%dx%d", r.image.width, r.image.height);
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s | %9.2f %7.1f |", r.method.c_str(),
+                          r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.frameMs, 1000.0 / r.frameMs);
+    for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
+    std::snprintf(line + n, sizeof line - n, "\n");
+    return line;
 }
 
 std::string formatCsv(const std::vector<BenchRow>& rows) {
     std::ostringstream s;
-    s << "method,case,triangles,image,grid,frame_ms,fps";
-    for (const char* st : kStages) s << ',' << st << "_ms";
+    s << "method,case,triangles,width,height,param,frame_ms,fps";
+    for (const auto& c : kColumns) s << ',' << c.title << "_ms";
     s << '\n';
     for (const auto& r : rows) {
-        s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.imageSize << ',' << r.gridRes << ','
-          << r.frameMs << ',' << 1000.0 / r.frameMs;
-        for (const char* st : kStages) s << ',' << stage(r, st);
+        s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.image.width << ',' << r.image.height
+          << ',' << r.param << ',' << r.frameMs << ',' << 1000.0 / r.frameMs;
+        for (const auto& c : kColumns) s << ',' << columnMs(r, c);
         s << '\n';
     }
     return s.str();

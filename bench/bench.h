@@ -1,7 +1,10 @@
-// flowsurf — the timing suite behind `flowsurf bench` ([L] Tables I and II): ms/frame
-// per stage for the static and the dynamic case, per mesh size, image size and ISA
-// advection-mesh resolution. Timings live here, never in test assertions.
+// flowsurf — the timing suite behind `flowsurf bench` ([L] Tables I and II, [W] Table 1):
+// ms/frame per stage for the static and the dynamic case, per mesh size, image size,
+// ISA advection-mesh resolution and hybrid filter length. Timings live here, never in
+// test assertions.
 #pragma once
+
+#include "core/camera.h"
 
 #include <string>
 #include <vector>
@@ -11,24 +14,26 @@ namespace flowsurf::bench {
 struct BenchOptions {
     std::string csv;                     // also write CSV here
     int frames = 20;                     // timed frames per row and case
-    bool quick = false;                  // a small subset (smoke run)
-    std::vector<std::string> methods{"isa"};
+    std::vector<std::string> methods{"isa", "ibfvs", "hybrid"};
     std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
-    std::vector<int> imageSizes{512, 1024};
-    std::vector<int> gridRes{128, 256, 512, 1024};
+    std::vector<core::Viewport> imageSizes{{512, 512}, {1024, 1024}};
+    std::vector<int> gridRes{128, 256, 512, 1024};   // ISA
+    std::vector<int> filterLengths{10, 25, 50, 100};  // hybrid
 };
 
 struct BenchRow {
     std::string method, caseName;        // "static" or "dynamic"
     long triangles = 0;
-    int imageSize = 0, gridRes = 0;
+    core::Viewport image;
+    std::string param;                   // "R=256" (ISA), "L=50" (hybrid), "-"
     double frameMs = 0;                  // whole frame, pipelined (timer off)
     std::vector<std::pair<std::string, double>> stageMs;  // per stage (synchronised)
 };
 
 // Runs the suite (needs a current GL context); prints the table as it goes.
 std::vector<BenchRow> runBench(const BenchOptions& options);
-std::string formatTable(const std::vector<BenchRow>& rows);
+std::string tableHeader();
+std::string formatRow(const BenchRow& row);
 std::string formatCsv(const std::vector<BenchRow>& rows);
 
 }  // namespace flowsurf::bench

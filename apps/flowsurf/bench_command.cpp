@@ -3,6 +3,7 @@
 #include "bench.h"
 #include "core/errors.h"
 #include "gl/context.h"
+#include "options.h"
 
 #include <cstdio>
 #include <fstream>
@@ -14,12 +15,15 @@ int runBench(const BenchOptions& o) {
     b.frames = o.frames;
     b.methods = o.methods;
     b.triangles = o.triangles;
-    b.imageSizes = o.sizes;
+    b.imageSizes.clear();
+    for (const auto& s : o.sizes) b.imageSizes.push_back(parseSize(s, "--sizes"));
     b.gridRes = o.grids;
+    b.filterLengths = o.lengths;
     if (o.quick) {
         b.triangles = {10'000, 220'000};
-        b.imageSizes = {512};
+        b.imageSizes = {{512, 512}};
         b.gridRes = {128, 256};
+        b.filterLengths = {25};
     }
     gl::HeadlessContext context(false);
     std::printf("flowsurf bench on %s (ms per frame; stages synchronised, frame pipelined)\n",

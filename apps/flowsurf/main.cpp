@@ -11,7 +11,7 @@
 using namespace flowsurf;
 
 int main(int argc, char** argv) {
-    CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA [L])", "flowsurf"};
+    CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA, IBFVS [L]; hybrid LIC [W])", "flowsurf"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "flowsurf 0.1.0");
 
@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     app::addRenderOptions(*renderCmd, render);
 
     app::RenderOptions compare;
-    std::string compareMethods = "isa,ibfvs";
+    std::string compareMethods = "isa,ibfvs,hybrid";
     CLI::App* compareCmd = app.add_subcommand("compare", "Methods side by side on one camera, labelled with ms/frame");
     app::addRenderOptions(*compareCmd, compare);
     compareCmd->add_option("--methods", compareMethods, "Comma-separated methods to compare")->capture_default_str();
@@ -35,13 +35,14 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
     benchCmd->add_flag("--quick", bench.quick, "A small subset of rows (smoke test)");
     benchCmd->add_option("--methods", bench.methods, "Methods to time")->delimiter(',')->capture_default_str()
-        ->check(CLI::IsMember({"isa", "ibfvs"}));
+        ->check(CLI::IsMember({"isa", "ibfvs", "hybrid"}));
     benchCmd->add_option("--triangles", bench.triangles, "Sphere mesh sizes (triangles)")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(8L, 20'000'000L));
-    benchCmd->add_option("--sizes", bench.sizes, "Square image sizes (pixels)")->delimiter(',')
-        ->capture_default_str()->check(CLI::Range(16, 8192));
+    benchCmd->add_option("--sizes", bench.sizes, "Image sizes WxH")->delimiter(',')->capture_default_str();
     benchCmd->add_option("--grids", bench.grids, "ISA advection mesh resolutions")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(64, 1024));
+    benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(1, 1001));
 
     try {
         app.parse(argc, argv);

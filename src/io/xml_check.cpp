@@ -150,7 +150,7 @@ void checkXmlCompressionHeaders(const std::string& path) {
         std::string bytes = headerBytes(in, pos, headerSize, base64);
         if (bytes.empty()) throw FormatError(what + " has a truncated or unreadable header");
         const uint64_t blocks = headerInt(bytes, 0);
-        if (blocks > fileSize / headerSize - 3)
+        if (blocks + 3 > fileSize / headerSize)
             throw FormatError(what + " declares " + std::to_string(blocks) +
                               " blocks, more than the file can hold (corrupt header)");
         bytes = headerBytes(in, pos, headerSize * (3 + blocks), base64);
