@@ -6,6 +6,7 @@
 #include "io/image_writer.h"
 #include "label_text.h"
 #include "methods/common/frame.h"
+#include "animated_surface.h"
 #include "progress.h"
 #include "scene_setup.h"
 
@@ -36,11 +37,8 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     const std::vector<std::string> names = splitMethods(methodList);
 
     core::Dataset data = loadInput(o.input);
-    const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
-    const std::string field = methods::selectField(mesh, o.field, data.source);
     const FrameCameras cameras(o, data.bounds());
     gl::HeadlessContext context(o.verbose);
-    methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
 
     // Same camera path, frame count and seed for every method ([L] Fig. 1).
     const int label = std::max(24, o.size.height / 16), gap = 4;
@@ -51,10 +49,11 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
     for (size_t m = 0; m < names.size(); ++m) {
         auto method = methods::makeMethod(names[m], o.params, o.size);
+        AnimatedSurface surface(o, data);  // each method sees the same data times
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
         for (int k = 0; k <= o.frames; ++k) {
-            method->renderFrame({&surface, cameras.at(k), uint32_t(k)});
+            method->renderFrame({&surface.at(k), cameras.at(k), uint32_t(k)});
             progress.update(int(m) * (o.frames + 1) + k + 1);
         }
         glFinish();

@@ -10,8 +10,6 @@
 
 namespace flowsurf::app {
 
-namespace {
-
 float parseFloat(const std::string& s, const std::string& what) {
     try {
         size_t used = 0;
@@ -22,6 +20,8 @@ float parseFloat(const std::string& s, const std::string& what) {
         throw ConfigError(what + ": '" + s + "' is not a finite number");
     }
 }
+
+namespace {
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -97,7 +97,18 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     const std::string gData = "Data";
     cmd.add_option("--field", o.field, "Vector array to show (default: the first 3-component point array)")
         ->group(gData);
-    cmd.add_option("--time-step", o.timeStep, "Index of the time step to render")->group(gData)->capture_default_str();
+    cmd.add_option_function<size_t>("--time-step", [&o](size_t s) { o.timeStep = s; o.timeStepGiven = true; },
+                                    "Render only this time step (index), as steady data")->group(gData);
+    cmd.add_option_function<std::string>("--time", [&o](const std::string& s) {
+        auto colon = s.find(':');
+        if (colon == std::string::npos) throw ConfigError("--time: '" + s + "' is not START:END");
+        o.timeRange = std::make_pair(double(parseFloat(s.substr(0, colon), "--time")),
+                                     double(parseFloat(s.substr(colon + 1), "--time")));
+    }, "Data time range START:END of the animation (default: the whole series)")->group(gData);
+    cmd.add_option("--time-per-frame", o.timePerFrame, "Data time per animation frame")
+        ->group(gData)->check(CLI::PositiveNumber);
+    cmd.add_option("--frames-per-step", o.framesPerStep, "Animation frames per data time step")
+        ->group(gData)->check(CLI::Range(1, 100000));
 
     const std::string gMethod = "Method";
     cmd.add_option("-m,--method", o.method, "Visualization method")
@@ -203,6 +214,10 @@ void validateRenderOptions(const RenderOptions& o) {
     outputKind(o.output);
     if (!o.flowTexture.empty() && outputKind(o.flowTexture) != OutputKind::Png)
         throw ConfigError("--flow-texture: '" + o.flowTexture + "' must be a .png file");
+    if (o.timePerFrame > 0.0 && o.framesPerStep > 0)
+        throw ConfigError("--time-per-frame and --frames-per-step cannot be combined");
+    if (o.timeStepGiven && (o.timeRange || o.timePerFrame > 0.0 || o.framesPerStep > 0))
+        throw ConfigError("--time-step renders one step: it cannot be combined with --time, --time-per-frame or --frames-per-step");
     if (!o.cameraPath.empty() && o.orbit != 0.0f) throw ConfigError("--camera-path and --orbit cannot be combined");
     if (o.up && glm::length(*o.up) == 0.0f) throw ConfigError("--up: the up vector must not be zero");
     if (o.eye && o.target && glm::length(*o.eye - *o.target) == 0.0f)

@@ -26,7 +26,11 @@ struct RenderOptions {
     float ortho = 0.0f;                 // > 0: orthographic view height
     float orbit = 0.0f;                 // degrees per frame about the up axis
     std::string cameraPath;             // --camera-path FILE (JSON keyframes)
-    size_t timeStep = 0;                // which time step to render (this issue: one)
+    size_t timeStep = 0;                // --time-step: render this one step, steady
+    bool timeStepGiven = false;
+    std::optional<std::pair<double, double>> timeRange;  // --time START:END (data time)
+    double timePerFrame = 0.0;          // --time-per-frame DT (0: see framesPerStep)
+    int framesPerStep = 0;              // --frames-per-step N (0: the range over --frames)
     int fps = 30;
     int crf = 18;
     bool quiet = false;
@@ -41,6 +45,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& opt);
 void validateRenderOptions(const RenderOptions& opt);
 
 // Value syntaxes (throw ConfigError naming `what`):
+float parseFloat(const std::string& text, const std::string& what);
 core::Viewport parseSize(const std::string& text, const std::string& what = "--size");
 glm::vec3 parseVec3(const std::string& text, const std::string& what);
 glm::vec3 parseColor(const std::string& text, const std::string& what = "--background");

@@ -14,7 +14,7 @@ ProgressBar::~ProgressBar() {
     if (enabled_ && !finished_) std::fputc('\n', stderr);
 }
 
-void ProgressBar::update(int done) {
+void ProgressBar::update(int done, const std::string& note) {
     if (!enabled_) return;
     auto now = std::chrono::steady_clock::now();
     if (done < total_ && now - lastDraw_ < std::chrono::milliseconds(100)) return;
@@ -25,8 +25,8 @@ void ProgressBar::update(int done) {
     int filled = total_ > 0 ? width * done / total_ : width;
     std::string bar(size_t(filled), '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r%s [%s] %d/%d  %.1fs, %.1fs left ", label_.c_str(), bar.c_str(), done, total_,
-                 elapsed, eta);
+    std::fprintf(stderr, "\r%s [%s] %d/%d %s  %.1fs, %.1fs left ", label_.c_str(), bar.c_str(), done, total_,
+                 note.c_str(), elapsed, eta);
     std::fflush(stderr);
 }
 

@@ -10,7 +10,8 @@ class ProgressBar {
 public:
     ProgressBar(std::string label, int total, bool enabled);
     ~ProgressBar();
-    void update(int done);
+    // `note`: extra text after the counts (e.g. the data time).
+    void update(int done, const std::string& note = "");
     void finish();
 
 private:

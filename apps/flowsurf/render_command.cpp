@@ -7,6 +7,7 @@
 #include "io/image_writer.h"
 #include "io/video_writer.h"
 #include "methods/common/frame.h"
+#include "animated_surface.h"
 #include "progress.h"
 #include "scene_setup.h"
 
@@ -36,34 +37,31 @@ int runRender(const RenderOptions& o) {
     validateRenderOptions(o);
     const OutputKind kind = outputKind(o.output);
 
-    // Data: load, pick the step and the field (errors before any GL work).
+    // Data: load and check the field before any GL work.
     core::Dataset data = loadInput(o.input);
-    const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
-    const std::string field = methods::selectField(mesh, o.field, data.source);
     const FrameCameras cameras(o, data.bounds());
-
     gl::HeadlessContext context(o.verbose);
-    methods::SurfaceGpu surface(mesh, field, o.params.common, o.params.ibfvs.edgeMask);
+    AnimatedSurface surface(o, std::move(data));
     std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, o.params, o.size);
 
     std::unique_ptr<io::VideoWriter> video;
     if (kind == OutputKind::Mp4) video = std::make_unique<io::VideoWriter>(o.output, o.size.width, o.size.height,
                                                                            io::VideoOptions{o.fps, o.crf});
     if (!o.quiet && o.verbose)
-        std::fprintf(stderr, "flowsurf: %s, field '%s', %zu points, %zu triangles, method %s\n", data.source.c_str(),
-                     field.c_str(), mesh.vertexCount(), mesh.triangleCount(), method->name());
+        std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", surface.source().c_str(),
+                     surface.field().c_str(), surface.at(0).triangleCount(), method->name(),
+                     surface.unsteady() ? ", time series" : "");
 
     // --frames advection frames, then the output frame.
     const int total = o.frames + 1;
     ProgressBar progress("render", total, !o.quiet);
     for (int k = 0; k < total; ++k) {
-        methods::FrameInput in{&surface, cameras.at(k), uint32_t(k)};
-        method->renderFrame(in);
+        method->renderFrame({&surface.at(k), cameras.at(k), uint32_t(k)});
         if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
         if (kind == OutputKind::PngSequence)
             io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3,
                              gl::readRgb8TopDown(method->composite()));
-        progress.update(k + 1);
+        progress.update(k + 1, surface.unsteady() ? "t = " + std::to_string(surface.timeAt(k)) : "");
     }
     progress.finish();
 

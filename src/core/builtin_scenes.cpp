@@ -109,6 +109,74 @@ Dataset overlapPlanesScene(long tris) {
     return {"builtin:overlap-planes", {{0.0, std::move(back)}}};
 }
 
+// A plane facing +z whose uniform flow turns by 90 degrees over 8 time units: the
+// texture must follow the field of the current data time, not the first step's.
+Dataset turningPlaneScene(long tris) {
+    int n = gridForTriangles(tris > 0 ? tris : 2000, 2);
+    SurfaceMesh base = makeRectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0f, 2.0f, n, n);
+    Dataset d{"builtin:turning-plane", {}};
+    for (int k = 0; k <= 8; ++k) {
+        SurfaceMesh m = base;
+        float a = glm::half_pi<float>() * float(k) / 8.0f;
+        addField(m, [a](const glm::vec3&, double) { return glm::vec3(std::cos(a), std::sin(a), 0.0f); }, k);
+        d.steps.push_back({double(k), std::move(m)});
+    }
+    return d;
+}
+
+// In the spirit of [L Fig. 11]: a cylinder (radius 1, head at z = 1) whose bottom, the
+// piston, moves down and up over one cycle; the side wall is re-meshed every step with
+// rings 0.1 apart, so its triangle count (the topology) changes with time. The flow is an
+// intake-like swirl about the axis plus an axial part following the piston.
+Dataset pistonScene(long tris) {
+    const int slices = std::max(16, int(std::sqrt(double(tris > 0 ? tris : 8000) / 4.0)));
+    const int steps = 24;
+    Dataset d{"builtin:piston", {}};
+    for (int k = 0; k <= steps; ++k) {
+        const double t = double(k) / steps;  // one cycle
+        const float bottom = -1.0f - 0.8f * float(0.5 * (1.0 - std::cos(glm::two_pi<double>() * t)));
+        const float pistonSpeed = -0.8f * float(0.5 * glm::two_pi<double>() * std::sin(glm::two_pi<double>() * t));
+        const int rings = std::max(2, int(std::ceil((1.0f - bottom) / 0.1f)));
+        SurfaceMesh m;
+        // Side wall, outward normals.
+        for (int j = 0; j <= rings; ++j) {
+            float z = bottom + (1.0f - bottom) * float(j) / float(rings);
+            for (int i = 0; i < slices; ++i) {
+                float a = glm::two_pi<float>() * float(i) / float(slices);
+                glm::vec3 n(std::cos(a), std::sin(a), 0.0f);
+                m.positions.push_back(n + glm::vec3(0, 0, z));
+                m.normals.push_back(n);
+            }
+        }
+        auto id = [&](int i, int j) { return uint32_t(j * slices + (i % slices)); };
+        for (int j = 0; j < rings; ++j)
+            for (int i = 0; i < slices; ++i) {
+                m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+                m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            }
+        // Piston disc (a fan), normal up into the cylinder.
+        uint32_t centre = uint32_t(m.positions.size());
+        m.positions.push_back({0, 0, bottom});
+        m.normals.push_back({0, 0, 1});
+        uint32_t rim = uint32_t(m.positions.size());
+        for (int i = 0; i < slices; ++i) {
+            float a = glm::two_pi<float>() * float(i) / float(slices);
+            m.positions.push_back({std::cos(a), std::sin(a), bottom});
+            m.normals.push_back({0, 0, 1});
+        }
+        for (int i = 0; i < slices; ++i)
+            m.triangles.push_back({centre, rim + uint32_t(i), rim + uint32_t((i + 1) % slices)});
+        addField(m, [&](const glm::vec3& p, double) {
+            glm::vec3 swirl = glm::vec3(-p.y, p.x, 0.0f) * (1.2f + 0.3f * p.z);
+            float axial = pistonSpeed * (1.0f - p.z) / (1.0f - bottom);  // moves with the piston
+            glm::vec3 radial = glm::vec3(p.x, p.y, 0.0f) * 0.6f * (p.z < bottom + 1e-4f ? 1.0f : 0.0f);
+            return swirl + glm::vec3(0, 0, axial) + radial;
+        }, t);
+        d.steps.push_back({t, std::move(m)});
+    }
+    return d;
+}
+
 struct Entry {
     BuiltinInfo info;
     Dataset (*make)(long);
@@ -119,6 +187,8 @@ const std::vector<Entry>& entries() {
         {{"tori", "two tori under a uniform vertical field, tangential part (steady)"}, toriScene},
         {{"vortex-plane", "oblique plane with a vortex and a weak drift (steady)"}, vortexPlaneScene},
         {{"double-gyre", "time-dependent double gyre on a plane, 11 steps t=0..10"}, doubleGyreScene},
+        {{"piston", "cylinder with a moving piston: geometry and topology change, swirl (25 steps)"}, pistonScene},
+        {{"turning-plane", "plane whose uniform flow turns 90 degrees over 9 steps t=0..8"}, turningPlaneScene},
         {{"uniform-plane", "plane facing +z with uniform flow along x (tests)"}, uniformPlaneScene},
         {{"overlap-planes", "front plane over a back plane, perpendicular flows (tests)"}, overlapPlanesScene},
     };

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -62,9 +63,14 @@ public:
             if (uint64_t(in_.gcount()) != count * width) truncated(section);
             return;
         }
+        // Every token must be a number: VTK's ASCII cell reader crashes on one that is not.
         std::string token;
-        for (uint64_t i = 0; i < count; ++i)
+        for (uint64_t i = 0; i < count; ++i) {
             if (!(in_ >> token)) truncated(section);
+            char* end = nullptr;
+            std::strtod(token.c_str(), &end);
+            if (*end) notANumber(section, token);
+        }
     }
 
     int64_t readInt(const std::string& section) {
@@ -77,8 +83,15 @@ public:
         if (!(in_ >> token)) truncated(section);
         char* end = nullptr;
         long long v = std::strtoll(token.c_str(), &end, 10);
-        if (*end) throw FormatError(path_ + ": " + section + ": '" + token + "' is not an integer");
+        if (*end || end == token.c_str()) notANumber(section, token);
         return v;
+    }
+
+    [[noreturn]] void notANumber(const std::string& section, const std::string& token) const {
+        std::string shown = token.substr(0, 20);
+        for (auto& c : shown)
+            if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+        throw FormatError(path_ + ": VTK legacy " + section + " data: '" + shown + "' is not a number");
     }
 
     [[noreturn]] void truncated(const std::string& section) const {

@@ -1,0 +1,57 @@
+#include "animated_surface.h"
+
+#include "core/errors.h"
+#include "scene_setup.h"
+
+#include <cmath>
+
+namespace flowsurf::app {
+
+core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times) {
+    core::TimeMapping m;
+    m.start = o.timeRange ? o.timeRange->first : times.front();
+    m.end = o.timeRange ? o.timeRange->second : times.back();
+    if (o.timePerFrame > 0.0) {
+        m.perFrame = o.timePerFrame * (m.end >= m.start ? 1.0 : -1.0);
+    } else if (o.framesPerStep > 0 && times.size() > 1) {
+        double spacing = (times.back() - times.front()) / double(times.size() - 1);
+        m.perFrame = spacing / o.framesPerStep * (m.end >= m.start ? 1.0 : -1.0);
+    } else {
+        m.perFrame = o.frames > 0 ? (m.end - m.start) / o.frames : 0.0;  // the range over the frames
+    }
+    return m;
+}
+
+AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::Dataset data) : options_(o), source_(data.source) {
+    bounds_ = data.bounds();
+    const bool series = data.steps.size() > 1 && !o.timeStepGiven;
+    if (!series) {
+        const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
+        field_ = methods::selectField(mesh, o.field, data.source);
+        upload(mesh, data.source);
+        return;
+    }
+    field_ = methods::selectField(data.steps.front().mesh, o.field, data.source);
+    provider_ = std::make_unique<core::DatasetSteps>(std::move(data));
+    stream_ = std::make_unique<core::StepStream>(*provider_, 3, true);
+    mapping_ = makeTimeMapping(o, stream_->times());
+}
+
+void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& where) {
+    if (!mesh.findField(field_))
+        throw FieldError(where + ": no vector field '" + field_ + "' in this step");
+    surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, options_.params.common,
+                                                     options_.params.ibfvs.edgeMask);
+}
+
+const methods::SurfaceGpu& AnimatedSurface::at(int frame) {
+    if (stream_) {
+        bool changed = false;
+        const double t = mapping_.at(frame);
+        const core::SurfaceMesh& mesh = stream_->meshAt(t, &changed);
+        if (changed || !surface_) upload(mesh, provider_->label(stream_->topologyStep()));
+    }
+    return *surface_;
+}
+
+}  // namespace flowsurf::app

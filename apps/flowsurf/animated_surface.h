@@ -1,0 +1,42 @@
+// flowsurf — the surface of every animation frame: steady data uploads once; a time series
+// streams through core::StepStream, frame k showing data time t(k) (--time,
+// --time-per-frame, --frames-per-step), interpolated between steps of equal topology.
+#pragma once
+
+#include "core/step_stream.h"
+#include "methods/common/surface_gpu.h"
+#include "options.h"
+
+#include <memory>
+
+namespace flowsurf::app {
+
+class AnimatedSurface {
+public:
+    // Takes the data; needs a current GL context. Throws ConfigError/FieldError.
+    AnimatedSurface(const RenderOptions& o, core::Dataset data);
+    // The surface for frame k (uploaded when the data changed since the last call).
+    const methods::SurfaceGpu& at(int frame);
+    bool unsteady() const { return stream_ != nullptr; }
+    double timeAt(int frame) const { return mapping_.at(frame); }
+    const core::Bounds& bounds() const { return bounds_; }
+    const std::string& field() const { return field_; }
+    const std::string& source() const { return source_; }
+    size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
+
+private:
+    void upload(const core::SurfaceMesh& mesh, const std::string& where);
+
+    const RenderOptions& options_;
+    std::string source_, field_;
+    core::Bounds bounds_;
+    std::unique_ptr<core::StepProvider> provider_;
+    std::unique_ptr<core::StepStream> stream_;
+    core::TimeMapping mapping_;
+    std::unique_ptr<methods::SurfaceGpu> surface_;
+};
+
+// The frame -> data time mapping of the options for these step times.
+core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times);
+
+}  // namespace flowsurf::app
