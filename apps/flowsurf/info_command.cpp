@@ -14,6 +14,11 @@ int runInfo(const std::string& path) {
         core::Bounds b = d.bounds();
         std::printf("%s\n  points: %zu\n  triangles: %zu\n  time steps: %zu\n", path.c_str(), m.vertexCount(),
                     m.triangleCount(), d.steps.size());
+        if (d.steps.size() > 1) {
+            std::printf("  time values:");
+            for (const auto& st : d.steps) std::printf(" %g", st.time);
+            std::printf("\n");
+        }
         for (const auto& f : m.fields) std::printf("  point array '%s' (3 components)\n", f.name.c_str());
         std::printf("  bounds: [%g %g %g] - [%g %g %g]\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
         return 0;

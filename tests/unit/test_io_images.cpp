@@ -26,6 +26,20 @@ std::vector<uint8_t> gradient(int width, int height, int channels, int frame = 0
     return px;
 }
 
+// Sets PATH for one scope (to hide ffmpeg or put a fake one first).
+class ScopedPath {
+public:
+    explicit ScopedPath(const std::string& path) {
+        const char* old = std::getenv("PATH");
+        saved_ = old ? old : "";
+        ::setenv("PATH", path.c_str(), 1);
+    }
+    ~ScopedPath() { ::setenv("PATH", saved_.c_str(), 1); }
+
+private:
+    std::string saved_;
+};
+
 }  // namespace
 
 TEST(IoImages, PngRoundTripRgb8AndRgba8) {
@@ -133,9 +147,7 @@ TEST(IoVideo, BadFrameAndFolderAreIoErrors) {
 
 TEST(IoVideo, MissingFfmpegIsClearIoError) {
     ScratchDir dir;
-    const char* old = std::getenv("PATH");
-    const std::string saved = old ? old : "";
-    ::setenv("PATH", dir.path().c_str(), 1);  // a folder without ffmpeg
+    ScopedPath path(dir.path().string());  // a folder without ffmpeg
     try {
         io::VideoWriter video(dir.file("clip.mp4"), 16, 16);
         ADD_FAILURE() << "no exception";
@@ -144,6 +156,25 @@ TEST(IoVideo, MissingFfmpegIsClearIoError) {
                   std::string::npos)
             << e.what();
     }
-    ::setenv("PATH", saved.c_str(), 1);
     EXPECT_TRUE(dir.list().empty());
+}
+
+TEST(IoVideo, FfmpegDyingIsIoErrorNotSigpipe) {
+    ScratchDir dir;
+    std::filesystem::create_directories(dir.path() / "bin");
+    writeText(dir.file("bin/ffmpeg"), "#!/bin/sh\necho 'boom: fake encoder failure' >&2\nexit 3\n");
+    std::filesystem::permissions(dir.file("bin/ffmpeg"), std::filesystem::perms::owner_all);
+    ScopedPath path(dir.file("bin") + ":/usr/bin:/bin");
+    std::string message;
+    try {
+        // More than a pipe buffer of frames: writes hit the closed pipe (EPIPE, SIGPIPE).
+        io::VideoWriter video(dir.file("clip.mp4"), 64, 64);
+        for (int f = 0; f < 100; ++f) video.addFrame(gradient(64, 64, 3, f));
+        video.finish();
+    } catch (const IoError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("clip.mp4"), std::string::npos) << message;
+    EXPECT_NE(message.find("boom: fake encoder failure"), std::string::npos) << message;
+    EXPECT_EQ(dir.list(), std::vector<std::string>{"bin"});
 }

@@ -5,10 +5,13 @@
 
 #include "test_io_common.h"
 
+#include <vtkAppendFilter.h>
+#include <vtkExodusIIWriter.h>
 #include <vtkOutputWindow.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <cmath>
@@ -133,7 +136,15 @@ TEST(IoReaders, TruncatedLegacyStlPlyAreFormatErrors) {
     ply->SetFileName(dir.file("binary.ply").c_str());
     ply->SetFileTypeToBinary();
     ASSERT_EQ(ply->Write(), 1);
-    for (const char* name : {"ascii.vtk", "binary.vtk", "binary.stl", "ascii.ply", "binary.ply"}) {
+    // Version 4.2: the old "count id id ..." cell lists, which VTK walks unchecked.
+    legacy->SetFileVersion(vtkDataWriter::VTK_LEGACY_READER_VERSION_4_2);
+    legacy->SetFileName(dir.file("old-binary.vtk").c_str());
+    ASSERT_EQ(legacy->Write(), 1);
+    legacy->SetFileTypeToASCII();
+    legacy->SetFileName(dir.file("old-ascii.vtk").c_str());
+    ASSERT_EQ(legacy->Write(), 1);
+    for (const char* name : {"ascii.vtk", "binary.vtk", "old-ascii.vtk", "old-binary.vtk", "binary.stl",
+                             "ascii.ply", "binary.ply"}) {
         ASSERT_NO_THROW(io::readDataset(dir.file(name))) << name;
         const std::string bytes = readBytes(dir.file(name));
         for (int percent = 5; percent <= 95; percent += 5) {
@@ -262,4 +273,81 @@ TEST(IoReaders, BadFilesPrintNothingAndRestoreVtkOutput) {
         EXPECT_THROW(io::readDataset(dir.file(name)), FormatError) << name;
     EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
     EXPECT_EQ(vtkOutputWindow::GetInstance(), before);
+}
+
+TEST(IoReaders, MalformedCellsAreFormatErrorsNotCrashes) {
+    ScratchDir dir;
+    const std::string points = "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n";
+    const std::pair<std::string, std::string> cases[] = {
+        // Old layout: a count larger than the list, a list shorter than declared, a
+        // token that is not a number (each crashed VTK 9.1's reader).
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 5\n900 0 1 2 3\n",
+         "does not fit"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 2 5\n3 0 1 2 3\n",
+         "does not fit"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 5\n4 0 x 2 3\n",
+         "not a number"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
+             "CELLS 1 5\n900 0 1 2 3\nCELL_TYPES 1\n9\n",
+         "does not fit"},
+        // New layout: a two-point polygon (crashes vtkCellDataToPointData), a
+        // hexahedron with five points, an unknown cell type.
+        {"# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n" + points +
+             "POLYGONS 3 5\nOFFSETS vtktypeint64\n0 2 5\nCONNECTIVITY vtktypeint64\n0 1 0 2 3\n"
+             "CELL_DATA 2\nFIELD FieldData 1\nc 3 2 float\n1 0 0 0 1 0\n",
+         "polygon 0 has 2 points"},
+        {"# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
+             "CELLS 2 5\nOFFSETS vtktypeint64\n0 5\nCONNECTIVITY vtktypeint64\n0 1 2 3 0\nCELL_TYPES 1\n12\n",
+         "5 points, 8 expected"},
+        {"# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
+             "CELLS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\nCELL_TYPES 1\n200\n",
+         "unknown type 200"},
+        {"# vtk DataFile Version \x8d.1\nt\nASCII\nDATASET POLYDATA\n" + points, "first line"},
+    };
+    int i = 0;
+    for (const auto& [text, why] : cases) {
+        const std::string name = "cells" + std::to_string(i++) + ".vtk";
+        writeText(dir.file(name), text);
+        expectReadError<FormatError>(dir.file(name), name, why);
+    }
+}
+
+TEST(IoReaders, CorruptCompressionHeaderIsFormatErrorNotHang) {
+    ScratchDir dir;
+    writeVtp(makeGrid(4, 4), dir.file("zlib.vtp"), vtkXMLWriter::Appended, true);
+    std::string bytes = readBytes(dir.file("zlib.vtp"));
+    const size_t data = bytes.find('_', bytes.find("<AppendedData")) + 1;
+    // First array's header: block count 0xA4000000 (VTK would size a 10 GiB table)...
+    std::string huge = bytes;
+    huge.replace(data, 4, std::string("\x00\x00\x00\xA4", 4));
+    writeText(dir.file("blocks.vtp"), huge);
+    expectReadError<FormatError>(dir.file("blocks.vtp"), "blocks.vtp", "blocks");
+    // ... or zero blocks for a non-empty array (VTK reads past its block table).
+    std::string none = bytes;
+    none.replace(data, 4, std::string(4, '\0'));
+    writeText(dir.file("none.vtp"), none);
+    expectReadError<FormatError>(dir.file("none.vtp"), "none.vtp", "needed");
+}
+
+TEST(IoReaders, BrokenExodusIsFormatErrorWithoutOutput) {
+    ScratchDir dir;
+    auto grid = vtkSmartPointer<vtkAppendFilter>::New();
+    grid->AddInputData(makeGrid(6, 5));
+    grid->Update();
+    auto w = vtkSmartPointer<vtkExodusIIWriter>::New();
+    w->SetInputData(grid->GetOutput());
+    w->SetFileName(dir.file("grid.e").c_str());
+    w->WriteAllTimeStepsOff();
+    ASSERT_EQ(w->Write(), 1);
+    ASSERT_NO_THROW(io::readDataset(dir.file("grid.e")));
+    const std::string bytes = readBytes(dir.file("grid.e"));
+    ::testing::internal::CaptureStderr();
+    for (int percent = 5; percent <= 95; percent += 10) {
+        const std::string cut = "cut" + std::to_string(percent) + ".e";
+        writeText(dir.file(cut), bytes.substr(0, bytes.size() * percent / 100));
+        expectReadError<FormatError>(dir.file(cut), cut);
+    }
+    writeText(dir.file("text.exo"), "not netcdf at all");
+    expectReadError<FormatError>(dir.file("text.exo"), "text.exo", "not an Exodus II file");
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");  // the Exodus library never got to print
 }
