@@ -160,7 +160,8 @@ VtkMessageTrap::VtkMessageTrap() {
 }
 
 VtkMessageTrap::~VtkMessageTrap() {
-    for (auto& [object, tag] : observed_) object->RemoveObserver(tag);
+    for (auto& [object, tag] : observed_)
+        if (object) object->RemoveObserver(tag);
     tCurrentTrap = outerTrap_;
 
     std::lock_guard<std::mutex> lock(gWindowMutex);

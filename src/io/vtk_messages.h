@@ -7,6 +7,7 @@
 #pragma once
 
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 #include <string>
 #include <utility>
@@ -45,7 +46,9 @@ public:
 private:
     std::vector<std::string> errors_, warnings_;
     vtkSmartPointer<vtkCallbackCommand> callback_;
-    std::vector<std::pair<vtkSmartPointer<vtkObject>, unsigned long>> observed_;
+    // Weak: a filter (and the data it holds) must not outlive its use because it is
+    // watched; observers are removed here only from objects still alive.
+    std::vector<std::pair<vtkWeakPointer<vtkObject>, unsigned long>> observed_;
     vtkSmartPointer<vtkOutputWindow> previousWindow_;
     VtkMessageTrap* outerTrap_ = nullptr;
 };

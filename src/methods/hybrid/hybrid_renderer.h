@@ -7,7 +7,7 @@
 #include "methods/common/frame.h"
 #include "methods/common/overlay.h"
 #include "methods/hybrid/particle_tracing.h"
-#include "methods/hybrid/seed_textures.h"
+#include "methods/common/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
 
 namespace flowsurf::methods::hybrid {
@@ -27,7 +27,7 @@ public:
 private:
     MethodParams params_;
     core::Viewport viewport_;
-    SeedTextures seeds_;
+    SurfaceGBuffer seeds_;  // seed textures [W §4]: position, velocity, shade, depth
     SolidNoise noise_;
     ParticleTracing tracing_;
     Overlay overlay_;

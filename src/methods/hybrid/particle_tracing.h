@@ -7,12 +7,12 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
-#include "methods/hybrid/seed_textures.h"
+#include "methods/common/surface_gbuffer.h"
 
 namespace flowsurf::methods::hybrid {
 
 struct TracingInput {
-    const SeedTextures* seeds = nullptr;
+    const SurfaceGBuffer* seeds = nullptr;  // with positions
     GLuint noise = 0;          // 3D texture
     int noiseSize = 64;
     core::Camera camera;

@@ -6,7 +6,7 @@ namespace flowsurf::methods::isa {
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      velocityImage_{VelocityImage(viewport), VelocityImage(viewport)},
+      velocityImage_{SurfaceGBuffer(viewport, false), SurfaceGBuffer(viewport, false)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(params.isa.gridRes, params.isa.warp),
@@ -64,7 +64,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         cachedGeneration_ = in.surface->generation();
         cachedCamera_ = in.camera;
     }
-    const VelocityImage& vel = velocityImage_[vi_];
+    const SurfaceGBuffer& vel = velocityImage_[vi_];
 
     // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1]
     timer_.begin("texture advection");

@@ -7,7 +7,7 @@
 #include "methods/common/overlay.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
-#include "methods/isa/velocity_image.h"
+#include "methods/common/surface_gbuffer.h"
 
 namespace flowsurf::methods::isa {
 
@@ -28,7 +28,7 @@ private:
     core::Viewport viewport_;
     // Two velocity images: the previous one's depth is where the source texture was
     // made, for edge detection under camera motion (translate remedy).
-    VelocityImage velocityImage_[2];
+    SurfaceGBuffer velocityImage_[2];
     int vi_ = 0;
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;

@@ -1,9 +1,10 @@
-// Hybrid step 1, seed textures [W §4]: one render of the surface gives every visible pixel
-// its P-space position and tangential P-space velocity.
+// One render of the surface into per-pixel buffers: ISA's velocity image [L §IV-C.1] and
+// the hybrid method's seed textures [W §4]. Per-vertex attributes interpolated over each
+// triangle (Gouraud); only the nearest layer survives the z-test.
 layout(location = 0) in vec3 aPosObj;
 layout(location = 1) in vec3 aNormalObj;
 layout(location = 2) in vec3 aVelObj;
-layout(location = 3) in float aSpeed;
+layout(location = 3) in float aSpeed;  // true speed, for the colour map
 uniform mat4 uViewProj;
 uniform mat4 uView;
 out vec3 vPosObj;

@@ -1,0 +1,32 @@
+// flowsurf — one render of the surface into per-pixel float buffers, shared by two paper
+// stages: ISA's velocity image [L §IV-C.1] and the hybrid method's seed textures [W §4].
+// Outputs: velocity RGBA32F (P-space, w = 1 on the surface; linear filtering, the D-space
+// velocity texture of [W eq. 3]), shade RGBA16F (eye normal, true speed), depth DEPTH32F,
+// and with `withPosition` the P-space position RGBA32F. Cost grows with the triangles N.
+#pragma once
+
+#include "core/camera.h"
+#include "gl/objects.h"
+#include "methods/common/surface_gpu.h"
+
+namespace flowsurf::methods {
+
+class SurfaceGBuffer {
+public:
+    SurfaceGBuffer(const core::Viewport& viewport, bool withPosition);
+    void render(const SurfaceGpu& surface, const core::Camera& camera);
+
+    const gl::Texture2D& velocity() const { return velocity_; }
+    const gl::Texture2D& shade() const { return shade_; }
+    const gl::Texture2D& depth() const { return depth_; }
+    const gl::Texture2D& position() const { return position_; }  // withPosition only
+
+private:
+    core::Viewport viewport_;
+    gl::Texture2D velocity_, shade_, depth_, position_;
+    gl::Framebuffer fbo_;
+    gl::Program program_;
+    int targets_;
+};
+
+}  // namespace flowsurf::methods
