@@ -54,6 +54,9 @@ echo '{"keyframes": [{"frame": 0}]}' > "$WORK/noeye.json"
 echo '{"keyframes": [' > "$WORK/broken.json"
 expect_fail "camera path no eye"  4 "noeye.json: keyframe 0" "$WORK/og.png" -- render builtin:sphere --camera-path "$WORK/noeye.json" -o "$WORK/og.png" -q
 expect_fail "camera path broken"  4 "broken.json"          "$WORK/oh.png" -- render builtin:sphere --camera-path "$WORK/broken.json" -o "$WORK/oh.png" -q
+expect_fail "time-step with time"  2 "time-step"            "$WORK/oi.png" -- render builtin:double-gyre --time-step 2 --time 0:5 -o "$WORK/oi.png" -q
+expect_fail "time-step too big"   2 "time step"            "$WORK/oj.png" -- render builtin:double-gyre --time-step 99 -o "$WORK/oj.png" -q
+expect_fail "bad time range"      2 "START:END"            "$WORK/ok.png" -- render builtin:double-gyre --time 5 -o "$WORK/ok.png" -q
 expect_fail "info missing file"   3 "nosuch.vtu"           "" -- info "$WORK/nosuch.vtu"
 
 # --- commands that must work ------------------------------------------------------
@@ -82,6 +85,18 @@ if "$FLOWSURF" compare builtin:sphere --methods isa,ibfvs --size 64x64 --frames 
 else
     bad "compare sheet"
 fi
+if "$FLOWSURF" render builtin:piston --frames-per-step 2 --frames 12 --size 64x64 -q -o "$WORK/pist_%02d.png" \
+   && [ -s "$WORK/pist_12.png" ]; then
+    ok "render a series with changing topology"
+else
+    bad "render a series with changing topology"
+fi
+if "$FLOWSURF" render builtin:double-gyre --method hybrid --time 2:4 --frames 3 --size 64x64 -q -o "$WORK/dg.png" && [ -s "$WORK/dg.png" ]; then
+    ok "hybrid over a time range"
+else
+    bad "hybrid over a time range"
+fi
+if "$FLOWSURF" info builtin:double-gyre | grep -q "time values: 0 1 2"; then ok "info lists time values"; else bad "info lists time values"; fi
 if command -v ffmpeg >/dev/null; then
     if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 4 --orbit 2 -q -o "$WORK/a.mp4" && [ -s "$WORK/a.mp4" ]; then
         ok "render mp4"
