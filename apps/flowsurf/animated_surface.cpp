@@ -22,19 +22,20 @@ core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<doub
     return m;
 }
 
-AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::Dataset data) : options_(o), source_(data.source) {
-    bounds_ = data.bounds();
-    const bool series = data.steps.size() > 1 && !o.timeStepGiven;
+AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& steps) : options_(o), provider_(steps) {
+    const bool series = steps.count() > 1 && !o.timeStepGiven;
     if (!series) {
-        const core::SurfaceMesh& mesh = selectStep(data, o.timeStep);
-        field_ = methods::selectField(mesh, o.field, data.source);
-        upload(mesh, data.source);
+        if (o.timeStep >= steps.count())
+            throw ConfigError("--time-step " + std::to_string(o.timeStep) + ": " + steps.label(0) + " has " +
+                              std::to_string(steps.count()) + " time step(s)");
+        core::SurfaceMesh mesh = steps.load(o.timeStep);
+        field_ = methods::selectField(mesh, o.field, steps.label(o.timeStep));
+        upload(mesh, steps.label(o.timeStep));
         return;
     }
-    field_ = methods::selectField(data.steps.front().mesh, o.field, data.source);
-    provider_ = std::make_unique<core::DatasetSteps>(std::move(data));
-    stream_ = std::make_unique<core::StepStream>(*provider_, 3, true);
+    stream_ = std::make_unique<core::StepStream>(steps, 3, true);
     mapping_ = makeTimeMapping(o, stream_->times());
+    field_ = methods::selectField(stream_->meshAt(mapping_.at(0)), o.field, steps.label(0));
 }
 
 void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& where) {
@@ -49,7 +50,7 @@ const methods::SurfaceGpu& AnimatedSurface::at(int frame) {
         bool changed = false;
         const double t = mapping_.at(frame);
         const core::SurfaceMesh& mesh = stream_->meshAt(t, &changed);
-        if (changed || !surface_) upload(mesh, provider_->label(stream_->topologyStep()));
+        if (changed || !surface_) upload(mesh, provider_.label(stream_->topologyStep()));
     }
     return *surface_;
 }

@@ -13,24 +13,22 @@ namespace flowsurf::app {
 
 class AnimatedSurface {
 public:
-    // Takes the data; needs a current GL context. Throws ConfigError/FieldError.
-    AnimatedSurface(const RenderOptions& o, core::Dataset data);
+    // Reads steps from `steps` (which must outlive this); needs a current GL context.
+    // Throws ConfigError/FieldError, and what loading a step throws.
+    AnimatedSurface(const RenderOptions& o, core::StepProvider& steps);
     // The surface for frame k (uploaded when the data changed since the last call).
     const methods::SurfaceGpu& at(int frame);
     bool unsteady() const { return stream_ != nullptr; }
     double timeAt(int frame) const { return mapping_.at(frame); }
-    const core::Bounds& bounds() const { return bounds_; }
     const std::string& field() const { return field_; }
-    const std::string& source() const { return source_; }
     size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
 
 private:
     void upload(const core::SurfaceMesh& mesh, const std::string& where);
 
     const RenderOptions& options_;
-    std::string source_, field_;
-    core::Bounds bounds_;
-    std::unique_ptr<core::StepProvider> provider_;
+    std::string field_;
+    core::StepProvider& provider_;
     std::unique_ptr<core::StepStream> stream_;
     core::TimeMapping mapping_;
     std::unique_ptr<methods::SurfaceGpu> surface_;

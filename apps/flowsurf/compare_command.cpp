@@ -36,8 +36,8 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
     const std::vector<std::string> names = splitMethods(methodList);
 
-    core::Dataset data = loadInput(o.input);
-    const FrameCameras cameras(o, data.bounds());
+    std::unique_ptr<core::StepProvider> steps = openInput(o.input);
+    const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
 
     // Same camera path, frame count and seed for every method ([L] Fig. 1).
@@ -49,7 +49,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
     for (size_t m = 0; m < names.size(); ++m) {
         auto method = methods::makeMethod(names[m], o.params, o.size);
-        AnimatedSurface surface(o, data);  // each method sees the same data times
+        AnimatedSurface surface(o, *steps);  // each method sees the same data times
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
         for (int k = 0; k <= o.frames; ++k) {

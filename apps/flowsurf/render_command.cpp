@@ -38,17 +38,17 @@ int runRender(const RenderOptions& o) {
     const OutputKind kind = outputKind(o.output);
 
     // Data: load and check the field before any GL work.
-    core::Dataset data = loadInput(o.input);
-    const FrameCameras cameras(o, data.bounds());
+    std::unique_ptr<core::StepProvider> steps = openInput(o.input);
+    const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
-    AnimatedSurface surface(o, std::move(data));
+    AnimatedSurface surface(o, *steps);
     std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, o.params, o.size);
 
     std::unique_ptr<io::VideoWriter> video;
     if (kind == OutputKind::Mp4) video = std::make_unique<io::VideoWriter>(o.output, o.size.width, o.size.height,
                                                                            io::VideoOptions{o.fps, o.crf});
     if (!o.quiet && o.verbose)
-        std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", surface.source().c_str(),
+        std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", o.input.c_str(),
                      surface.field().c_str(), surface.at(0).triangleCount(), method->name(),
                      surface.unsteady() ? ", time series" : "");
 

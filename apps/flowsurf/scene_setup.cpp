@@ -2,14 +2,22 @@
 
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
+
+#include <algorithm>
 #include "camera_path_file.h"
 #include "io/dataset_reader.h"
+#include "io/series_reader.h"
 
 namespace flowsurf::app {
 
 core::Dataset loadInput(const std::string& input) {
     if (core::isBuiltinSpec(input)) return core::makeBuiltin(input);
     return io::readDataset(input);
+}
+
+std::unique_ptr<core::StepProvider> openInput(const std::string& input) {
+    if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
+    return io::openSeries(input);
 }
 
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
@@ -20,8 +28,16 @@ const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
 }
 
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
-    // Default view: from the front, a little above and to the right.
+    // Default view: from the front, a little above and to the right; a flat data set (a
+    // slice) is seen straight along its thin axis.
     glm::vec3 dir = glm::normalize(glm::vec3(0.45f, 0.35f, 1.0f));
+    const glm::vec3 extent = bounds.hi - bounds.lo;
+    const float largest = std::max({extent.x, extent.y, extent.z});
+    for (int a = 0; a < 3; ++a)
+        if (extent[a] <= 0.02f * largest) {
+            dir = glm::vec3(0.0f);
+            dir[a] = 1.0f;
+        }
     if (o.eye) dir = *o.eye - (o.target ? *o.target : bounds.center());
     core::Camera cam = core::fitCamera(bounds, o.size, dir, o.fov);
     if (o.eye) cam.eye = *o.eye;

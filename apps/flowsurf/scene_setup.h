@@ -5,11 +5,17 @@
 #include "core/camera.h"
 #include "core/camera_path.h"
 #include "core/mesh.h"
+#include "core/time_series.h"
+
+#include <memory>
 #include "options.h"
 
 namespace flowsurf::app {
 
 core::Dataset loadInput(const std::string& input);
+// The input as time steps loaded on demand: builtin:NAME, a file, or a file series
+// pattern (surf_%04d.vtp, surf_*.vtp).
+std::unique_ptr<core::StepProvider> openInput(const std::string& input);
 // The mesh of the requested step with its field selected; throws ConfigError/FieldError.
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.

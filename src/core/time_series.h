@@ -22,6 +22,8 @@ public:
     virtual SurfaceMesh load(size_t index) = 0;
     // "file.pvd step 3 (t = 0.5)" for messages.
     virtual std::string label(size_t index) const = 0;
+    // Bounds for framing the camera: of every step where known, else of the first.
+    virtual Bounds bounds() { return load(0).bounds(); }
 };
 
 class DatasetSteps final : public StepProvider {
@@ -31,6 +33,7 @@ public:
     double time(size_t i) const override { return data_.steps[i].time; }
     SurfaceMesh load(size_t i) override { return data_.steps[i].mesh; }
     std::string label(size_t i) const override;
+    Bounds bounds() override { return data_.bounds(); }
 
 private:
     Dataset data_;

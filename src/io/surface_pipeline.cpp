@@ -68,13 +68,13 @@ vtkSmartPointer<vtkPolyData> mergeBlocks(const std::vector<vtkSmartPointer<vtkPo
     return append->GetOutput();
 }
 
-// The name of the normals array, if any: the active normals, else "Normals".
+// The name of the normals array, if any: "Normals", else the active normals.
 std::string normalsName(vtkPolyData* data) {
     vtkPointData* pd = data->GetPointData();
-    vtkDataArray* n = pd->GetNormals();
-    if (n && n->GetNumberOfComponents() == 3 && n->GetName()) return n->GetName();
-    n = pd->GetArray("Normals");
+    vtkDataArray* n = pd->GetArray("Normals");
     if (n && n->GetNumberOfComponents() == 3) return "Normals";
+    n = pd->GetNormals();
+    if (n && n->GetNumberOfComponents() == 3 && n->GetName()) return n->GetName();
     return {};
 }
 

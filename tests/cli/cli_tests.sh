@@ -59,6 +59,38 @@ expect_fail "time-step too big"   2 "time step"            "$WORK/oj.png" -- ren
 expect_fail "bad time range"      2 "START:END"            "$WORK/ok.png" -- render builtin:double-gyre --time 5 -o "$WORK/ok.png" -q
 expect_fail "info missing file"   3 "nosuch.vtu"           "" -- info "$WORK/nosuch.vtu"
 
+# A numbered series whose middle step is corrupt: stops naming that step; the frames
+# written before it are complete files.
+plane_vtp() {  # $1: file, $2: x velocity
+    cat > "$1" <<VTP
+<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+<PolyData><Piece NumberOfPoints="4" NumberOfPolys="2">
+<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 1 1 0 0 1 0</DataArray></Points>
+<PointData><DataArray type="Float32" Name="U" NumberOfComponents="3" format="ascii">$2 0 0 $2 0 0 $2 0 0 $2 0 0</DataArray></PointData>
+<Polys><DataArray type="Int32" Name="connectivity" format="ascii">0 1 2 0 2 3</DataArray>
+<DataArray type="Int32" Name="offsets" format="ascii">3 6</DataArray></Polys>
+</Piece></PolyData></VTKFile>
+VTP
+}
+mkdir -p "$WORK/series" "$WORK/seqout"
+for i in 1 2 3 4 5; do plane_vtp "$WORK/series/s_$i.vtp" "$i"; done
+head -c 200 "$WORK/series/s_1.vtp" > "$WORK/series/s_3.vtp"
+err=$("$FLOWSURF" render "$WORK/series/s_%d.vtp" --frames-per-step 2 --frames 8 --size 32x32 -q -o "$WORK/seqout/f_%02d.png" 2>&1)
+rc=$?
+if [ "$rc" -eq 4 ] && grep -q "s_3.vtp" <<<"$err" && [ -s "$WORK/seqout/f_00.png" ] \
+   && ! ls "$WORK/seqout"/*.tmp* >/dev/null 2>&1; then
+    ok "corrupt step in a series is named; earlier frames complete"
+else
+    bad "corrupt step in a series (rc $rc: $err)"
+fi
+plane_vtp "$WORK/series/s_3.vtp" 3
+if "$FLOWSURF" render "$WORK/series/s_*.vtp" --frames 8 --size 32x32 -q -o "$WORK/series.png" && [ -s "$WORK/series.png" ]; then
+    ok "render a numbered file series (glob)"
+else
+    bad "render a numbered file series (glob)"
+fi
+
 # --- commands that must work ------------------------------------------------------
 if "$FLOWSURF" render --list-builtins | grep -q sphere; then ok "list builtins"; else bad "list builtins"; fi
 if "$FLOWSURF" render --help | grep -q -- "--grid-res"; then ok "help lists options"; else bad "help lists options"; fi

@@ -1,0 +1,22 @@
+// flowsurf — time series read lazily, one step at a time (for core::StepStream): a
+// multi-step file (.pvd, OpenFOAM .foam with every time directory, Exodus, EnSight, ...)
+// or a numbered file series given as a printf pattern ("surf_%04d.vtp") or a glob
+// ("surf_*.vtp"). Memory holds only the steps the stream keeps.
+#pragma once
+
+#include "core/time_series.h"
+
+#include <memory>
+#include <string>
+
+namespace flowsurf::io {
+
+// True if `input` names a file series: it contains '%', '*' or '?'.
+bool isSeriesPattern(const std::string& input);
+
+// Opens the metadata (file list or time values) now; steps load on demand. A series
+// file's time is the number in its name where the pattern varies (else its index).
+// Throws IoError (no file matches, unreadable) or FormatError.
+std::unique_ptr<core::StepProvider> openSeries(const std::string& input);
+
+}  // namespace flowsurf::io
