@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -92,11 +93,18 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         methods::SurfaceGpu surface(mesh, "velocity");
         for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+            if (o.camera == "paraview") {
+                const float r = data.bounds().radius();
+                camera.fovDeg = 30.0f;
+                camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));
+                core::fitClipPlanes(camera, data.bounds());
+            }
             for (const std::string& name : o.methods)
                 for (const auto& [param, params] : variants(name, o)) {
                     auto method = methods::makeMethod(name, params, vp);
                     uint32_t clock = 0;
                     for (bool dynamic : {false, true}) {
+                        if (o.dynamicOnly && !dynamic) continue;
                         BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, clock);
                         r.method = name;
                         r.triangles = long(mesh.triangleCount());

@@ -19,6 +19,10 @@ struct BenchOptions {
     std::vector<core::Viewport> imageSizes{{512, 512}, {1024, 1024}};
     std::vector<int> gridRes{128, 256, 512, 1024};   // ISA
     std::vector<int> filterLengths{10, 25, 50, 100};  // hybrid
+    bool dynamicOnly = false;            // skip the static case (animation cost only)
+    // Camera placement: "fit" (our default framing) or "paraview" (ParaView's ResetCamera:
+    // the bounding box's sphere fills a 30 degree view), for like-for-like comparisons.
+    std::string camera = "fit";
 };
 
 struct BenchRow {

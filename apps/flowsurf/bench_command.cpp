@@ -19,6 +19,8 @@ int runBench(const BenchOptions& o) {
     for (const auto& s : o.sizes) b.imageSizes.push_back(parseSize(s, "--sizes"));
     b.gridRes = o.grids;
     b.filterLengths = o.lengths;
+    b.dynamicOnly = o.dynamicOnly;
+    b.camera = o.camera;
     if (o.quick) {
         b.triangles = {10'000, 220'000};
         b.imageSizes = {{512, 512}};

@@ -22,6 +22,8 @@ struct BenchOptions {
     std::vector<std::string> sizes{"512x512", "1024x1024"};
     std::vector<int> grids{128, 256, 512, 1024};
     std::vector<int> lengths{10, 25, 50, 100};
+    bool dynamicOnly = false;
+    std::string camera = "fit";
 };
 int runBench(const BenchOptions& options);
 

@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--sizes", bench.sizes, "Image sizes WxH")->delimiter(',')->capture_default_str();
     benchCmd->add_option("--grids", bench.grids, "ISA advection mesh resolutions")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(64, 1024));
+    benchCmd->add_flag("--dynamic-only", bench.dynamicOnly, "Only the dynamic case (the cost while animating)");
+    benchCmd->add_option("--camera", bench.camera, "Camera placement: fit, or paraview (ParaView's ResetCamera framing)")
+        ->capture_default_str()->check(CLI::IsMember({"fit", "paraview"}));
     benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(1, 1001));
 

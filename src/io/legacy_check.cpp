@@ -1,5 +1,6 @@
-// Legacy layout (www.vtk.org/VTK/img/file-formats.pdf): 4 header lines, then keyword
-// lines each followed by their data, ASCII tokens or big-endian binary ending in '\n'.
+// Legacy layout (www.vtk.org/VTK/img/file-formats.pdf): 4 header lines, then keywords
+// with their counts, each followed by data: ASCII tokens, or big-endian binary that
+// starts on the next line.
 #include "io/legacy_check.h"
 
 #include "core/errors.h"
@@ -10,8 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
-#include <vector>
 
 namespace flowsurf::io::detail {
 
@@ -21,6 +20,9 @@ std::string upper(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::toupper(c)); });
     return s;
 }
+
+// VTK compares only a keyword's length ("CELLS\x1c30" is CELLS to it), so do we.
+bool is(const std::string& token, const char* keyword) { return token.rfind(keyword, 0) == 0; }
 
 // Bytes per value in BINARY files; 0 for types this check does not skip.
 size_t binaryWidth(const std::string& type) {
@@ -35,26 +37,51 @@ size_t binaryWidth(const std::string& type) {
     return 0;
 }
 
+std::string shown(const std::string& token) {
+    std::string s = token.substr(0, 20);
+    for (auto& c : s)
+        if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+    return s;
+}
+
+// Reads like vtkDataReader: whitespace-separated tokens; binary data after the rest
+// of the keyword's line.
 class Scanner {
 public:
     Scanner(const std::string& path, bool binary, std::ifstream& in) : path_(path), binary_(binary), in_(in) {}
 
-    // The next keyword line split into words (METADATA blocks skipped); empty at the end.
-    std::vector<std::string> keyword() {
-        std::string line;
-        while (std::getline(in_, line)) {
-            std::istringstream s(line);
-            std::vector<std::string> words;
-            for (std::string w; s >> w;) words.push_back(w);
-            if (words.empty()) continue;
-            if (upper(words[0]) == "METADATA") {
-                while (std::getline(in_, line) && line.find_first_not_of(" \t\r") != std::string::npos) {
-                }
-                continue;
+    // The next keyword, upper-cased; METADATA blocks (lines up to a blank one) skipped.
+    std::string keyword() {
+        std::string token;
+        while (in_ >> token) {
+            token = upper(token);
+            if (!is(token, "METADATA")) return token;
+            std::string line;
+            std::getline(in_, line);
+            while (std::getline(in_, line) && line.find_first_not_of(" \t\r") != std::string::npos) {
             }
-            return words;
         }
         return {};
+    }
+
+    std::string word(const std::string& section) {
+        std::string token;
+        if (!(in_ >> token)) truncated(section);
+        return token;
+    }
+
+    uint64_t count(const std::string& section) {
+        const std::string token = word(section);
+        char* end = nullptr;
+        const long long v = std::strtoll(token.c_str(), &end, 10);
+        if (*end || end == token.c_str() || v < 0)
+            throw FormatError(path_ + ": VTK legacy " + section + " has a bad count '" + shown(token) + "'");
+        return uint64_t(v);
+    }
+
+    void startData() {
+        std::string rest;
+        if (binary_) std::getline(in_, rest);
     }
 
     void skip(uint64_t count, size_t width, const std::string& section) {
@@ -64,12 +91,11 @@ public:
             return;
         }
         // Every token must be a number: VTK's ASCII cell reader crashes on one that is not.
-        std::string token;
         for (uint64_t i = 0; i < count; ++i) {
-            if (!(in_ >> token)) truncated(section);
+            const std::string token = word(section);
             char* end = nullptr;
             std::strtod(token.c_str(), &end);
-            if (*end) notANumber(section, token);
+            if (*end || end == token.c_str()) notANumber(section, token);
         }
     }
 
@@ -79,23 +105,18 @@ public:
             if (!in_.read(reinterpret_cast<char*>(b), 4)) truncated(section);
             return int32_t(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3]);
         }
-        std::string token;
-        if (!(in_ >> token)) truncated(section);
+        const std::string token = word(section);
         char* end = nullptr;
-        long long v = std::strtoll(token.c_str(), &end, 10);
+        const long long v = std::strtoll(token.c_str(), &end, 10);
         if (*end || end == token.c_str()) notANumber(section, token);
         return v;
     }
 
-    [[noreturn]] void notANumber(const std::string& section, const std::string& token) const {
-        std::string shown = token.substr(0, 20);
-        for (auto& c : shown)
-            if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-        throw FormatError(path_ + ": VTK legacy " + section + " data: '" + shown + "' is not a number");
-    }
-
     [[noreturn]] void truncated(const std::string& section) const {
         throw FormatError(path_ + ": truncated VTK legacy file: the " + section + " data ends early");
+    }
+    [[noreturn]] void notANumber(const std::string& section, const std::string& token) const {
+        throw FormatError(path_ + ": VTK legacy " + section + " data: '" + shown(token) + "' is not a number");
     }
 
 private:
@@ -104,16 +125,10 @@ private:
     std::ifstream& in_;
 };
 
-uint64_t count(const std::vector<std::string>& words, size_t i, const std::string& path) {
-    long long v = i < words.size() ? std::strtoll(words[i].c_str(), nullptr, 10) : -1;
-    if (v < 0) throw FormatError(path + ": VTK legacy section " + words[0] + " has a bad count");
-    return uint64_t(v);
-}
-
-// "count id id ..." runs: n cells in `size` integers.
-void checkCellList(Scanner& scan, const std::vector<std::string>& words, const std::string& path) {
-    const std::string section = upper(words[0]);
-    const uint64_t cells = count(words, 1, path), size = count(words, 2, path);
+// "count id id ..." runs: `cells` cells in `size` integers.
+void checkCellList(Scanner& scan, const std::string& section, const std::string& path) {
+    const uint64_t cells = scan.count(section), size = scan.count(section);
+    scan.startData();
     uint64_t used = 0;
     for (uint64_t c = 0; c < cells; ++c) {
         const int64_t n = used < size ? scan.readInt(section) : -1;
@@ -141,36 +156,46 @@ void checkLegacyFile(const std::string& path) {
         std::sscanf(versionLine.c_str() + 23, "%d.%d", &major, &minor) != 2)
         throw FormatError(path + ": not a VTK legacy file (the first line is not '# vtk DataFile Version x.y')");
     if (major >= 5) return;  // offsets + connectivity arrays: sizes are explicit, VTK reads them safely
-    const std::string mode = upper(encoding.substr(0, encoding.find_last_not_of(" \t\r") + 1));
-    if (mode != "ASCII" && mode != "BINARY")
+    const std::string mode = upper(encoding);
+    if (!is(mode, "ASCII") && !is(mode, "BINARY"))
         throw FormatError(path + ": VTK legacy line 3 must be ASCII or BINARY");
-    Scanner scan(path, mode == "BINARY", in);
+    Scanner scan(path, is(mode, "BINARY"), in);
 
-    for (auto words = scan.keyword(); !words.empty(); words = scan.keyword()) {
-        const std::string key = upper(words[0]);
-        if (key == "DATASET") {
-            const std::string type = words.size() > 1 ? upper(words[1]) : "";
-            if (type != "POLYDATA" && type != "UNSTRUCTURED_GRID") return;  // no explicit cells
-        } else if (key == "POINTS") {
-            const size_t width = words.size() > 2 ? binaryWidth(words[2]) : 0;
+    // Geometry sections in any order, up to the attribute data (sized arrays, safe).
+    for (std::string key = scan.keyword(); !key.empty(); key = scan.keyword()) {
+        if (is(key, "POINT_DATA") || is(key, "CELL_DATA")) {
+            return;
+        } else if (is(key, "DATASET")) {
+            const std::string type = upper(scan.word("DATASET"));
+            if (!is(type, "POLYDATA") && !is(type, "UNSTRUCTURED_GRID")) return;  // no explicit cells
+        } else if (is(key, "POINTS")) {
+            const uint64_t n = scan.count("POINTS");
+            const size_t width = binaryWidth(scan.word("POINTS"));
             if (width == 0) return;
-            scan.skip(count(words, 1, path) * 3, width, "POINTS");
-        } else if (key == "FIELD") {
-            for (uint64_t a = 0, n = count(words, 2, path); a < n; ++a) {
-                auto array = scan.keyword();
-                if (array.empty()) scan.truncated("FIELD");
-                if (upper(array[0]) == "NULL_ARRAY") continue;
-                const size_t width = array.size() > 3 ? binaryWidth(array[3]) : 0;
+            scan.startData();
+            scan.skip(n * 3, width, "POINTS");
+        } else if (is(key, "FIELD")) {
+            scan.word("FIELD");
+            for (uint64_t a = 0, n = scan.count("FIELD"); a < n; ++a) {
+                const std::string name = scan.keyword();
+                if (name.empty()) scan.truncated("FIELD");
+                if (is(name, "NULL_ARRAY")) continue;
+                const uint64_t components = scan.count("FIELD"), tuples = scan.count("FIELD");
+                const size_t width = binaryWidth(scan.word("FIELD"));
                 if (width == 0) return;  // strings, bits...: left to VTK
-                scan.skip(count(array, 1, path) * count(array, 2, path), width, "FIELD");
+                scan.startData();
+                scan.skip(components * tuples, width, "FIELD");
             }
-        } else if (key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS" ||
-                   key == "CELLS") {
-            checkCellList(scan, words, path);
-        } else if (key == "CELL_TYPES") {
-            scan.skip(count(words, 1, path), 4, "CELL_TYPES");
+        } else if (is(key, "CELL_TYPES")) {
+            const uint64_t n = scan.count("CELL_TYPES");
+            scan.startData();
+            scan.skip(n, 4, "CELL_TYPES");
         } else {
-            return;  // POINT_DATA / CELL_DATA (attributes are sized arrays) or unknown
+            const char* list = nullptr;
+            for (const char* l : {"VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS"})
+                if (is(key, l)) list = l;
+            if (!list) return;  // unknown: VTK reports it
+            checkCellList(scan, list, path);
         }
     }
 }
