@@ -37,6 +37,27 @@ size_t binaryWidth(const std::string& type) {
     return 0;
 }
 
+// What `istream >> int` / `>> float` accept in full; VTK's reader loses its place (and
+// later crashes) on anything else, "nan" and ".9" as an index included.
+bool isInteger(const std::string& t) {
+    size_t i = (t[0] == '+' || t[0] == '-') ? 1 : 0;
+    return i < t.size() && t.find_first_not_of("0123456789", i) == std::string::npos;
+}
+bool isReal(const std::string& t) {
+    size_t i = (t[0] == '+' || t[0] == '-') ? 1 : 0, digits = 0;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+    if (i < t.size() && t[i] == '.')
+        for (++i; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]));) ++i, ++digits;
+    if (digits == 0) return false;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+        if (++i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+        const size_t start = i;
+        while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i;
+        if (i == start) return false;
+    }
+    return i == t.size();
+}
+
 std::string shown(const std::string& token) {
     std::string s = token.substr(0, 20);
     for (auto& c : s)
@@ -79,23 +100,32 @@ public:
         return uint64_t(v);
     }
 
+    // Bytes per value of the next token's data type; 0 for strings and bits (not
+    // skipped here). Anything else is refused: VTK matches type names by prefix, so a
+    // garbled "float\xdd0" would shift every later count.
+    size_t dataType(const std::string& section) {
+        const std::string type = word(section);
+        if (size_t width = binaryWidth(type)) return width;
+        const std::string t = upper(type);
+        if (t == "STRING" || t == "UTF8_STRING" || t == "BIT" || t == "VARIANT") return 0;
+        throw FormatError(path_ + ": VTK legacy " + section + " has an unknown data type '" + shown(type) + "'");
+    }
+
     void startData() {
         std::string rest;
         if (binary_) std::getline(in_, rest);
     }
 
-    void skip(uint64_t count, size_t width, const std::string& section) {
+    // Skips `count` values; ASCII tokens must be numbers (integers if `integers`).
+    void skip(uint64_t count, size_t width, const std::string& section, bool integers = false) {
         if (binary_) {
             in_.ignore(std::streamsize(count * width));
             if (uint64_t(in_.gcount()) != count * width) truncated(section);
             return;
         }
-        // Every token must be a number: VTK's ASCII cell reader crashes on one that is not.
         for (uint64_t i = 0; i < count; ++i) {
             const std::string token = word(section);
-            char* end = nullptr;
-            std::strtod(token.c_str(), &end);
-            if (*end || end == token.c_str()) notANumber(section, token);
+            if (!(integers ? isInteger(token) : isReal(token))) notANumber(section, token);
         }
     }
 
@@ -106,10 +136,8 @@ public:
             return int32_t(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3]);
         }
         const std::string token = word(section);
-        char* end = nullptr;
-        const long long v = std::strtoll(token.c_str(), &end, 10);
-        if (*end || end == token.c_str()) notANumber(section, token);
-        return v;
+        if (!isInteger(token)) notANumber(section, token);
+        return std::strtoll(token.c_str(), nullptr, 10);
     }
 
     [[noreturn]] void truncated(const std::string& section) const {
@@ -135,7 +163,7 @@ void checkCellList(Scanner& scan, const std::string& section, const std::string&
         if (n < 0 || used + 1 + uint64_t(n) > size)
             throw FormatError(path + ": VTK legacy " + section + " cell " + std::to_string(c) +
                               " does not fit the declared size " + std::to_string(size));
-        scan.skip(uint64_t(n), 4, section);
+        scan.skip(uint64_t(n), 4, section, true);
         used += 1 + uint64_t(n);
     }
     if (used != size)
@@ -170,7 +198,7 @@ void checkLegacyFile(const std::string& path) {
             if (!is(type, "POLYDATA") && !is(type, "UNSTRUCTURED_GRID")) return;  // no explicit cells
         } else if (is(key, "POINTS")) {
             const uint64_t n = scan.count("POINTS");
-            const size_t width = binaryWidth(scan.word("POINTS"));
+            const size_t width = scan.dataType("POINTS");
             if (width == 0) return;
             scan.startData();
             scan.skip(n * 3, width, "POINTS");
@@ -181,15 +209,15 @@ void checkLegacyFile(const std::string& path) {
                 if (name.empty()) scan.truncated("FIELD");
                 if (is(name, "NULL_ARRAY")) continue;
                 const uint64_t components = scan.count("FIELD"), tuples = scan.count("FIELD");
-                const size_t width = binaryWidth(scan.word("FIELD"));
-                if (width == 0) return;  // strings, bits...: left to VTK
+                const size_t width = scan.dataType("FIELD");
+                if (width == 0) return;  // strings, bits: left to VTK
                 scan.startData();
                 scan.skip(components * tuples, width, "FIELD");
             }
         } else if (is(key, "CELL_TYPES")) {
             const uint64_t n = scan.count("CELL_TYPES");
             scan.startData();
-            scan.skip(n, 4, "CELL_TYPES");
+            scan.skip(n, 4, "CELL_TYPES", true);
         } else {
             const char* list = nullptr;
             for (const char* l : {"VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS"})
