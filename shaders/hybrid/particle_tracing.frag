@@ -61,8 +61,15 @@ vec2 octaveScales(float dist, out float f) {
     f = l - i;
     return uFreqAtUnit * vec2(exp2(-i), exp2(-(i + 1.0)));
 }
+// A fixed oblique rotation of the lookup: flat data lying in an axis plane (a CFD slice)
+// would otherwise sample the lattice along a texel plane and show its grid.
+// 0.7 rad about (1, 2, 3), columns.
+const mat3 kNoiseRotation = mat3(0.781639, 0.550117, -0.293958,
+                                 -0.482929, 0.832030, 0.272956,
+                                 0.394740, -0.071392, 0.916015);
 float noiseAt(vec3 p, vec2 scales, float f) {
-    return mix(texture(uNoise, p * scales.x).r, texture(uNoise, p * scales.y).r, f);
+    vec3 q = kNoiseRotation * p;
+    return mix(texture(uNoise, q * scales.x).r, texture(uNoise, q * scales.y).r, f);
 }
 
 void main() {

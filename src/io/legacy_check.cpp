@@ -125,7 +125,7 @@ public:
         }
         for (uint64_t i = 0; i < count; ++i) {
             const std::string token = word(section);
-            if (!(integers ? isInteger(token) : isReal(token))) notANumber(section, token);
+            if (!(integers ? isInteger(token) : isReal(token))) notANumber(section, token, integers);
         }
     }
 
@@ -136,15 +136,16 @@ public:
             return int32_t(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3]);
         }
         const std::string token = word(section);
-        if (!isInteger(token)) notANumber(section, token);
+        if (!isInteger(token)) notANumber(section, token, true);
         return std::strtoll(token.c_str(), nullptr, 10);
     }
 
     [[noreturn]] void truncated(const std::string& section) const {
         throw FormatError(path_ + ": truncated VTK legacy file: the " + section + " data ends early");
     }
-    [[noreturn]] void notANumber(const std::string& section, const std::string& token) const {
-        throw FormatError(path_ + ": VTK legacy " + section + " data: '" + shown(token) + "' is not a number");
+    [[noreturn]] void notANumber(const std::string& section, const std::string& token, bool integer) const {
+        throw FormatError(path_ + ": VTK legacy " + section + " data: '" + shown(token) + "' is not " +
+                          (integer ? "an integer" : "a number"));
     }
 
 private:

@@ -189,7 +189,11 @@ TEST(Hybrid, FilterLengthOneReproducesTheNoise) {
             glm::vec4 h = invVP * glm::vec4((x + 0.5f) / vp.width * 2 - 1, (y + 0.5f) / vp.height * 2 - 1, z * 2 - 1, 1);
             glm::vec3 pos = glm::vec3(h) / h.w;
             float l = std::log2(glm::length(pos - cam.eye)), i = std::floor(l), f = l - i;
-            float expected = (1 - f) * sample(pos * freq * std::exp2(-i)) + f * sample(pos * freq * std::exp2(-(i + 1)));
+            // The shader's fixed oblique rotation of the lookup (column-major, as GLSL).
+            const glm::mat3 rot(0.781639f, 0.550117f, -0.293958f, -0.482929f, 0.832030f, 0.272956f, 0.394740f,
+                                -0.071392f, 0.916015f);
+            glm::vec3 q = rot * pos;
+            float expected = (1 - f) * sample(q * freq * std::exp2(-i)) + f * sample(q * freq * std::exp2(-(i + 1)));
             worst = std::max(worst, double(std::abs(expected - lic[size_t(y) * vp.width + x])));
             ++count;
         }

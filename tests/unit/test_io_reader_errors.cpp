@@ -286,7 +286,7 @@ TEST(IoReaders, MalformedCellsAreFormatErrorsNotCrashes) {
         {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 2 5\n3 0 1 2 3\n",
          "does not fit"},
         {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 5\n4 0 x 2 3\n",
-         "not a number"},
+         "not an integer"},
         {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
              "CELLS 1 5\n900 0 1 2 3\nCELL_TYPES 1\n9\n",
          "does not fit"},
