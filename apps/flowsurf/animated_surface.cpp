@@ -50,7 +50,15 @@ const methods::SurfaceGpu& AnimatedSurface::at(int frame) {
         bool changed = false;
         const double t = mapping_.at(frame);
         const core::SurfaceMesh& mesh = stream_->meshAt(t, &changed);
-        if (changed || !surface_) upload(mesh, provider_.label(stream_->topologyStep()));
+        if (!changed && surface_) return *surface_;
+        const size_t topology = stream_->topologyStep();
+        const std::string where = provider_.label(topology);
+        // Same topology as the last upload: rewrite the vertices in place.
+        if (surface_ && topology == uploadedTopology_ && mesh.findField(field_) &&
+            surface_->updateVertices(mesh, field_, options_.params.common))
+            return *surface_;
+        upload(mesh, where);
+        uploadedTopology_ = topology;
     }
     return *surface_;
 }

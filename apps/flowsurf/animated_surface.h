@@ -32,6 +32,7 @@ private:
     std::unique_ptr<core::StepStream> stream_;
     core::TimeMapping mapping_;
     std::unique_ptr<methods::SurfaceGpu> surface_;
+    size_t uploadedTopology_ = 0;  // step whose triangles surface_ holds
 };
 
 // The frame -> data time mapping of the options for these step times.

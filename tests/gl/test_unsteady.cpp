@@ -140,3 +140,22 @@ TEST(Unsteady, LongRunKeepsMemoryFlat) {
     EXPECT_LT(end - afterWarmup, 16 * 1024) << "more than 16 MB growth";
     EXPECT_LE(stream.resident(), 3u);
 }
+
+// Rewriting the vertices of an uploaded surface in place (same topology, new step) gives
+// the same image as a fresh upload of that step; a different topology is refused.
+TEST(Unsteady, InPlaceVertexUpdateMatchesAFreshUpload) {
+    core::Dataset gyre = core::makeBuiltin("builtin:double-gyre");
+    const core::Viewport vp{96, 64};
+    core::Camera cam = core::fitCamera(gyre.bounds(), vp, {0.2f, 0.3f, 1.0f});
+    methods::MethodParams p;
+    methods::SurfaceGpu updated(gyre.steps[0].mesh, "velocity", p.common);
+    ASSERT_TRUE(updated.updateVertices(gyre.steps[5].mesh, "velocity", p.common));
+    methods::SurfaceGpu fresh(gyre.steps[5].mesh, "velocity", p.common);
+    auto a = methods::makeMethod("ibfvs", p, vp), b = methods::makeMethod("ibfvs", p, vp);
+    for (int k = 0; k < 10; ++k) {
+        a->renderFrame({&updated, cam, uint32_t(k)});
+        b->renderFrame({&fresh, cam, uint32_t(k)});
+    }
+    EXPECT_EQ(gl::readChannel(a->flowTexture()), gl::readChannel(b->flowTexture()));
+    EXPECT_FALSE(updated.updateVertices(core::makeBuiltin("builtin:piston").steps[3].mesh, "velocity", p.common));
+}

@@ -51,8 +51,8 @@ float percentile(std::vector<float> values, float p) {
 }
 }  // namespace
 
-SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
-                       bool withEdges) {
+std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,
+                                          const CommonParams& params) {
     const core::VectorField* field = mesh.findField(fieldName);
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
     std::vector<glm::vec3> vel = field->values;
@@ -63,6 +63,7 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     const float clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(speed, params.speedPercentile);
     std::vector<float> interleaved;
     interleaved.reserve(mesh.vertexCount() * 10);
+    maxSpeed_ = 0.0f;
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         glm::vec3 v = vel[i];
         if (params.normalize && speed[i] > 0.0f) v /= speed[i];
@@ -73,8 +74,25 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
         maxSpeed_ = std::max(maxSpeed_, glm::length(v));
     }
     bounds_ = mesh.bounds();
+    return interleaved;
+}
+
+bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName,
+                                const CommonParams& params) {
+    if (GLsizeiptr(mesh.vertexCount() * 10 * sizeof(float)) != vertices_.size() ||
+        mesh.triangleCount() != triangles_)
+        return false;
+    std::vector<float> interleaved = interleave(mesh, fieldName, params);
+    glNamedBufferSubData(vertices_.id(), 0, vertices_.size(), interleaved.data());
+    generation_ = nextGeneration++;
+    return true;
+}
+
+SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
+                       bool withEdges) {
+    std::vector<float> interleaved = interleave(mesh, fieldName, params);
     triangles_ = mesh.triangleCount();
-    vertices_ = gl::Buffer(GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), 0);
+    vertices_ = gl::Buffer(GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_DYNAMIC_STORAGE_BIT);
     indices_ = gl::Buffer(GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)), mesh.triangles.data(), 0);
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();

@@ -7,6 +7,7 @@
 #include "methods/common/params.h"
 
 #include <string>
+#include <vector>
 
 namespace flowsurf::methods {
 
@@ -18,6 +19,11 @@ public:
     // `withEdges`: also build the edge adjacency the IBFVS edge mask draws.
     SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {},
                bool withEdges = false);
+
+    // A new time step of the same topology (interpolated positions and vectors): rewrites
+    // the vertex buffer in place, keeping triangles and edge adjacency. False (nothing
+    // done) if the vertex or triangle count differs: build a new SurfaceGpu then.
+    bool updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params);
 
     void draw() const;  // binds the VAO and draws the triangles
     // Draws every edge as GL_LINES_ADJACENCY (v0, v1, opposite vertex of the triangle
@@ -35,6 +41,11 @@ public:
     uint64_t generation() const { return generation_; }
 
 private:
+    // Tangential, clamped/normalised vectors interleaved with position, normal and speed;
+    // sets the speed statistics and bounds.
+    std::vector<float> interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,
+                                  const CommonParams& params);
+
     gl::Buffer vertices_, indices_;
     gl::VertexArray vao_, edgeVao_;
     gl::Buffer edgeIndices_;
