@@ -11,6 +11,9 @@
 #include "progress.h"
 #include "scene_setup.h"
 
+#include <epoxy/gl.h>
+
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -55,6 +58,7 @@ int runRender(const RenderOptions& o) {
     // --frames advection frames, then the output frame.
     const int total = o.frames + 1;
     ProgressBar progress("render", total, !o.quiet);
+    const auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < total; ++k) {
         method->renderFrame({&surface.at(k), cameras.at(k), uint32_t(k)});
         if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
@@ -64,6 +68,12 @@ int runRender(const RenderOptions& o) {
         progress.update(k + 1, surface.unsteady() ? "t = " + std::to_string(surface.timeAt(k)) : "");
     }
     progress.finish();
+    if (o.verbose) {
+        glFinish();
+        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "flowsurf: %d frames in %.2f s: %.1f ms/frame (%.1f fps), data loading and output included\n",
+                     total, s, 1000.0 * s / total, total / s);
+    }
 
     if (video) video->finish();
     if (kind == OutputKind::Png)
