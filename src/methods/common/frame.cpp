@@ -9,8 +9,9 @@
 
 namespace flowsurf::methods {
 
-std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
-                                       const core::Viewport& viewport) {
+namespace {
+std::unique_ptr<FlowMethod> construct(const std::string& name, const MethodParams& params,
+                                      const core::Viewport& viewport) {
     if (name == "isa") return std::make_unique<isa::IsaRenderer>(params, viewport);
     if (name == "ibfvs") return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);
     if (name == "hybrid") {
@@ -19,6 +20,26 @@ std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodPara
         return std::make_unique<hybrid::HybridRenderer>(params, viewport);
     }
     throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs, hybrid)");
+}
+}  // namespace
+
+std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
+                                       const core::Viewport& viewport) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (viewport.width > maxSize || viewport.height > maxSize)
+        throw ConfigError("image size " + std::to_string(viewport.width) + "x" + std::to_string(viewport.height) +
+                          " exceeds this OpenGL's largest texture (" + std::to_string(maxSize) + ")");
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    std::unique_ptr<FlowMethod> method = construct(name, params, viewport);
+    // Render targets are allocated above: an absurd size shows up here, not as a crash.
+    if (GLenum err = glGetError(); err == GL_OUT_OF_MEMORY)
+        throw GlError("not enough graphics memory for " + std::to_string(viewport.width) + "x" +
+                      std::to_string(viewport.height) + " with method " + name);
+    else if (err != GL_NO_ERROR)
+        throw GlError("OpenGL error 0x" + std::to_string(err) + " while setting up method " + name);
+    return method;
 }
 
 float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx) {
