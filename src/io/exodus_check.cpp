@@ -97,8 +97,92 @@ void skipAttributes(Cursor& c, const std::string& path) {
     }
 }
 
-void checkExodusSchema(const std::string& path, const Mapping& m, const Dims& dims,
-                       const std::vector<Variable>& vars, uint64_t numRecs);
+struct Header {
+    uint64_t numRecs = 0;
+    Dims dims;
+    std::vector<Variable> vars;
+    size_t end = 0;  // first byte after the header
+
+    bool isRecord(const Variable& v) const { return !v.dims.empty() && dims[v.dims[0]].second == 0; }
+};
+
+Header parseHeader(const Mapping& m, const std::string& path, int version) {
+    Header h;
+    Cursor c(m, path, version);
+    h.numRecs = c.count();
+    if (h.numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) h.numRecs = 0;  // streaming
+    uint64_t tag = c.u32(), n = c.count();
+    if (!(tag == 0 && n == 0)) {
+        if (tag != 0x0A) throw FormatError(path + ": malformed Exodus II (NetCDF) dimension list");
+        for (uint64_t i = 0; i < n; ++i) {
+            std::string name = c.name();
+            h.dims.emplace_back(name, c.count());
+        }
+    }
+    skipAttributes(c, path);
+    tag = c.u32();
+    n = c.count();
+    if (!(tag == 0 && n == 0) && tag != 0x0B)
+        throw FormatError(path + ": malformed Exodus II (NetCDF) variable list");
+    for (uint64_t i = 0; tag == 0x0B && i < n; ++i) {
+        Variable v;
+        v.name = c.name();
+        for (uint64_t k = 0, nd = c.count(); k < nd; ++k) {
+            uint64_t id = c.count();
+            if (id >= h.dims.size()) throw FormatError(path + ": variable '" + v.name + "' has a bad dimension");
+            v.dims.push_back(id);
+        }
+        skipAttributes(c, path);
+        v.type = c.u32();
+        if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
+        v.vsize = c.count();
+        v.begin = c.offset();
+        h.vars.push_back(std::move(v));
+    }
+    h.end = c.pos();
+    return h;
+}
+
+// Every variable's data inside the file, in order, sizes agreeing with the dimensions
+// (what netCDF itself checks, plus the file length it does not). A record variable's
+// first dimension is the unlimited one (length 0); its records interleave.
+void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
+    auto bytesPerRecord = [&](const Variable& v) {
+        uint64_t b = typeSize(v.type);
+        for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]].second, path);
+        return b;
+    };
+    uint64_t recordSize = 0, recordVars = 0, fixedEnd = h.end;
+    for (const auto& v : h.vars)
+        if (h.isRecord(v)) {
+            recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
+            ++recordVars;
+        } else {
+            if (v.begin < fixedEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
+                                                      v.name + "' overlaps the one before");
+            fixedEnd = v.begin + bytesPerRecord(v);
+        }
+    uint64_t recordEnd = fixedEnd;
+    for (const auto& v : h.vars) {
+        const uint64_t size = bytesPerRecord(v), padded = (size + 3) / 4 * 4;
+        const bool record = h.isRecord(v);
+        // vsize saturates for variables over 4 GiB: only smaller ones are compared.
+        if ((padded < 0xFFFFFFFCu && v.vsize != padded && !(recordVars == 1 && record && v.vsize == size)) ||
+            (record && v.begin < recordEnd))
+            throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" + v.name +
+                              "' has an inconsistent size or offset");
+        if (record) recordEnd = v.begin + size;
+        uint64_t end = v.begin + size;
+        if (record)
+            end = h.numRecs == 0 ? v.begin
+                                 : v.begin + mul(h.numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
+        if (end > m.size || end < v.begin)
+            throw FormatError(path + ": truncated Exodus II file: variable '" + v.name + "' needs " +
+                              std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
+    }
+}
+
+void checkExodusSchema(const std::string& path, const Mapping& m, const Header& h);
 
 }  // namespace
 
@@ -118,92 +202,9 @@ void checkExodusFile(const std::string& path) {
     const int version = m.data[3];
     if (std::memcmp(m.data, "CDF", 3) != 0 || (version != 1 && version != 2 && version != 5))
         throw FormatError(path + ": not an Exodus II file (neither NetCDF nor HDF5)");
-
-    // Header.
-    Cursor c(m, path, version);
-    uint64_t numRecs = c.count();
-    if (numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) numRecs = 0;  // streaming
-    Dims dims;
-    uint64_t tag = c.u32(), n = c.count();
-    if (!(tag == 0 && n == 0)) {
-        if (tag != 0x0A) throw FormatError(path + ": malformed Exodus II (NetCDF) dimension list");
-        for (uint64_t i = 0; i < n; ++i) {
-            std::string name = c.name();
-            dims.emplace_back(name, c.count());
-        }
-    }
-    skipAttributes(c, path);
-    std::vector<Variable> vars;
-    tag = c.u32();
-    n = c.count();
-    if (!(tag == 0 && n == 0) && tag != 0x0B)
-        throw FormatError(path + ": malformed Exodus II (NetCDF) variable list");
-    for (uint64_t i = 0; tag == 0x0B && i < n; ++i) {
-        Variable v;
-        v.name = c.name();
-        for (uint64_t k = 0, nd = c.count(); k < nd; ++k) {
-            uint64_t id = c.count();
-            if (id >= dims.size()) throw FormatError(path + ": variable '" + v.name + "' has a bad dimension");
-            v.dims.push_back(id);
-        }
-        skipAttributes(c, path);
-        v.type = c.u32();
-        if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
-        v.vsize = c.count();
-        v.begin = c.offset();
-        vars.push_back(std::move(v));
-    }
-
-    // Every variable's data inside the file. A record variable's first dimension is
-    // the unlimited one (length 0); its records interleave with the other ones'.
-    auto isRecord = [&](const Variable& v) { return !v.dims.empty() && dims[v.dims[0]].second == 0; };
-    auto bytesPerRecord = [&](const Variable& v) {
-        uint64_t b = typeSize(v.type);
-        for (size_t k = isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, dims[v.dims[k]].second, path);
-        return b;
-    };
-    uint64_t recordSize = 0, recordVars = 0;
-    for (const auto& v : vars)
-        if (isRecord(v)) {
-            recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
-            ++recordVars;
-        }
-    // Like netCDF's own check: data blocks in variable order, never overlapping;
-    // record variables after all the others.
-    uint64_t fixedEnd = c.pos(), recordEnd = 0;
-    for (const auto& v : vars) {
-        if (isRecord(v)) continue;
-        if (v.begin < fixedEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
-                                                  v.name + "' overlaps the one before");
-        fixedEnd = v.begin + bytesPerRecord(v);
-    }
-    recordEnd = fixedEnd;
-    for (const auto& v : vars) {
-        if (!isRecord(v)) continue;
-        if (v.begin < recordEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
-                                                   v.name + "' overlaps the one before");
-        recordEnd = v.begin + bytesPerRecord(v);
-    }
-    const size_t headerEnd = c.pos();
-    for (const auto& v : vars) {
-        uint64_t size = bytesPerRecord(v);
-        // netCDF refuses a file whose stored sizes disagree with its dimensions (vsize
-        // saturates for variables over 4 GiB, so only smaller ones are compared).
-        const uint64_t padded = (size + 3) / 4 * 4;
-        if ((padded < 0xFFFFFFFCu && v.vsize != padded && !(recordVars == 1 && isRecord(v) && v.vsize == size)) ||
-            v.begin < headerEnd)
-            throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" + v.name +
-                              "' has inconsistent size or offset");
-        uint64_t end = v.begin + size;
-        if (isRecord(v))
-            end = numRecs == 0 ? v.begin
-                               : v.begin + mul(numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
-        if (end > m.size || end < v.begin)
-            throw FormatError(path + ": truncated Exodus II file: variable '" + v.name + "' needs " +
-                              std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
-    }
-
-    checkExodusSchema(path, m, dims, vars, numRecs);
+    const Header header = parseHeader(m, path, version);
+    checkExtents(header, m, path);
+    checkExodusSchema(path, m, header);
 }
 
 namespace {
@@ -218,8 +219,10 @@ int64_t intAt(const Mapping& m, const Variable& v, uint64_t i) {
 
 // The variables vtkExodusIIReader reads by default must exist (it dereferences a null
 // array otherwise), and connectivity must name existing nodes (1-based).
-void checkExodusSchema(const std::string& path, const Mapping& m, const Dims& dims,
-                       const std::vector<Variable>& vars, uint64_t numRecs) {
+void checkExodusSchema(const std::string& path, const Mapping& m, const Header& h) {
+    const Dims& dims = h.dims;
+    const std::vector<Variable>& vars = h.vars;
+    const uint64_t numRecs = h.numRecs;
     auto dim = [&](const std::string& name) {
         for (const auto& [n, length] : dims)
             if (n == name) return length;
@@ -254,10 +257,9 @@ void checkExodusSchema(const std::string& path, const Mapping& m, const Dims& di
     }
     const uint64_t nodes = dim("num_nodes");
     for (const auto& v : vars) {
-        const bool record = !v.dims.empty() && dims[v.dims[0]].second == 0;
-        if (v.name.rfind("connect", 0) != 0 || record || (v.type != 4 && v.type != 10)) continue;
+        if (v.name.rfind("connect", 0) != 0 || h.isRecord(v) || (v.type != 4 && v.type != 10)) continue;
         uint64_t count = 1;
-        for (uint64_t d : v.dims) count *= dims[d].second;  // sizes checked in checkExodusFile
+        for (uint64_t d : v.dims) count *= dims[d].second;  // sizes checked in checkExtents
         for (uint64_t i = 0; i < count; ++i) {
             const int64_t node = intAt(m, v, i);
             if (node < 1 || uint64_t(node) > nodes)

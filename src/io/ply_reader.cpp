@@ -198,8 +198,7 @@ int indexOf(const Element& e, const char* name) {
     return -1;
 }
 
-// Smallest size one item can have: a count larger than the data allows is refused
-// before anything is allocated for it.
+// Smallest size one item can have.
 uint64_t minItemBytes(const Element& e, Encoding encoding) {
     uint64_t n = 0;
     for (const auto& p : e.properties)
@@ -210,6 +209,55 @@ uint64_t minItemBytes(const Element& e, Encoding encoding) {
 }  // namespace
 
 // --- readPly ---------------------------------------------------------------------------
+namespace {
+
+struct Geometry {
+    vtkSmartPointer<vtkPoints> points = vtkSmartPointer<vtkPoints>::New();
+    vtkSmartPointer<vtkFloatArray> normals = vtkSmartPointer<vtkFloatArray>::New();
+    vtkSmartPointer<vtkCellArray> polys = vtkSmartPointer<vtkCellArray>::New();
+};
+
+// Reads all items of `e`, keeping vertex positions/normals and face index lists.
+void readElement(const Element& e, bool isVertex, Body& body, const std::string& path, Geometry& out) {
+    const int xyz[3] = {indexOf(e, "x"), indexOf(e, "y"), indexOf(e, "z")};
+    const int nxyz[3] = {indexOf(e, "nx"), indexOf(e, "ny"), indexOf(e, "nz")};
+    const bool hasNormals = isVertex && nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+    std::vector<double> values(e.properties.size());
+    std::vector<vtkIdType> ids;
+    for (uint64_t item = 0; item < e.count; ++item) {
+        auto fail = [&](const Property& p, const std::string& why) {
+            return FormatError(path + ": PLY element '" + e.name + "' item " + std::to_string(item) + " of " +
+                               std::to_string(e.count) + ", property '" + p.name + "': " + why);
+        };
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+            const Property& p = e.properties[k];
+            if (!p.isList) {
+                if (!body.read(p.type, values[k])) throw fail(p, "truncated or not a number");
+                continue;
+            }
+            double count;
+            if (!body.read(p.countType, count)) throw fail(p, "truncated or not a number");
+            if (count < 0 || count != std::floor(count) || count > double(body.remaining()))
+                throw fail(p, "bad list length " + number(count));
+            const bool keep = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+            ids.clear();
+            for (uint64_t i = 0; i < uint64_t(count); ++i) {
+                double v;
+                if (!body.read(p.type, v)) throw fail(p, "truncated or not a number");
+                if (keep && (v < 0 || v != std::floor(v) || v > 9.0e15)) throw fail(p, "bad vertex index " + number(v));
+                if (keep) ids.push_back(static_cast<vtkIdType>(v));
+            }
+            if (keep && ids.size() >= 3) out.polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
+        }
+        if (isVertex) {
+            out.points->InsertNextPoint(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+            if (hasNormals) out.normals->InsertNextTuple3(values[nxyz[0]], values[nxyz[1]], values[nxyz[2]]);
+        }
+    }
+}
+
+}  // namespace
+
 vtkSmartPointer<vtkPolyData> readPly(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
@@ -222,61 +270,23 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path) {
         indexOf(*vertex, "z") < 0)
         throw FormatError(path + ": the PLY file has no vertex element with x, y, z properties");
 
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    auto normals = vtkSmartPointer<vtkFloatArray>::New();
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    Geometry geometry;
+    geometry.normals->SetName("Normals");
+    geometry.normals->SetNumberOfComponents(3);
     Body body(bytes, header.dataStart, header.encoding);
-
     for (const Element& e : header.elements) {
+        // A count the rest of the file cannot hold is refused before anything is allocated.
         const uint64_t need = minItemBytes(e, header.encoding);
         if (need > 0 && e.count > body.remaining() / need)
-            throw FormatError(path + ": truncated PLY: the header declares " + std::to_string(e.count) +
-                              " '" + e.name + "' items, more than the rest of the file can hold");
-        const bool isVertex = &e == &*vertex;
-        const int xyz[3] = {indexOf(e, "x"), indexOf(e, "y"), indexOf(e, "z")};
-        const int nxyz[3] = {indexOf(e, "nx"), indexOf(e, "ny"), indexOf(e, "nz")};
-        const bool hasNormals = isVertex && nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
-        std::vector<double> values(e.properties.size());
-        std::vector<vtkIdType> ids;
-        for (uint64_t item = 0; item < e.count; ++item) {
-            auto fail = [&](const Property& p, const std::string& why) {
-                return FormatError(path + ": PLY element '" + e.name + "' item " + std::to_string(item) +
-                                   " of " + std::to_string(e.count) + ", property '" + p.name + "': " + why);
-            };
-            for (size_t k = 0; k < e.properties.size(); ++k) {
-                const Property& p = e.properties[k];
-                if (!p.isList) {
-                    if (!body.read(p.type, values[k])) throw fail(p, "truncated or not a number");
-                    continue;
-                }
-                double count;
-                if (!body.read(p.countType, count)) throw fail(p, "truncated or not a number");
-                if (count < 0 || count != std::floor(count) || count > double(body.remaining()))
-                    throw fail(p, "bad list length " + number(count));
-                const bool keep = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
-                ids.clear();
-                for (int i = 0; i < int(count); ++i) {
-                    double v;
-                    if (!body.read(p.type, v)) throw fail(p, "truncated or not a number");
-                    if (keep && (v < 0 || v != std::floor(v) || v > 9.0e15))
-                        throw fail(p, "bad vertex index " + number(v));
-                    if (keep) ids.push_back(static_cast<vtkIdType>(v));
-                }
-                if (keep && ids.size() >= 3) polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
-            }
-            if (isVertex) {
-                points->InsertNextPoint(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
-                if (hasNormals) normals->InsertNextTuple3(values[nxyz[0]], values[nxyz[1]], values[nxyz[2]]);
-            }
-        }
+            throw FormatError(path + ": truncated PLY: the header declares " + std::to_string(e.count) + " '" +
+                              e.name + "' items, more than the rest of the file can hold");
+        readElement(e, &e == &*vertex, body, path, geometry);
     }
 
     auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points);
-    poly->SetPolys(polys);
-    if (normals->GetNumberOfTuples() > 0) poly->GetPointData()->SetNormals(normals);
+    poly->SetPoints(geometry.points);
+    poly->SetPolys(geometry.polys);
+    if (geometry.normals->GetNumberOfTuples() > 0) poly->GetPointData()->SetNormals(geometry.normals);
     return poly;
 }
 

@@ -112,6 +112,7 @@ vtkSmartPointer<vtkPolyData> triangulate(vtkPolyData* data, VtkMessageTrap& trap
 
 vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
                                             const std::string& where) {
+    VtkMessageTrap::Active active(trap);
     trap.clear();
     // (1) check, (2) surface per block
     std::vector<vtkSmartPointer<vtkPolyData>> parts;

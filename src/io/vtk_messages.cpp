@@ -12,14 +12,19 @@
 #include <vtkOutputWindow.h>
 
 #include <algorithm>
+#include <iterator>
 #include <mutex>
+#include <vector>
 
 namespace flowsurf::io::detail {
 
 namespace {
 
-// The trap collecting messages on this thread (innermost if nested).
-thread_local VtkMessageTrap* tCurrentTrap = nullptr;
+// Traps with an Active scope on this thread; the last one collects. A stack rather
+// than a pointer, so scopes of different traps may end in any order.
+thread_local std::vector<VtkMessageTrap*> tActive;
+
+VtkMessageTrap* currentTrap() { return tActive.empty() ? nullptr : tActive.back(); }
 
 // Messages from objects nobody observes (parsers and helpers created inside VTK
 // readers) go to the global output window: route them to this thread's trap, and
@@ -31,15 +36,15 @@ public:
 
     void DisplayText(const char* text) override { forward(text, &vtkOutputWindow::DisplayText); }
     void DisplayErrorText(const char* text) override {
-        if (tCurrentTrap) tCurrentTrap->addError(text);
+        if (VtkMessageTrap* trap = currentTrap()) trap->addError(text);
         else forward(text, &vtkOutputWindow::DisplayErrorText);
     }
     void DisplayWarningText(const char* text) override {
-        if (tCurrentTrap) tCurrentTrap->addWarning(text);
+        if (VtkMessageTrap* trap = currentTrap()) trap->addWarning(text);
         else forward(text, &vtkOutputWindow::DisplayWarningText);
     }
     void DisplayGenericWarningText(const char* text) override {
-        if (tCurrentTrap) tCurrentTrap->addWarning(text);
+        if (VtkMessageTrap* trap = currentTrap()) trap->addWarning(text);
         else forward(text, &vtkOutputWindow::DisplayGenericWarningText);
     }
     void DisplayDebugText(const char* text) override {
@@ -50,18 +55,18 @@ public:
 
 private:
     void forward(const char* text, void (vtkOutputWindow::*display)(const char*)) {
-        if (!tCurrentTrap && previous) (previous.Get()->*display)(text);
+        if (!currentTrap() && previous) (previous.Get()->*display)(text);
     }
 };
 vtkStandardNewMacro(CapturingOutputWindow);
 
-// The capturing window is installed while at least one trap exists (any thread).
+// The capturing window is installed while at least one Active scope runs (any thread).
 // VTK also logs every unobserved error through vtkLogger, which prints to stderr on its
 // own; its stderr verbosity is lowered for the same period. vtkLogger has no getter
 // for it: the cutoff over all outputs is restored, capped at the default (INFO) so a
 // verbose log file elsewhere never makes the terminal noisier than before.
 std::mutex gWindowMutex;
-int gActiveTraps = 0;
+int gActiveScopes = 0;
 vtkSmartPointer<CapturingOutputWindow> gWindow;
 vtkLogger::Verbosity gPreviousStderrVerbosity = vtkLogger::VERBOSITY_INFO;
 
@@ -141,15 +146,10 @@ std::string cleanVtkMessage(const char* text) {
     return printable(trim(s));
 }
 
-VtkMessageTrap::VtkMessageTrap() {
-    callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
-    callback_->SetCallback(onVtkEvent);
-    callback_->SetClientData(this);
-    outerTrap_ = tCurrentTrap;
-    tCurrentTrap = this;
-
+VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : trap_(&trap) {
+    tActive.push_back(trap_);
     std::lock_guard<std::mutex> lock(gWindowMutex);
-    if (gActiveTraps++ == 0) {
+    if (gActiveScopes++ == 0) {
         gWindow = vtkSmartPointer<CapturingOutputWindow>::New();
         gWindow->previous = vtkOutputWindow::GetInstance();
         vtkOutputWindow::SetInstance(gWindow);
@@ -159,17 +159,27 @@ VtkMessageTrap::VtkMessageTrap() {
     }
 }
 
-VtkMessageTrap::~VtkMessageTrap() {
-    for (auto& [object, tag] : observed_)
-        if (object) object->RemoveObserver(tag);
-    tCurrentTrap = outerTrap_;
-
+VtkMessageTrap::Active::~Active() {
+    // The most recent entry for this trap (scopes of one trap nest on a thread).
+    auto it = std::find(tActive.rbegin(), tActive.rend(), trap_);
+    if (it != tActive.rend()) tActive.erase(std::next(it).base());
     std::lock_guard<std::mutex> lock(gWindowMutex);
-    if (--gActiveTraps == 0) {
+    if (--gActiveScopes == 0) {
         vtkOutputWindow::SetInstance(gWindow->previous);
         gWindow = nullptr;
         vtkLogger::SetStderrVerbosity(gPreviousStderrVerbosity);
     }
+}
+
+VtkMessageTrap::VtkMessageTrap() {
+    callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
+    callback_->SetCallback(onVtkEvent);
+    callback_->SetClientData(this);
+}
+
+VtkMessageTrap::~VtkMessageTrap() {
+    for (auto& [object, tag] : observed_)
+        if (object) object->RemoveObserver(tag);
 }
 
 void VtkMessageTrap::watch(vtkObject* object) {

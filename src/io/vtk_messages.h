@@ -1,9 +1,12 @@
 // flowsurf — turning VTK's error reports into exceptions (private to src/io).
 // VTK readers never throw: they report through vtkErrorMacro and return partial or
-// empty output. A VtkMessageTrap collects those reports for the duration of one read —
-// from observers on the objects we create, and from a capturing output window for
-// objects created inside VTK — so nothing reaches the terminal and the first error
-// becomes a FormatError naming the file.
+// empty output. A VtkMessageTrap collects those reports — from observers on the
+// objects we create, and, while a VtkMessageTrap::Active scope runs on a thread, from
+// a capturing output window for objects created inside VTK — so nothing reaches the
+// terminal and the first error becomes a FormatError naming the file.
+// A trap may live long (a lazily read series keeps one per file) and be used from a
+// worker thread: VTK output is captured only during the Active scopes, on the thread
+// that runs them, and scopes may end in any order.
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -15,13 +18,24 @@
 
 class vtkObject;
 class vtkCallbackCommand;
-class vtkOutputWindow;
 
 namespace flowsurf::io::detail {
 
 class VtkMessageTrap {
 public:
-    // Installs the capturing output window for this thread until destruction.
+    // Routes VTK's global output (and silences vtkLogger's stderr) to `trap` on this
+    // thread for the scope's lifetime. Wrap every block of VTK calls made for a trap.
+    class Active {
+    public:
+        explicit Active(VtkMessageTrap& trap);
+        ~Active();
+        Active(const Active&) = delete;
+        Active& operator=(const Active&) = delete;
+
+    private:
+        VtkMessageTrap* trap_;
+    };
+
     VtkMessageTrap();
     ~VtkMessageTrap();
     VtkMessageTrap(const VtkMessageTrap&) = delete;
@@ -49,8 +63,6 @@ private:
     // Weak: a filter (and the data it holds) must not outlive its use because it is
     // watched; observers are removed here only from objects still alive.
     std::vector<std::pair<vtkWeakPointer<vtkObject>, unsigned long>> observed_;
-    vtkSmartPointer<vtkOutputWindow> previousWindow_;
-    VtkMessageTrap* outerTrap_ = nullptr;
 };
 
 // "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".

@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "io/exodus_check.h"
 #include "io/legacy_check.h"
+#include "io/obj_reader.h"
 #include "io/ply_reader.h"
 #include "io/xml_check.h"
 
@@ -13,7 +14,6 @@
 #include <vtkGenericEnSightReader.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
-#include <vtkOBJReader.h>
 #include <vtkOpenFOAMReader.h>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -123,6 +123,7 @@ public:
     const std::vector<double>& times() const override { return times_; }
 
     vtkSmartPointer<vtkDataObject> readStep(size_t index) override {
+        VtkMessageTrap::Active active(trap_);
         trap_.clear();
         if (times_.empty()) reader_->Update();
         else reader_->UpdateTimeStep(times_.at(index));
@@ -143,7 +144,7 @@ private:
     std::vector<double> times_;
 };
 
-// A data object read without a VTK reader (PLY): one step, already in memory.
+// A data object read without a VTK reader (PLY, OBJ): one step, already in memory.
 class ReadySource : public StepSource {
 public:
     ReadySource(vtkSmartPointer<vtkDataObject> data, std::string format)
@@ -321,6 +322,7 @@ std::string stepLabel(const std::string& path, const StepSource& source, size_t 
 
 // --- openSource ------------------------------------------------------------------------
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap) {
+    VtkMessageTrap::Active active(trap);
     const std::string ext = lowerExtension(path);
     const FormatEntry* entry = nullptr;
     for (const auto& f : kFormats)
@@ -342,7 +344,7 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     }
     if (ext == ".vtk") return openLegacy(path, trap);
     if (ext == ".ply") return std::make_unique<ReadySource>(readPly(path), name);
-    if (ext == ".obj") return makeSource(readerFor<vtkOBJReader>(path), path, name, trap);
+    if (ext == ".obj") return std::make_unique<ReadySource>(readObj(path), name);
     if (ext == ".stl") {
         checkBinaryStlSize(path);
         return makeSource(readerFor<vtkSTLReader>(path), path, name, trap);

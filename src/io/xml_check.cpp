@@ -98,6 +98,67 @@ uint64_t minimumWords(vtkXMLDataElement* e) {
     return uint64_t(std::max<int64_t>(0, count));
 }
 
+// How the file stores compressed arrays (from the root and AppendedData elements).
+struct Layout {
+    size_t headerSize = 4;  // header_type UInt32 or UInt64
+    bool bigEndian = false;
+    bool appendedBase64 = true;
+    int64_t appendedStart = 0;
+    uint64_t fileSize = 0;
+};
+
+uint64_t saturatingMul(uint64_t a, uint64_t b) {
+    uint64_t r;
+    return __builtin_mul_overflow(a, b, &r) ? ~uint64_t(0) : r;
+}
+
+// Header: block count, block size, last block size, compressed size of each block.
+void checkArray(vtkXMLDataElement* e, const Layout& layout, std::ifstream& in, const std::string& path) {
+    const char* format = e->GetAttribute("format");
+    int64_t pos;
+    bool base64 = true;
+    if (std::strcmp(format, "appended") == 0) {
+        pos = layout.appendedStart + intAttribute(e, "offset", 0);
+        base64 = layout.appendedBase64;
+    } else if (std::strcmp(format, "binary") == 0) {
+        // Inline data starts after the start tag's '>' (as vtkXMLDataParser finds it).
+        in.clear();
+        in.seekg(e->GetXMLByteIndex());
+        in.ignore(std::numeric_limits<std::streamsize>::max(), '>');
+        pos = in.tellg();
+    } else {
+        return;  // ascii
+    }
+    const char* name = e->GetAttribute("Name");
+    const std::string what = path + ": compressed array '" + (name ? name : "?") + "'";
+    const size_t h = layout.headerSize;
+    auto headerInt = [&](const std::string& bytes, size_t i) {
+        uint64_t v = 0;
+        for (size_t b = 0; b < h; ++b)
+            v = (v << 8) | static_cast<unsigned char>(bytes[i * h + (layout.bigEndian ? b : h - 1 - b)]);
+        return v;
+    };
+    std::string bytes = headerBytes(in, pos, h, base64);
+    if (bytes.empty()) throw FormatError(what + " has a truncated or unreadable header");
+    const uint64_t blocks = headerInt(bytes, 0);
+    if (blocks + 3 > layout.fileSize / h)
+        throw FormatError(what + " declares " + std::to_string(blocks) +
+                          " blocks, more than the file can hold (corrupt header)");
+    bytes = headerBytes(in, pos, h * (3 + blocks), base64);
+    if (bytes.empty()) throw FormatError(what + " has a truncated header");
+    const uint64_t blockSize = headerInt(bytes, 1), lastSize = headerInt(bytes, 2);
+    uint64_t compressed = 0;
+    for (uint64_t b = 0; b < blocks && compressed <= layout.fileSize; ++b) compressed += headerInt(bytes, 3 + b);
+    const uint64_t room = layout.fileSize - std::min<uint64_t>(layout.fileSize, uint64_t(pos));
+    if ((blocks > 0 && (blockSize == 0 || lastSize > blockSize)) || compressed > room)
+        throw FormatError(what + " has an inconsistent block table (corrupt header)");
+    const uint64_t total = blocks == 0 ? 0 : saturatingMul(blocks - 1, blockSize) + (lastSize ? lastSize : blockSize);
+    const uint64_t need = saturatingMul(minimumWords(e), wordSize(e->GetAttribute("type")));
+    if (total < need)
+        throw FormatError(what + " holds " + std::to_string(total) + " bytes, at least " + std::to_string(need) +
+                          " needed (corrupt header)");
+}
+
 }  // namespace
 
 void checkXmlCompressionHeaders(const std::string& path) {
@@ -108,64 +169,21 @@ void checkXmlCompressionHeaders(const std::string& path) {
     vtkXMLDataElement* root = parser->GetRootElement();
     const char* compressor = root ? root->GetAttribute("compressor") : nullptr;
     if (!compressor || !*compressor) return;
+    Layout layout;
     const char* headerType = root->GetAttribute("header_type");
-    const size_t headerSize = headerType && std::strcmp(headerType, "UInt64") == 0 ? 8 : 4;
+    layout.headerSize = headerType && std::strcmp(headerType, "UInt64") == 0 ? 8 : 4;
     const char* byteOrder = root->GetAttribute("byte_order");
-    const bool bigEndian = byteOrder && std::strcmp(byteOrder, "BigEndian") == 0;
+    layout.bigEndian = byteOrder && std::strcmp(byteOrder, "BigEndian") == 0;
     vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
     const char* encoding = appended ? appended->GetAttribute("encoding") : nullptr;
-    const bool appendedBase64 = !encoding || std::strcmp(encoding, "raw") != 0;
-    const uint64_t fileSize = std::filesystem::file_size(path);
+    layout.appendedBase64 = !encoding || std::strcmp(encoding, "raw") != 0;
+    layout.appendedStart = parser->GetAppendedDataPosition();
+    layout.fileSize = std::filesystem::file_size(path);
     std::ifstream in(path, std::ios::binary);
-
     forEachElement(root, [&](vtkXMLDataElement* e) {
-        const char* format = e->GetAttribute("format");
-        if (!format || (std::strcmp(e->GetName(), "DataArray") != 0 && std::strcmp(e->GetName(), "Array") != 0))
-            return;
-        int64_t pos;
-        bool base64;
-        if (std::strcmp(format, "appended") == 0) {
-            const char* offset = e->GetAttribute("offset");
-            pos = parser->GetAppendedDataPosition() + (offset ? std::strtoll(offset, nullptr, 10) : 0);
-            base64 = appendedBase64;
-        } else if (std::strcmp(format, "binary") == 0) {
-            // Inline data starts after the start tag's '>' (as vtkXMLDataParser finds it).
-            in.clear();
-            in.seekg(e->GetXMLByteIndex());
-            in.ignore(std::numeric_limits<std::streamsize>::max(), '>');
-            pos = in.tellg();
-            base64 = true;
-        } else {
-            return;
-        }
-        const char* name = e->GetAttribute("Name");
-        const std::string what = path + ": compressed array '" + (name ? name : "?") + "'";
-        // Header: block count, block size, last block size, compressed size per block.
-        auto headerInt = [&](const std::string& bytes, size_t i) {
-            uint64_t v = 0;
-            for (size_t b = 0; b < headerSize; ++b)
-                v = (v << 8) | static_cast<unsigned char>(bytes[i * headerSize + (bigEndian ? b : headerSize - 1 - b)]);
-            return v;
-        };
-        std::string bytes = headerBytes(in, pos, headerSize, base64);
-        if (bytes.empty()) throw FormatError(what + " has a truncated or unreadable header");
-        const uint64_t blocks = headerInt(bytes, 0);
-        if (blocks + 3 > fileSize / headerSize)
-            throw FormatError(what + " declares " + std::to_string(blocks) +
-                              " blocks, more than the file can hold (corrupt header)");
-        bytes = headerBytes(in, pos, headerSize * (3 + blocks), base64);
-        if (bytes.empty()) throw FormatError(what + " has a truncated header");
-        const uint64_t blockSize = headerInt(bytes, 1), lastSize = headerInt(bytes, 2);
-        uint64_t compressed = 0;
-        for (uint64_t b = 0; b < blocks; ++b) compressed += headerInt(bytes, 3 + b);
-        const uint64_t room = fileSize - std::min<uint64_t>(fileSize, uint64_t(pos));
-        if ((blocks > 0 && (blockSize == 0 || lastSize > blockSize)) || compressed > room)
-            throw FormatError(what + " has an inconsistent block table (corrupt header)");
-        const uint64_t total = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastSize ? lastSize : blockSize);
-        const uint64_t need = minimumWords(e) * wordSize(e->GetAttribute("type"));
-        if (total < need)
-            throw FormatError(what + " holds " + std::to_string(total) + " bytes, at least " +
-                              std::to_string(need) + " needed (corrupt header)");
+        const char* element = e->GetName();
+        if (e->GetAttribute("format") && (std::strcmp(element, "DataArray") == 0 || std::strcmp(element, "Array") == 0))
+            checkArray(e, layout, in, path);
     });
 }
 

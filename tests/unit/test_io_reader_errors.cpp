@@ -178,6 +178,29 @@ TEST(IoReaders, MalformedPlyHeadersAreFormatErrors) {
     }
 }
 
+TEST(IoReaders, MalformedObjNamesTheLine) {
+    ScratchDir dir;
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {tri + "f 1 2 99\n", "line 4: vertex index 99 is out of range"},
+        {tri + "f 0 1 2\n", "line 4: vertex index 0"},
+        {tri + "f -1 -2 -9\n", "line 4: vertex index -9"},
+        {tri + "f 1 2\n", "at least 3 vertices"},
+        {"v 0 0 0\nv 1 0\n", "line 2: a vertex needs three numbers"},
+        {"v a b c\n", "line 1"},
+        {tri + "f 1 x 3\n", "'x' is not a vertex index"},
+    };
+    int i = 0;
+    for (const auto& [text, why] : cases) {
+        const std::string name = "bad" + std::to_string(i++) + ".obj";
+        writeText(dir.file(name), text);
+        expectReadError<FormatError>(dir.file(name), name, why);
+    }
+    // Texture and normal references are ignored, even dangling ones (VTK 9.1 crashed).
+    writeText(dir.file("refs.obj"), tri + "vt 0 0\nf 1/1 2/7/3 -1//9\n");
+    EXPECT_EQ(io::readDataset(dir.file("refs.obj")).steps[0].mesh.triangleCount(), 1u);
+}
+
 TEST(IoReaders, GarbageBytesAreFormatError) {
     ScratchDir dir;
     std::string garbage(4096, '\0');

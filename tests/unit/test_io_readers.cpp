@@ -170,7 +170,8 @@ TEST(IoReaders, LegacyVtkAsciiBinaryAndUnstructured) {
 
 TEST(IoReaders, ObjStlPlyGeometry) {
     ScratchDir dir;
-    writeText(dir.file("quad.obj"), "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    writeText(dir.file("quad.obj"), "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
+                                    "f -4//1 -3//1 -2//1 -1//1\n");  // relative indices
     writeText(dir.file("quad.stl"),
               "solid t\n"
               "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 1 1 0\n"
