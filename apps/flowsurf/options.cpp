@@ -140,6 +140,8 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         p.isa.warp = s == "mesh" ? methods::IsaWarp::Mesh : methods::IsaWarp::Pixel;
     }, "ISA texture advection: pixel (mesh interpolated per pixel, default) or mesh (draw the R x R grid)")
         ->group(gMethod)->check(CLI::IsMember({"pixel", "mesh"}));
+    cmd.add_flag("--cull-back-faces", p.common.cullBackFaces,
+                 "Skip back-facing triangles (closed, outward-oriented surfaces only; default off)")->group(gMethod);
     cmd.add_flag("--edge-mask", p.ibfvs.edgeMask, "IBFVS silhouette edge mask over the image [L §IV-E.2]")
         ->group(gMethod);
     cmd.add_option_function<std::string>("--on-camera-move", [&p](const std::string& s) {

@@ -177,3 +177,17 @@ TEST_P(CameraMoveRemedy, TranslateFollowsTheSurface) {
     EXPECT_GT(freeze, 0.8);
     EXPECT_LT(none, 0.5);
 }
+
+// Back-face culling on a closed, outward-oriented surface changes nothing visible: the
+// surface mask and the texture equal those without culling.
+TEST(IbfvsBoundary, BackFaceCullingKeepsTheVisibleSurface) {
+    core::Dataset d = core::makeBuiltin("builtin:tori");
+    const core::Viewport vp{160, 100};
+    core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.6f, 1.0f});
+    methods::MethodParams p;
+    test::Rendered plain = test::renderScene(d, "ibfvs", p, vp, cam, 10);
+    p.common.cullBackFaces = true;
+    test::Rendered culled = test::renderScene(d, "ibfvs", p, vp, cam, 10);
+    EXPECT_EQ(plain.depth, culled.depth);
+    EXPECT_EQ(plain.flow, culled.flow);
+}

@@ -45,6 +45,11 @@ struct CommonParams {
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
     CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
+    // Skip back-facing triangles in the surface passes: cheaper for closed, consistently
+    // oriented surfaces (counter-clockwise seen from outside); wrong for open CFD walls,
+    // which are seen from both sides, so off by default. Off-screen triangles are always
+    // clipped by the rasteriser before they cost fragment work.
+    bool cullBackFaces = false;
 };
 
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).

@@ -4,7 +4,7 @@
 
 namespace flowsurf::methods {
 
-SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition)
+SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces)
     : viewport_(viewport),
       velocity_(GL_RGBA32F, viewport.width, viewport.height, GL_LINEAR),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
@@ -12,7 +12,8 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       fbo_(gl::Framebuffer::create()),
       program_({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : ""),
-      targets_(withPosition ? 3 : 2) {
+      targets_(withPosition ? 3 : 2),
+      cullBackFaces_(cullBackFaces) {
     fbo_.attach(GL_COLOR_ATTACHMENT0, velocity_);
     fbo_.attach(GL_COLOR_ATTACHMENT1, shade_);
     if (withPosition) {
@@ -32,13 +33,17 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // open CFD surfaces are seen from both sides
+    if (cullBackFaces_) glEnable(GL_CULL_FACE);  // see CommonParams::cullBackFaces
+    else glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     program_.use();
     glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     surface.draw();
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
 }
 
 }  // namespace flowsurf::methods

@@ -13,7 +13,7 @@ namespace flowsurf::methods {
 
 class SurfaceGBuffer {
 public:
-    SurfaceGBuffer(const core::Viewport& viewport, bool withPosition);
+    SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false);
     void render(const SurfaceGpu& surface, const core::Camera& camera);
 
     const gl::Texture2D& velocity() const { return velocity_; }
@@ -27,6 +27,7 @@ private:
     gl::Framebuffer fbo_;
     gl::Program program_;
     int targets_;
+    bool cullBackFaces_;
 };
 
 }  // namespace flowsurf::methods

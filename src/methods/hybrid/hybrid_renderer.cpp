@@ -7,7 +7,7 @@ namespace flowsurf::methods::hybrid {
 HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      seeds_(viewport, true),
+      seeds_(viewport, true, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
       overlay_(params.common),
       lic_(GL_R32F, viewport.width, viewport.height, GL_NEAREST),

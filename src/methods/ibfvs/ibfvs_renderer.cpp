@@ -46,7 +46,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2]
     timer_.begin("texture advection");
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_[source_],
-                            flowFbo_[target], params_.ibfvs.flowBackground);
+                            flowFbo_[target], params_.ibfvs.flowBackground, c.cullBackFaces);
 
     // (3) noise injection clipped to the surface [L eq. 9, §IV-G]
     timer_.begin("noise blend");

@@ -9,7 +9,7 @@ PolygonAdvection::PolygonAdvection()
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
-                             const gl::Framebuffer& target, float flowBackground) const {
+                             const gl::Framebuffer& target, float flowBackground, bool cullBackFaces) const {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
@@ -20,7 +20,10 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // open surfaces are seen from both sides
+    if (cullBackFaces) glEnable(GL_CULL_FACE);  // cost ~ N: halve it on closed surfaces
+    else glDisable(GL_CULL_FACE);                // open surfaces are seen from both sides
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     program_.use();
     glm::mat4 view = camera.view();
     glm::mat4 viewProj = camera.projection(viewport.aspect()) * view;
@@ -32,6 +35,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glBindTextureUnit(0, prevFlow.id());
     surface.draw();
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
 }
 
 }  // namespace flowsurf::methods::ibfvs

@@ -17,7 +17,7 @@ public:
     // `prevCamera` projects the pathline points into the previous F_a.
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
-               const gl::Framebuffer& target, float flowBackground) const;
+               const gl::Framebuffer& target, float flowBackground, bool cullBackFaces) const;
 
 private:
     gl::Program program_;

@@ -6,7 +6,8 @@ namespace flowsurf::methods::isa {
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      velocityImage_{SurfaceGBuffer(viewport, false), SurfaceGBuffer(viewport, false)},
+      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces),
+                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(params.isa.gridRes, params.isa.warp),
