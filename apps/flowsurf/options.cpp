@@ -159,9 +159,9 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     }, "Hybrid LIC kernel: box, exponential, gaussian (default), hann")
         ->group(gMethod)->check(CLI::IsMember({"box", "exponential", "gaussian", "hann"}));
     cmd.add_option_function<std::string>("--integrator", [&p](const std::string& s) {
-        p.hybrid.integrator = s == "euler" ? methods::Integrator::Euler
-                            : s == "rk4" ? methods::Integrator::Rk4 : methods::Integrator::Rk2;
-    }, "Hybrid particle integrator: euler, rk2 (default), rk4")
+        p.hybrid.integrator = s == "rk2" ? methods::Integrator::Rk2
+                            : s == "rk4" ? methods::Integrator::Rk4 : methods::Integrator::Euler;
+    }, "Hybrid particle integrator: euler (default, as in [W]), rk2, rk4")
         ->group(gMethod)->check(CLI::IsMember({"euler", "rk2", "rk4"}));
     cmd.add_option("--noise-size", p.hybrid.noiseSize, "Hybrid solid noise texels per side (64 or 128)")
         ->group(gMethod)->capture_default_str()->check(CLI::IsMember({64, 128}));

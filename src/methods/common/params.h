@@ -78,7 +78,7 @@ enum class Integrator { Euler, Rk2, Rk4 };
 struct HybridParams {
     int filterLength = 31;            // L: samples along the streamline, [W] 25..70
     LicKernel kernel = LicKernel::Gaussian;
-    Integrator integrator = Integrator::Rk2;
+    Integrator integrator = Integrator::Euler;  // as in [W]; RK2/RK4 on request
     int noiseSize = 64;               // solid noise texels per side: 64 or 128
     float depthTolerance = 0.03f;     // particle vs visible layer, fraction of depth range
 };
