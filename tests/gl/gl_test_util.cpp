@@ -89,17 +89,15 @@ float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int d
     return 200.0f;
 }
 
-float columnCorrelation(const Rendered& r, int a, int b, int y0, int y1) {
+double pearson(const std::vector<double>& a, const std::vector<double>& b) {
     double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-    int n = 0;
-    for (int y = y0; y < y1; ++y) {
-        double u = r.f(a, y), v = r.f(b, y);
-        sa += u; sb += v; saa += u * u; sbb += v * v; sab += u * v;
-        ++n;
+    const double n = double(a.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        sa += a[i]; sb += b[i]; saa += a[i] * a[i]; sbb += b[i] * b[i]; sab += a[i] * b[i];
     }
     double cov = sab / n - sa / n * sb / n;
     double va = saa / n - sa / n * sa / n, vb = sbb / n - sb / n * sb / n;
-    return float(cov / std::sqrt(std::max(va * vb, 1e-20)));
+    return cov / std::sqrt(std::max(va * vb, 1e-20));
 }
 
 float streakOrientation(const Rendered& r, int x, int y, float sigma) {

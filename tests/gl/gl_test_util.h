@@ -31,8 +31,8 @@ core::Camera orthoFront(float height);
 // autocorrelation over the box crosses 0.5 (linearly interpolated between lags).
 float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int dx, int dy);
 
-// Pearson correlation of the columns x=a and x=b over rows y0..y1 of F_a.
-float columnCorrelation(const Rendered& r, int a, int b, int y0, int y1);
+// Pearson correlation of two equally long samples.
+double pearson(const std::vector<double>& a, const std::vector<double>& b);
 
 // Direction of the streaks at (x, y): the minor eigenvector of the structure tensor
 // averaged with a Gaussian of `sigma` pixels; radians in [0, pi).

@@ -22,14 +22,6 @@ methods::MethodParams hybridParams() {
     return p;
 }
 
-double pearson(const std::vector<double>& a, const std::vector<double>& b) {
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-    const double n = double(a.size());
-    for (size_t i = 0; i < a.size(); ++i) {
-        sa += a[i]; sb += b[i]; saa += a[i] * a[i]; sbb += b[i] * b[i]; sab += a[i] * b[i];
-    }
-    return (sab / n - sa / n * sb / n) / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
-}
 
 }  // namespace
 
@@ -96,7 +88,7 @@ TEST(Hybrid, PatternSticksToTheSurfaceUnderCameraRoll) {
                 a.push_back(after[size_t(y) * vp.width + x]);
                 b.push_back(before[size_t(sy) * vp.width + sx]);
             }
-        image = pearson(a, b);
+        image = test::pearson(a, b);
     };
     double hybrid = 0, isa = 0;
     run("hybrid", hybrid);

@@ -152,8 +152,7 @@ TEST_P(CameraMoveRemedy, TranslateFollowsTheSurface) {
         std::vector<float> after = gl::readChannel(m->flowTexture());
         std::vector<float> depth = gl::readDepth(m->surfaceDepth());
         glm::mat4 inv1 = glm::inverse(cam1.viewProjection(1.0f));
-        double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-        int n = 0;
+        std::vector<double> now, then;
         for (int y = 4; y < vp.height - 4; ++y)
             for (int x = 4; x < vp.width - 4; ++x) {
                 float z = depth[size_t(y) * vp.width + x];
@@ -162,11 +161,10 @@ TEST_P(CameraMoveRemedy, TranslateFollowsTheSurface) {
                 glm::vec3 p0 = core::projectToPixels(cam0, vp, glm::vec3(h) / h.w);
                 int px = int(p0.x), py = int(p0.y);
                 if (px < 0 || py < 0 || px >= vp.width || py >= vp.height) continue;
-                double a = after[size_t(y) * vp.width + x], b = before[size_t(py) * vp.width + px];
-                sa += a; sb += b; saa += a * a; sbb += b * b; sab += a * b;
-                ++n;
+                now.push_back(after[size_t(y) * vp.width + x]);
+                then.push_back(before[size_t(py) * vp.width + px]);
             }
-        return (sab / n - sa / n * sb / n) / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+        return test::pearson(now, then);
     };
     double translate = correlationAfterMove(methods::CameraMoveRemedy::Translate);
     double none = correlationAfterMove(methods::CameraMoveRemedy::None);

@@ -158,17 +158,14 @@ TEST(IsaProperties, MeshAndPixelWarpAgree) {
     test::Rendered pixel = test::renderScene(d, "isa", p, vp, cam, 12);
     p.isa.warp = methods::IsaWarp::Mesh;
     test::Rendered mesh = test::renderScene(d, "isa", p, vp, cam, 12);
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-    int n = 0;
+    std::vector<double> a, b;
     for (int y = 0; y < vp.height; ++y)
-        for (int x = 0; x < vp.width; ++x) {
-            if (!pixel.onSurface(x, y)) continue;
-            double a = pixel.f(x, y), b = mesh.f(x, y);
-            sa += a; sb += b; saa += a * a; sbb += b * b; sab += a * b;
-            ++n;
-        }
-    double corr = (sab / n - sa / n * sb / n) /
-                  std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+        for (int x = 0; x < vp.width; ++x)
+            if (pixel.onSurface(x, y)) {
+                a.push_back(pixel.f(x, y));
+                b.push_back(mesh.f(x, y));
+            }
+    double corr = test::pearson(a, b);
     std::printf("mesh vs pixel warp correlation %.3f\n", corr);
     EXPECT_GT(corr, 0.9);
 }
