@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "scene_setup.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace flowsurf::app {
@@ -36,6 +37,15 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
     stream_ = std::make_unique<core::StepStream>(steps, 3, true);
     mapping_ = makeTimeMapping(o, stream_->times());
     field_ = methods::selectField(stream_->meshAt(mapping_.at(0)), o.field, steps.label(0));
+    levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
+}
+
+const methods::TimeLevels* AnimatedSurface::levelsAt(int frame) {
+    if (!stream_) return nullptr;
+    const double perStep = options_.traceDt ? *options_.traceDt : std::abs(mapping_.perFrame);
+    const int halfSteps = std::max(0, (options_.params.hybrid.filterLength - 1) / 2);
+    const methods::TimeLevels& levels = levels_->at(mapping_.at(frame), perStep, halfSteps);
+    return levels.empty() ? nullptr : &levels;
 }
 
 void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& where) {

@@ -5,6 +5,7 @@
 
 #include "core/step_stream.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/time_levels.h"
 #include "options.h"
 
 #include <memory>
@@ -18,6 +19,11 @@ public:
     AnimatedSurface(const RenderOptions& o, core::StepProvider& steps);
     // The surface for frame k (uploaded when the data changed since the last call).
     const methods::SurfaceGpu& at(int frame);
+    // For methods that integrate through time (the hybrid's pathlines, [W §3]): the field
+    // around frame k's data time, over the particles' time window (--trace-dt per step,
+    // default the data time per frame; --filter-length steps). Null for steady data.
+    // Call after at(frame).
+    const methods::TimeLevels* levelsAt(int frame);
     bool unsteady() const { return stream_ != nullptr; }
     double timeAt(int frame) const { return mapping_.at(frame); }
     const std::string& field() const { return field_; }
@@ -32,6 +38,7 @@ private:
     std::unique_ptr<core::StepStream> stream_;
     core::TimeMapping mapping_;
     std::unique_ptr<methods::SurfaceGpu> surface_;
+    std::unique_ptr<methods::TimeLevelSource> levels_;
     size_t uploadedTopology_ = 0;  // step whose triangles surface_ holds
 };
 

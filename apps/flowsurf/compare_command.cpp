@@ -53,7 +53,9 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
         for (int k = 0; k <= o.frames; ++k) {
-            method->renderFrame({&surface.at(k), cameras.at(k), uint32_t(k)});
+            const methods::SurfaceGpu& frameSurface = surface.at(k);
+            method->renderFrame({&frameSurface, cameras.at(k), uint32_t(k),
+                                 method->usesTimeLevels() ? surface.levelsAt(k) : nullptr});
             progress.update(int(m) * (o.frames + 1) + k + 1);
         }
         glFinish();

@@ -109,6 +109,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->group(gData)->check(CLI::PositiveNumber);
     cmd.add_option("--frames-per-step", o.framesPerStep, "Animation frames per data time step")
         ->group(gData)->check(CLI::Range(1, 100000));
+    cmd.add_option_function<double>("--trace-dt", [&o](double dt) { o.traceDt = dt; },
+                                    "Hybrid on a time series: data time per particle step, so the LIC follows "
+                                    "pathlines (default: the data time per frame; 0: streamlines of each "
+                                    "frame's field)")
+        ->group(gData)->check(CLI::NonNegativeNumber);
 
     const std::string gMethod = "Method";
     cmd.add_option("-m,--method", o.method, "Visualization method")

@@ -31,6 +31,7 @@ struct RenderOptions {
     std::optional<std::pair<double, double>> timeRange;  // --time START:END (data time)
     double timePerFrame = 0.0;          // --time-per-frame DT (0: see framesPerStep)
     int framesPerStep = 0;              // --frames-per-step N (0: the range over --frames)
+    std::optional<double> traceDt;      // --trace-dt: hybrid data time per particle step
     int fps = 30;
     int crf = 18;
     bool quiet = false;

@@ -60,7 +60,9 @@ int runRender(const RenderOptions& o) {
     ProgressBar progress("render", total, !o.quiet);
     const auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < total; ++k) {
-        method->renderFrame({&surface.at(k), cameras.at(k), uint32_t(k)});
+        const methods::SurfaceGpu& frameSurface = surface.at(k);
+        method->renderFrame({&frameSurface, cameras.at(k), uint32_t(k),
+                             method->usesTimeLevels() ? surface.levelsAt(k) : nullptr});
         if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
         if (kind == OutputKind::PngSequence)
             io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3,

@@ -4,9 +4,30 @@
 // (eq. 3); positions are never projected back onto the surface. A particle stops where
 // its projection leaves the surface or its depth disagrees with the visible layer (it
 // went behind an occluder, or off an edge), so no streak crosses an occluding edge.
+// For unsteady flow (UNSTEADY) each step also advances the particle's data time, and the
+// velocity is read from the image of that time: pathlines instead of streamlines.
 #include "hybrid/kernels.glsl"
 layout(binding = 0) uniform sampler2D uPosObj;    // RGBA32F seed positions, w = coverage
+#ifdef UNSTEADY
+// Unsteady flow [W §3]: the velocity image per time level, layer j at data time
+// uLevelTime[j] after the frame's (divided by the reference speed); the trilinear lookup
+// is linear in time between levels.
+layout(binding = 1) uniform sampler3D uVelLevels;
+const int kMaxLevels = 9;  // methods::TimeLevelSource::kMaxLevels
+uniform int uLevelCount;
+uniform float uLevelTime[kMaxLevels];  // increasing
+uniform float uTimePerStep;
+uniform float uVelocityScale;
+// Level coordinate (j + fraction) of data time t after the frame's, held at the ends.
+float levelOf(float t) {
+    if (t <= uLevelTime[0]) return 0.0;
+    for (int j = 1; j < uLevelCount; ++j)
+        if (t <= uLevelTime[j]) return float(j - 1) + (t - uLevelTime[j - 1]) / (uLevelTime[j] - uLevelTime[j - 1]);
+    return float(uLevelCount - 1);
+}
+#else
 layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
+#endif
 layout(binding = 2) uniform sampler2D uDepth;     // window depth of the visible layer
 layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
 uniform mat4 uViewProj;
@@ -30,25 +51,37 @@ vec3 project(vec3 p) {
 float linearDepth(float d) {
     return uOrtho != 0 ? uNear + d * (uFar - uNear) : uNear * uFar / (uFar - d * (uFar - uNear));
 }
+// The velocity image at device point s and the particle's data time t after the frame's
+// (unused for steady flow).
+vec4 velocityImage(vec2 s, float t) {
+#ifdef UNSTEADY
+    float z = (levelOf(t) + 0.5) / float(uLevelCount);
+    return texture(uVelLevels, vec3(s, z)) * vec4(vec3(uVelocityScale), 1.0);
+#else
+    return texture(uVelObj, s);
+#endif
+}
 // Velocity at the projection of p; false where p is off the visible surface.
-bool velocityAt(vec3 p, out vec3 v) {
+bool velocityAt(vec3 p, float t, out vec3 v) {
     vec3 s = project(p);
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return false;
-    vec4 vel = texture(uVelObj, s.xy);
+    vec4 vel = velocityImage(s.xy, t);
     if (vel.w < 0.5) return false;
     float visible = texture(uDepth, s.xy).r;
     if (abs(linearDepth(s.z) - linearDepth(visible)) > uDepthTolerance) return false;
     v = vel.xyz / vel.w;
     return true;
 }
-bool stepParticle(inout vec3 p, float h) {
+// One step of length h from data time t to t + dt (a pathline through unsteady data;
+// dt = 0 for steady flow).
+bool stepParticle(inout vec3 p, float h, float t, float dt) {
     vec3 k1, k2, k3, k4;
-    if (!velocityAt(p, k1)) return false;
+    if (!velocityAt(p, t, k1)) return false;
     if (uIntegrator == 0) { p += h * k1; return true; }
-    if (!velocityAt(p + 0.5 * h * k1, k2)) return false;
+    if (!velocityAt(p + 0.5 * h * k1, t + 0.5 * dt, k2)) return false;
     if (uIntegrator == 1) { p += h * k2; return true; }
-    if (!velocityAt(p + 0.5 * h * k2, k3)) return false;
-    if (!velocityAt(p + h * k3, k4)) return false;
+    if (!velocityAt(p + 0.5 * h * k2, t + 0.5 * dt, k3)) return false;
+    if (!velocityAt(p + h * k3, t + dt, k4)) return false;
     p += h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
     return true;
 }
@@ -82,10 +115,16 @@ void main() {
     float h = uOrtho != 0 ? uStepOrtho : uStepPerDist * dist;
     float weight = kernelWeight(uKernel, 0.0);
     float lic = weight * noiseAt(seed.xyz, scales, f);
+#ifdef UNSTEADY
+    float dt = uTimePerStep;
+#else
+    float dt = 0.0;
+#endif
     for (int dir = -1; dir <= 1; dir += 2) {  // backward and forward halves
         vec3 p = seed.xyz;
         for (int i = 1; i <= uHalfLength; ++i) {
-            if (!stepParticle(p, float(dir) * h)) break;
+            // Step i runs from data time (i - 1) dt to i dt, backward in time for dir < 0.
+            if (!stepParticle(p, float(dir) * h, float(dir * (i - 1)) * dt, float(dir) * dt)) break;
             float k = kernelWeight(uKernel, float(i) / float(uHalfLength + 1));
             lic += k * noiseAt(p, scales, f);
             weight += k;

@@ -48,12 +48,27 @@ void StepStream::startPrefetch(size_t index) {
                           [this, index] { return std::make_shared<const SurfaceMesh>(provider_.load(index)); });
 }
 
+bool StepStream::kept(size_t index, size_t keepA, size_t keepB) const {
+    return index == keepA || index == keepB || (haveKeepRange_ && index >= keepLo_ && index <= keepHi_);
+}
+
+void StepStream::keepRange(size_t lo, size_t hi) {
+    FLOWSURF_CHECK(lo <= hi && hi < times_.size());
+    haveKeepRange_ = true;
+    keepLo_ = lo;
+    keepHi_ = hi;
+    // The range, the frame's bracket beside it and one prefetched step.
+    window_ = std::max(window_, hi - lo + 4);
+    evict(last_.a, last_.b);
+    startPrefetch(hi + 1);
+}
+
 void StepStream::evict(size_t keepA, size_t keepB) {
     // Drop the steps farthest behind first: the animation moves forward.
     while (cache_.size() > window_ - (pending_.valid() ? 1 : 0)) {
         auto victim = cache_.end();
         for (auto it = cache_.begin(); it != cache_.end(); ++it)
-            if (it->first != keepA && it->first != keepB) {
+            if (!kept(it->first, keepA, keepB)) {
                 victim = it;
                 break;
             }
@@ -86,7 +101,7 @@ const SurfaceMesh& StepStream::meshAt(double t, bool* changed) {
     haveCurrent_ = true;
     last_ = br;
     evict(br.a, br.b);
-    startPrefetch(br.b + 1);
+    startPrefetch(std::max(br.b, haveKeepRange_ ? keepHi_ : 0) + 1);
     return current_;
 }
 

@@ -26,13 +26,21 @@ public:
     const SurfaceMesh& meshAt(double t, bool* changed = nullptr);
     // The step index whose topology the last mesh has (changes when topology may).
     size_t topologyStep() const { return topologyStep_; }
+    // For methods that read the field over a window of data time around the frame (the
+    // hybrid method's time levels): keeps steps lo..hi resident besides the frame's
+    // bracket (the window grows to fit) and prefetches the step after hi.
+    void keepRange(size_t lo, size_t hi);
+    // Step `index` as loaded (cached within the window). Throws what the provider throws.
+    std::shared_ptr<const SurfaceMesh> stepMesh(size_t index) { return step(index); }
     size_t resident() const { return cache_.size(); }
+    std::string label(size_t index) const { return provider_.label(index); }
     const std::vector<double>& times() const { return times_; }
 
 private:
     std::shared_ptr<const SurfaceMesh> step(size_t index);
     void startPrefetch(size_t index);
     void evict(size_t keepA, size_t keepB);
+    bool kept(size_t index, size_t keepA, size_t keepB) const;
 
     StepProvider& provider_;
     size_t window_;
@@ -45,6 +53,8 @@ private:
     bool haveCurrent_ = false;
     StepBracket last_;
     size_t topologyStep_ = 0;
+    bool haveKeepRange_ = false;
+    size_t keepLo_ = 0, keepHi_ = 0;
 };
 
 }  // namespace flowsurf::core

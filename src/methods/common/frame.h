@@ -6,6 +6,7 @@
 #include "gl/stage_timer.h"
 #include "methods/common/params.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/time_levels.h"
 
 #include <cstdint>
 #include <memory>
@@ -17,6 +18,9 @@ struct FrameInput {
     const SurfaceGpu* surface = nullptr;  // the surface at this frame's data time
     core::Camera camera;
     uint32_t frame = 0;                   // k: the clock of the noise
+    // Unsteady data around this frame's data time, for methods that integrate through
+    // time (usesTimeLevels()); null or empty: the surface's field is used throughout.
+    const TimeLevels* levels = nullptr;
 };
 
 class FlowMethod {
@@ -33,6 +37,9 @@ public:
     virtual const gl::Texture2D& surfaceDepth() const = 0;
     // True if the last renderFrame ran the dynamic case.
     virtual bool lastFrameDynamic() const = 0;
+    // True if the method reads FrameInput::levels (the hybrid's pathlines through
+    // unsteady data); ISA and IBFVS integrate through time frame by frame instead.
+    virtual bool usesTimeLevels() const { return false; }
     gl::StageTimer& timer() { return timer_; }
 
 protected:

@@ -61,6 +61,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     for (size_t i = 0; i < vel.size(); ++i) speed[i] = glm::length(vel[i]);
     colorSpeedMax_ = percentile(speed, 98.0f);
     const float clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(speed, params.speedPercentile);
+    clampSpeed_ = params.normalize ? 0.0f : clampSpeed;
     std::vector<float> interleaved;
     interleaved.reserve(mesh.vertexCount() * 10);
     maxSpeed_ = 0.0f;

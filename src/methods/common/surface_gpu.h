@@ -31,9 +31,16 @@ public:
     void drawEdgesAdjacency() const;
     bool hasEdges() const { return edgeCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
+    // The interleaved vertices (10 floats: position, normal, velocity, speed) and the
+    // triangle indices, for passes that pair the geometry with other per-vertex data.
+    GLuint vertexBuffer() const { return vertices_.id(); }
+    GLuint indexBuffer() const { return indices_.id(); }
+    static constexpr GLsizei kVertexStride = 10 * sizeof(float);
     size_t triangleCount() const { return triangles_; }
     // Largest speed of the advection velocity (after clamping/normalising): sets dt.
     float maxSpeed() const { return maxSpeed_; }
+    // Speed above which vectors were clamped (0: none, or normalised instead).
+    float clampSpeed() const { return clampSpeed_; }
     // Top of the colour map's speed range (98th percentile of the true speed).
     float colorSpeedMax() const { return colorSpeedMax_; }
     const core::Bounds& bounds() const { return bounds_; }
@@ -52,6 +59,7 @@ private:
     size_t edgeCount_ = 0;
     size_t triangles_ = 0;
     float maxSpeed_ = 0.0f;
+    float clampSpeed_ = 0.0f;
     float colorSpeedMax_ = 0.0f;
     core::Bounds bounds_;
     uint64_t generation_ = 0;

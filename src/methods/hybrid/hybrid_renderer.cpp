@@ -2,12 +2,15 @@
 
 #include "core/errors.h"
 
+#include <cmath>
+
 namespace flowsurf::methods::hybrid {
 
 HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
       seeds_(viewport, true, params.common.cullBackFaces),
+      levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
       overlay_(params.common),
       lic_(GL_R32F, viewport.width, viewport.height, GL_NEAREST),
@@ -25,8 +28,9 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     timer_.beginFrame();
 
     // (1) seed textures: P-space position and velocity per pixel [W §4]; the static
-    // case (same view, same data) reuses them.
-    lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
+    // case (same view, same data) reuses them. Unsteady flow is always dynamic.
+    const bool unsteady = in.levels && !in.levels->empty();
+    lastDynamic_ = unsteady || !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
                    !core::sameCamera(in.camera, seedCamera_);
     if (lastDynamic_) {
         timer_.begin("seed textures");
@@ -34,6 +38,13 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
+    }
+    // (1b) unsteady flow: the velocity image of every time level the particles pass
+    // through, "the projection of the vector data within the integration loop" [W §3]
+    const float speedRef = in.surface->maxSpeed();
+    if (unsteady) {
+        timer_.begin("velocity levels");
+        levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
     }
 
     // (2) solid noise N(r, t) at this frame's phase [W §5]
@@ -49,8 +60,14 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     t.camera = in.camera;
     t.viewport = viewport_;
     t.stepPx = c.stepPx;
-    t.speedRef = in.surface->maxSpeed();
+    t.speedRef = speedRef;
     t.noiseScalePx = c.noise.scale;
+    if (unsteady) {
+        const TimeLevels& lv = *in.levels;
+        t.velocityLevels = levels_.texture();
+        for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
+        t.timePerStep = float(std::abs(lv.timePerStep));
+    }
     tracing_.apply(t, params_.hybrid, licFbo_);
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]

@@ -9,6 +9,7 @@
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/common/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
+#include "methods/hybrid/velocity_levels.h"
 
 namespace flowsurf::methods::hybrid {
 
@@ -21,6 +22,7 @@ public:
     const gl::Texture2D& composite() const override { return composite_; }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
+    bool usesTimeLevels() const override { return true; }
     // For tests: the solid noise volume.
     GLuint noiseTexture() const { return noise_.texture(); }
 
@@ -28,6 +30,7 @@ private:
     MethodParams params_;
     core::Viewport viewport_;
     SurfaceGBuffer seeds_;  // seed textures [W §4]: position, velocity, shade, depth
+    VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
     ParticleTracing tracing_;
     Overlay overlay_;

@@ -9,6 +9,8 @@
 #include "methods/common/params.h"
 #include "methods/common/surface_gbuffer.h"
 
+#include <vector>
+
 namespace flowsurf::methods::hybrid {
 
 struct TracingInput {
@@ -20,6 +22,12 @@ struct TracingInput {
     float stepPx = 2.0f;       // arc length per step in pixels at the seed's distance
     float speedRef = 1.0f;     // speed that moves stepPx per step
     float noiseScalePx = 2.0f; // one noise texel ~ this many pixels
+    // Unsteady flow [W §3]: velocity per time level (3D texture, layer j at data time
+    // levelTimes[j] relative to the frame's, velocities divided by speedRef); 0: the seeds'
+    // velocity image.
+    GLuint velocityLevels = 0;
+    std::vector<float> levelTimes;  // increasing, at most TimeLevelSource::kMaxLevels
+    float timePerStep = 0.0f;       // data time a forward step advances
 };
 
 class ParticleTracing {
@@ -28,7 +36,7 @@ public:
     void apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) const;
 
 private:
-    gl::Program program_;
+    gl::Program steady_, unsteady_;
     gl::VertexArray emptyVao_;
 };
 
