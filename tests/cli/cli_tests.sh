@@ -84,7 +84,23 @@ if [ "$rc" -eq 4 ] && grep -q "s_3.vtp" <<<"$err" && [ -s "$WORK/seqout/f_00.png
 else
     bad "corrupt step in a series (rc $rc: $err)"
 fi
+# The hybrid reads steps ahead of the frame (its pathline window): the same error, no output.
+err=$("$FLOWSURF" render "$WORK/series/s_%d.vtp" --method hybrid --frames-per-step 2 --frames 8 --size 32x32 -q \
+      -o "$WORK/hyb_corrupt.png" 2>&1)
+rc=$?
+if [ "$rc" -eq 4 ] && grep -q "s_3.vtp" <<<"$err" && [ ! -e "$WORK/hyb_corrupt.png" ]; then
+    ok "hybrid pathlines: corrupt step ahead is named, no output"
+else
+    bad "hybrid pathlines over a corrupt step (rc $rc: $err)"
+fi
 plane_vtp "$WORK/series/s_3.vtp" 3
+if "$FLOWSURF" render "$WORK/series/s_*.vtp" --method hybrid --frames-per-step 2 --frames 8 --size 32x32 -q \
+   -o "$WORK/hyb_series.png" && [ -s "$WORK/hyb_series.png" ]; then
+    ok "hybrid pathlines over a file series"
+else
+    bad "hybrid pathlines over a file series"
+fi
+expect_fail "negative trace dt"   2 "trace-dt"             "$WORK/ol.png" -- render builtin:double-gyre --method hybrid --trace-dt -1 -o "$WORK/ol.png" -q
 if "$FLOWSURF" render "$WORK/series/s_*.vtp" --frames 8 --size 32x32 -q -o "$WORK/series.png" && [ -s "$WORK/series.png" ]; then
     ok "render a numbered file series (glob)"
 else
