@@ -21,8 +21,8 @@ void SolidNoise::update(uint32_t frame, const core::NoiseParams& params) {
     glUniform1i(program_.uniform("uProfile"), params.profile == core::NoiseProfile::Square ? 0 : 1);
     glUniform1ui(program_.uniform("uSeed"), params.seed);
     glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    GLuint groups = GLuint((size_ + 3) / 4);
-    glDispatchCompute(groups, groups, groups);
+    GLuint groups = GLuint((size_ + 7) / 8);  // one invocation per row along x (solid_noise.comp)
+    glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     valid_ = true;
     frame_ = frame;
