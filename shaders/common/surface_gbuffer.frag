@@ -1,16 +1,19 @@
 // Float targets: no 8-bit quantisation of the velocity (the papers' limitation); 32-bit
-// positions where the hybrid method needs them [W §6]. w = 1 marks the surface.
+// positions where the hybrid method needs them [W §6]. The velocity's w holds the eye
+// depth of the visible layer (0: background), so the hybrid's particles check that they
+// are still on that layer with the same lookup that gives their velocity.
 in vec3 vPosObj;
 in vec3 vVelObj;
 in vec3 vNormalEye;
 in float vSpeed;
-layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity
+in float vEyeDepth;
+layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity, w: eye depth
 layout(location = 1) out vec4 outShade;   // xyz: eye-space normal, w: true speed (overlay)
 #ifdef WITH_POSITION
 layout(location = 2) out vec4 outPosObj;  // xyz: P-space position
 #endif
 void main() {
-    outVelObj = vec4(vVelObj, 1.0);
+    outVelObj = vec4(vVelObj, vEyeDepth);
     outShade = vec4(normalize(vNormalEye), vSpeed);
 #ifdef WITH_POSITION
     outPosObj = vec4(vPosObj, 1.0);

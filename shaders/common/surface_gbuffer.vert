@@ -11,10 +11,12 @@ out vec3 vPosObj;
 out vec3 vVelObj;
 out vec3 vNormalEye;
 out float vSpeed;
+out float vEyeDepth;  // distance in front of the eye along the view axis
 void main() {
     vPosObj = aPosObj;
     vVelObj = aVelObj;
     vNormalEye = mat3(uView) * aNormalObj;
     vSpeed = aSpeed;
+    vEyeDepth = -(uView * vec4(aPosObj, 1.0)).z;
     gl_Position = uViewProj * vec4(aPosObj, 1.0);
 }

@@ -28,13 +28,11 @@ float levelOf(float t) {
 #else
 layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
 #endif
-layout(binding = 2) uniform sampler2D uDepth;     // window depth of the visible layer
 layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
 uniform mat4 uViewProj;
+uniform vec4 uEyeDepthRow;   // eye depth of a P-space point: dot(row, (p, 1))
 uniform vec3 uEye;
 uniform int uOrtho;
-uniform float uNear;
-uniform float uFar;
 uniform int uHalfLength;     // steps per half: L = 2 * half + 1 samples
 uniform int uKernel;
 uniform int uIntegrator;     // 0 Euler, 1 RK2 (midpoint), 2 RK4
@@ -44,12 +42,10 @@ uniform float uFreqAtUnit;   // noise texels per P-space unit at distance 1 (ort
 uniform float uDepthTolerance;
 out vec4 outLic;
 
-vec3 project(vec3 p) {
+// Device coordinates of p in [0, 1]^2.
+vec2 project(vec3 p) {
     vec4 c = uViewProj * vec4(p, 1.0);
-    return vec3(c.xy / c.w * 0.5 + 0.5, c.z / c.w * 0.5 + 0.5);
-}
-float linearDepth(float d) {
-    return uOrtho != 0 ? uNear + d * (uFar - uNear) : uNear * uFar / (uFar - d * (uFar - uNear));
+    return c.xy / c.w * 0.5 + 0.5;
 }
 // The velocity image at device point s and the particle's data time t after the frame's
 // (unused for steady flow).
@@ -61,15 +57,15 @@ vec4 velocityImage(vec2 s, float t) {
     return texture(uVelObj, s);
 #endif
 }
-// Velocity at the projection of p; false where p is off the visible surface.
+// Velocity at the projection of p; false where p is off the visible surface: its eye
+// depth differs from the visible layer's there (the image's w; 0 on the background, and a
+// blend of both sides within a pixel of an edge).
 bool velocityAt(vec3 p, float t, out vec3 v) {
-    vec3 s = project(p);
-    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return false;
-    vec4 vel = velocityImage(s.xy, t);
-    if (vel.w < 0.5) return false;
-    float visible = texture(uDepth, s.xy).r;
-    if (abs(linearDepth(s.z) - linearDepth(visible)) > uDepthTolerance) return false;
-    v = vel.xyz / vel.w;
+    vec2 s = project(p);
+    if (any(lessThan(s, vec2(0.0))) || any(greaterThan(s, vec2(1.0)))) return false;
+    vec4 vel = velocityImage(s, t);
+    if (abs(dot(uEyeDepthRow, vec4(p, 1.0)) - vel.w) > uDepthTolerance) return false;
+    v = vel.xyz;
     return true;
 }
 // One step of length h from data time t to t + dt (a pathline through unsteady data;

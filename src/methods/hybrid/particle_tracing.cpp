@@ -28,8 +28,9 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     glUniformMatrix4fv(program.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(cam.eye));
     glUniform1i(program.uniform("uOrtho"), cam.orthographic());
-    glUniform1f(program.uniform("uNear"), cam.nearPlane);
-    glUniform1f(program.uniform("uFar"), cam.farPlane);
+    const glm::mat4 view = cam.view();
+    const glm::vec4 eyeDepthRow = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
+    glUniform4fv(program.uniform("uEyeDepthRow"), 1, glm::value_ptr(eyeDepthRow));
     glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
     glUniform1i(program.uniform("uKernel"), int(params.kernel));
     glUniform1i(program.uniform("uIntegrator"), int(params.integrator));
@@ -55,7 +56,6 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     } else {
         glBindTextureUnit(1, in.seeds->velocity().id());
     }
-    glBindTextureUnit(2, in.seeds->depth().id());
     glBindTextureUnit(3, in.noise);
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -49,8 +49,9 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     if (cullBackFaces_) glEnable(GL_CULL_FACE);
     else glDisable(GL_CULL_FACE);
     program_.use();
-    glm::mat4 viewProj = camera.viewProjection(viewport_.aspect());
+    glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform1i(program_.uniform("uNormalize"), params.normalize);
     glUniform1f(program_.uniform("uClampSpeed"), surface.clampSpeed());
     glUniform1f(program_.uniform("uInvSpeedRef"), 1.0f / std::max(speedRef, 1e-30f));
