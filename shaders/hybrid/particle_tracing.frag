@@ -34,8 +34,11 @@ uniform vec4 uEyeDepthRow;   // eye depth of a P-space point: dot(row, (p, 1))
 uniform vec3 uEye;
 uniform int uOrtho;
 uniform int uHalfLength;     // steps per half: L = 2 * half + 1 samples
-uniform int uKernel;
-uniform int uIntegrator;     // 0 Euler, 1 RK2 (midpoint), 2 RK4
+// Compile-time choices (program variants; a uniform branch per step halves the speed on
+// llvmpipe): KERNEL 0 box, 1 exponential, 2 Gaussian, 3 Hann; INTEGRATOR 0 Euler, 1 RK2
+// (midpoint), 2 RK4.
+const int uKernel = KERNEL;
+const int uIntegrator = INTEGRATOR;
 uniform float uStepPerDist;  // P-space step per unit of distance to the eye (dt ~ d)
 uniform float uStepOrtho;    // P-space step for orthographic views
 uniform float uFreqAtUnit;   // noise texels per P-space unit at distance 1 (ortho: absolute)

@@ -103,6 +103,7 @@ public:
     GLuint id() const { return h_.id(); }
     GLint uniform(const char* name) const { return glGetUniformLocation(h_.id(), name); }
     void use() const { glUseProgram(h_.id()); }
+    explicit operator bool() const { return bool(h_); }
 
 private:
     Handle<detail::deleteProgram> h_;

@@ -12,6 +12,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       seeds_(viewport, true, params.common.cullBackFaces),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
+      tracing_(params.hybrid),
       overlay_(params.common),
       lic_(GL_R32F, viewport.width, viewport.height, GL_NEAREST),
       licFbo_(gl::Framebuffer::create()),

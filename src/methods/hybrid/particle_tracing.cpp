@@ -7,13 +7,14 @@
 
 namespace flowsurf::methods::hybrid {
 
-ParticleTracing::ParticleTracing()
-    : steady_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}}),
-      unsteady_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
-                "#define UNSTEADY 1\n"),
+ParticleTracing::ParticleTracing(const HybridParams& params)
+    : defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
+               std::to_string(int(params.integrator)) + "\n"),
+      steady_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+              defines_),
       emptyVao_(gl::VertexArray::create()) {}
 
-void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) const {
+void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, in.viewport.width, in.viewport.height);
     const float gray[4] = {0.5f, 0, 0, 1};
@@ -21,6 +22,9 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
+    if (unsteady && !unsteady_)
+        unsteady_ = gl::Program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+                                defines_ + "#define UNSTEADY 1\n");
     const gl::Program& program = unsteady ? unsteady_ : steady_;
     program.use();
     const core::Camera& cam = in.camera;
@@ -32,8 +36,6 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     const glm::vec4 eyeDepthRow = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
     glUniform4fv(program.uniform("uEyeDepthRow"), 1, glm::value_ptr(eyeDepthRow));
     glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
-    glUniform1i(program.uniform("uKernel"), int(params.kernel));
-    glUniform1i(program.uniform("uIntegrator"), int(params.integrator));
     // Size of a pixel in P-space: at distance d (perspective) it is d * pixelPerDist.
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(in.viewport.height);
     const float pixelOrtho = cam.orthographic() ? cam.orthoHeight / float(in.viewport.height) : 0.0f;

@@ -9,6 +9,7 @@
 #include "methods/common/params.h"
 #include "methods/common/surface_gbuffer.h"
 
+#include <string>
 #include <vector>
 
 namespace flowsurf::methods::hybrid {
@@ -32,11 +33,13 @@ struct TracingInput {
 
 class ParticleTracing {
 public:
-    ParticleTracing();
-    void apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) const;
+    // Compiles the variant for params.kernel and params.integrator.
+    explicit ParticleTracing(const HybridParams& params);
+    void apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target);
 
 private:
-    gl::Program steady_, unsteady_;
+    std::string defines_;
+    gl::Program steady_, unsteady_;  // the unsteady variant is compiled on first use
     gl::VertexArray emptyVao_;
 };
 
