@@ -23,6 +23,13 @@ const VectorField* SurfaceMesh::findField(const std::string& name) const {
     return nullptr;
 }
 
+const VectorField* SurfaceMesh::defaultField() const {
+    for (const auto& f : fields)
+        for (const auto& v : f.values)
+            if (v != glm::vec3(0.0f)) return &f;
+    return fields.empty() ? nullptr : &fields.front();
+}
+
 Bounds SurfaceMesh::bounds() const {
     Bounds b;
     for (const auto& p : positions) b.extend(p);

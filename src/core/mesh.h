@@ -38,6 +38,10 @@ struct SurfaceMesh {
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return triangles.size(); }
     const VectorField* findField(const std::string& name) const;
+    // The field to show when none is named: the first that is not zero everywhere (a CFD
+    // wall result's velocity U is zero on the wall; its wall shear stress is not), else the
+    // first; null without fields.
+    const VectorField* defaultField() const;
     Bounds bounds() const;
 };
 

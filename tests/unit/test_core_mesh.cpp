@@ -11,6 +11,19 @@
 using namespace flowsurf;
 using namespace flowsurf::core;
 
+// A wall result's U is zero on the wall: the default is the first field with flow.
+TEST(Mesh, DefaultFieldSkipsFieldsThatAreZeroEverywhere) {
+    SurfaceMesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}};
+    m.fields = {{"U", {{0, 0, 0}, {0, 0, 0}}}, {"wallShearStress", {{0, 0, 0}, {1e-4f, 0, 0}}}, {"V", {{1, 0, 0}, {1, 0, 0}}}};
+    ASSERT_NE(m.defaultField(), nullptr);
+    EXPECT_EQ(m.defaultField()->name, "wallShearStress");
+    m.fields.erase(m.fields.begin() + 1, m.fields.end());
+    EXPECT_EQ(m.defaultField()->name, "U");  // nothing better: the first
+    m.fields.clear();
+    EXPECT_EQ(m.defaultField(), nullptr);
+}
+
 TEST(Mesh, MakeTangentialRemovesNormalComponent) {
     std::vector<glm::vec3> v = {{1, 2, 3}, {0, 0, 5}};
     std::vector<glm::vec3> n = {{0, 0, 1}, glm::normalize(glm::vec3(1, 1, 0))};

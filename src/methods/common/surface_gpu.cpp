@@ -16,7 +16,7 @@ std::atomic<uint64_t> nextGeneration{1};
 std::string selectField(const core::SurfaceMesh& mesh, const std::string& requested, const std::string& where) {
     if (mesh.fields.empty())
         throw FieldError(where + ": no 3-component point array to use as the vector field");
-    if (requested.empty()) return mesh.fields.front().name;
+    if (requested.empty()) return mesh.defaultField()->name;
     if (mesh.findField(requested)) return requested;
     std::string names;
     for (const auto& f : mesh.fields) names += (names.empty() ? "" : ", ") + f.name;

@@ -65,7 +65,8 @@ private:
     uint64_t generation_ = 0;
 };
 
-// Picks the field to show: `requested` if given (FieldError if absent), else the first.
+// Picks the field to show: `requested` if given (FieldError if absent), else the mesh's
+// defaultField() (the first that is not zero everywhere).
 std::string selectField(const core::SurfaceMesh& mesh, const std::string& requested,
                         const std::string& where);
 
