@@ -1,19 +1,19 @@
 // Float targets: no 8-bit quantisation of the velocity (the papers' limitation); 32-bit
-// positions where the hybrid method needs them [W §6]. The velocity's w holds the eye
-// depth of the visible layer (0: background), so the hybrid's particles check that they
-// are still on that layer with the same lookup that gives their velocity.
+// positions where the hybrid method needs them [W §6]. The velocity's w holds the depth of
+// the visible layer (methods::layerDepthRow; 0: background), so the hybrid's particles
+// check that they are still on that layer with the same lookup that gives their velocity.
 in vec3 vPosObj;
 in vec3 vVelObj;
 in vec3 vNormalEye;
 in float vSpeed;
-in float vEyeDepth;
-layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity, w: eye depth
+in float vLayerDepth;
+layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity, w: layer depth
 layout(location = 1) out vec4 outShade;   // xyz: eye-space normal, w: true speed (overlay)
 #ifdef WITH_POSITION
 layout(location = 2) out vec4 outPosObj;  // xyz: P-space position
 #endif
 void main() {
-    outVelObj = vec4(vVelObj, vEyeDepth);
+    outVelObj = vec4(vVelObj, vLayerDepth);
     outShade = vec4(normalize(vNormalEye), vSpeed);
 #ifdef WITH_POSITION
     outPosObj = vec4(vPosObj, 1.0);

@@ -7,16 +7,17 @@ layout(location = 2) in vec3 aVelObj;
 layout(location = 3) in float aSpeed;  // true speed, for the colour map
 uniform mat4 uViewProj;
 uniform mat4 uView;
+uniform vec4 uLayerDepthRow;  // methods::layerDepthRow
 out vec3 vPosObj;
 out vec3 vVelObj;
 out vec3 vNormalEye;
 out float vSpeed;
-out float vEyeDepth;  // distance in front of the eye along the view axis
+out float vLayerDepth;  // 1 + eye depth as a fraction of the depth range
 void main() {
     vPosObj = aPosObj;
     vVelObj = aVelObj;
     vNormalEye = mat3(uView) * aNormalObj;
     vSpeed = aSpeed;
-    vEyeDepth = -(uView * vec4(aPosObj, 1.0)).z;
+    vLayerDepth = dot(uLayerDepthRow, vec4(aPosObj, 1.0));
     gl_Position = uViewProj * vec4(aPosObj, 1.0);
 }

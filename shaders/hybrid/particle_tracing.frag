@@ -30,7 +30,7 @@ layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity
 #endif
 layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
 uniform mat4 uViewProj;
-uniform vec4 uEyeDepthRow;   // eye depth of a P-space point: dot(row, (p, 1))
+uniform vec4 uLayerDepthRow;  // layer depth of a P-space point (methods::layerDepthRow)
 uniform vec3 uEye;
 uniform int uOrtho;
 uniform int uHalfLength;     // steps per half: L = 2 * half + 1 samples
@@ -42,7 +42,7 @@ const int uIntegrator = INTEGRATOR;
 uniform float uStepPerDist;  // P-space step per unit of distance to the eye (dt ~ d)
 uniform float uStepOrtho;    // P-space step for orthographic views
 uniform float uFreqAtUnit;   // noise texels per P-space unit at distance 1 (ortho: absolute)
-uniform float uDepthTolerance;
+uniform float uDepthTolerance;  // fraction of the depth range
 out vec4 outLic;
 
 // Device coordinates of p in [0, 1]^2.
@@ -60,14 +60,14 @@ vec4 velocityImage(vec2 s, float t) {
     return texture(uVelObj, s);
 #endif
 }
-// Velocity at the projection of p; false where p is off the visible surface: its eye
-// depth differs from the visible layer's there (the image's w; 0 on the background, and a
-// blend of both sides within a pixel of an edge).
+// Velocity at the projection of p; false where p is off the visible surface: its depth
+// differs from the visible layer's there (the image's w; 0 on the background, and a blend
+// of both sides within a pixel of an edge).
 bool velocityAt(vec3 p, float t, out vec3 v) {
     vec2 s = project(p);
     if (any(lessThan(s, vec2(0.0))) || any(greaterThan(s, vec2(1.0)))) return false;
     vec4 vel = velocityImage(s, t);
-    if (abs(dot(uEyeDepthRow, vec4(p, 1.0)) - vel.w) > uDepthTolerance) return false;
+    if (abs(dot(uLayerDepthRow, vec4(p, 1.0)) - vel.w) > uDepthTolerance) return false;
     v = vel.xyz;
     return true;
 }

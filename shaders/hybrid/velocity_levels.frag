@@ -1,6 +1,6 @@
-// w: the eye depth of the visible layer, as in the steady velocity image
-// (common/surface_gbuffer.frag); 0 on the background.
+// w: the depth of the visible layer, as in the steady velocity image
+// (common/surface_gbuffer.frag, methods::layerDepthRow); 0 on the background.
 in vec3 vVel;
-in float vEyeDepth;
+in float vLayerDepth;
 layout(location = 0) out vec4 outVel;
-void main() { outVel = vec4(vVel, vEyeDepth); }
+void main() { outVel = vec4(vVel, vLayerDepth); }

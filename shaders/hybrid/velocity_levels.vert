@@ -8,13 +8,13 @@ layout(location = 1) in vec3 aNormalObj;
 layout(location = 2) in vec3 aFieldA;
 layout(location = 3) in vec3 aFieldB;
 uniform mat4 uViewProj;
-uniform mat4 uView;
+uniform vec4 uLayerDepthRow;  // methods::layerDepthRow
 uniform float uWeight;
 uniform int uNormalize;
 uniform float uClampSpeed;  // 0: none
 uniform float uInvSpeedRef;
 out vec3 vVel;
-out float vEyeDepth;
+out float vLayerDepth;
 void main() {
     vec3 v = mix(aFieldA, aFieldB, uWeight);
     v -= dot(v, aNormalObj) * aNormalObj;
@@ -22,6 +22,6 @@ void main() {
     if (uNormalize != 0 && s > 0.0) v /= s;
     else if (uClampSpeed > 0.0 && s > uClampSpeed) v *= uClampSpeed / s;
     vVel = v * uInvSpeedRef;
-    vEyeDepth = -(uView * vec4(aPosObj, 1.0)).z;
+    vLayerDepth = dot(uLayerDepthRow, vec4(aPosObj, 1.0));
     gl_Position = uViewProj * vec4(aPosObj, 1.0);
 }

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace flowsurf::methods {
 
 SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces)
@@ -24,6 +26,15 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
     fbo_.finish(targets_);
 }
 
+glm::vec4 layerDepthRow(const core::Camera& camera) {
+    const glm::mat4 view = camera.view();
+    const float range = std::max(camera.farPlane - camera.nearPlane, 1e-30f);
+    // Eye depth d = -(view row 2) . (p, 1).
+    glm::vec4 row = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]) / range;
+    row.w += 1.0f - camera.nearPlane / range;
+    return row;
+}
+
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
@@ -41,6 +52,7 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniform4fv(program_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
     surface.draw();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);

@@ -11,6 +11,13 @@
 
 namespace flowsurf::methods {
 
+// The velocity image's w on the surface: the visible layer's eye depth d mapped to
+// 1 + (d - near) / (far - near) (the background stays 0), as dot(row, (p, 1)) for a P-space
+// point p. Shared by every pass that writes or checks it; in [1, 2] it keeps 16-bit
+// precision (~1e-3 of the depth range) whatever the scene's scale and distance, and a depth
+// tolerance is a plain fraction of the range.
+glm::vec4 layerDepthRow(const core::Camera& camera);
+
 class SurfaceGBuffer {
 public:
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false);

@@ -32,9 +32,7 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     glUniformMatrix4fv(program.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(cam.eye));
     glUniform1i(program.uniform("uOrtho"), cam.orthographic());
-    const glm::mat4 view = cam.view();
-    const glm::vec4 eyeDepthRow = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
-    glUniform4fv(program.uniform("uEyeDepthRow"), 1, glm::value_ptr(eyeDepthRow));
+    glUniform4fv(program.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(cam)));
     glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
     // Size of a pixel in P-space: at distance d (perspective) it is d * pixelPerDist.
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(in.viewport.height);
@@ -47,7 +45,7 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     const float texel = 2.0f / float(in.noiseSize);
     glUniform1f(program.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
-    glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance * (cam.farPlane - cam.nearPlane));
+    glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
     glBindTextureUnit(0, in.seeds->position().id());
     if (unsteady) {
         glBindTextureUnit(1, in.velocityLevels);

@@ -14,6 +14,8 @@ VelocityLevels::VelocityLevels(const core::Viewport& viewport, bool cullBackFace
       vao_(gl::VertexArray::create()),
       program_({{GL_VERTEX_SHADER, "hybrid/velocity_levels.vert"}, {GL_FRAGMENT_SHADER, "hybrid/velocity_levels.frag"}}) {
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    const GLenum buffer = GL_COLOR_ATTACHMENT0;  // a layer of the 3D texture, per level
+    glNamedFramebufferDrawBuffers(fbo_.id(), 1, &buffer);
     // 0, 1: position and normal from the surface's interleaved vertices; 2, 3: the two
     // raw fields of a level (bound per level).
     GLuint vao = vao_.id();
@@ -49,9 +51,9 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     if (cullBackFaces_) glEnable(GL_CULL_FACE);
     else glDisable(GL_CULL_FACE);
     program_.use();
-    glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
+    glm::mat4 viewProj = camera.viewProjection(viewport_.aspect());
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-    glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniform4fv(program_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
     glUniform1i(program_.uniform("uNormalize"), params.normalize);
     glUniform1f(program_.uniform("uClampSpeed"), surface.clampSpeed());
     glUniform1f(program_.uniform("uInvSpeedRef"), 1.0f / std::max(speedRef, 1e-30f));
@@ -60,8 +62,6 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     for (int j = 0; j < count; ++j) {
         const TimeLevel& level = levels.levels[size_t(j)];
         glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, j);
-        const GLenum buffer = GL_COLOR_ATTACHMENT0;
-        glNamedFramebufferDrawBuffers(fbo_.id(), 1, &buffer);
         glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
         glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
         glVertexArrayVertexBuffer(vao, 1, level.fieldA, 0, sizeof(float) * 3);

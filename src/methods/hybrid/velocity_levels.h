@@ -8,6 +8,7 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
+#include "methods/common/surface_gbuffer.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
 
