@@ -298,6 +298,10 @@ TEST(HybridUnsteady, TopologyChangesInsideTheWindowHoldTheField) {
         framesWithLevels += !levels.empty();
         m->renderFrame({&surface, cam, uint32_t(k), levels.empty() ? nullptr : &levels});
         ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        // The same frame again (time held, view unchanged): the static case reuses the
+        // seed and level textures.
+        m->renderFrame({&surface, cam, uint32_t(k), levels.empty() ? nullptr : &levels});
+        EXPECT_FALSE(m->lastFrameDynamic()) << "frame " << k;
         test::Rendered r;
         r.width = vp.width;
         r.height = vp.height;

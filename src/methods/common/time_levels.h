@@ -24,6 +24,7 @@ struct TimeLevel {
     GLuint fieldA = 0, fieldB = 0;
     float weight = 0.0f;
     double time = 0.0;
+    bool operator==(const TimeLevel&) const = default;
 };
 
 struct TimeLevels {
@@ -32,6 +33,7 @@ struct TimeLevels {
     std::vector<TimeLevel> levels;  // increasing time
     // Fewer than two levels: the window is empty (no time per step, or a single step).
     bool empty() const { return levels.size() < 2; }
+    bool operator==(const TimeLevels&) const = default;
 };
 
 // Builds TimeLevels from a streamed series; owns the GPU copies of the steps' fields.

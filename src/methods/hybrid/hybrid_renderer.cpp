@@ -29,10 +29,11 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     timer_.beginFrame();
 
     // (1) seed textures: P-space position and velocity per pixel [W §4]; the static
-    // case (same view, same data) reuses them. Unsteady flow is always dynamic.
+    // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
-    lastDynamic_ = unsteady || !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
-                   !core::sameCamera(in.camera, seedCamera_);
+    lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
+                   !core::sameCamera(in.camera, seedCamera_) || unsteady != haveLevels_ ||
+                   (unsteady && !(*in.levels == seedLevels_));
     if (lastDynamic_) {
         timer_.begin("seed textures");
         seeds_.render(*in.surface, in.camera);
@@ -43,10 +44,12 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // (1b) unsteady flow: the velocity image of every time level the particles pass
     // through, "the projection of the vector data within the integration loop" [W §3]
     const float speedRef = in.surface->maxSpeed();
-    if (unsteady) {
+    if (unsteady && lastDynamic_) {
         timer_.begin("velocity levels");
         levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
     }
+    haveLevels_ = unsteady;
+    if (unsteady) seedLevels_ = *in.levels;
 
     // (2) solid noise N(r, t) at this frame's phase [W §5]
     timer_.begin("solid noise");

@@ -41,6 +41,8 @@ private:
     bool haveSeeds_ = false, lastDynamic_ = false;
     uint64_t seedGeneration_ = 0;
     core::Camera seedCamera_;
+    bool haveLevels_ = false;
+    TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
 };
 
 }  // namespace flowsurf::methods::hybrid
