@@ -34,17 +34,22 @@ void dumpImages(const Rendered& r, const std::string& dir) {
 }
 }  // namespace
 
+Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport) {
+    Rendered r;
+    r.width = viewport.width;
+    r.height = viewport.height;
+    r.flow = gl::readChannel(method.flowTexture(), 0);
+    r.depth = gl::readDepth(method.surfaceDepth());
+    r.rgb = gl::readRgb8TopDown(method.composite());
+    return r;
+}
+
 Rendered renderScene(const core::Dataset& data, const std::string& method, const methods::MethodParams& params,
                      const core::Viewport& viewport, const core::Camera& camera, int frames) {
     methods::SurfaceGpu surface(data.steps.front().mesh, "velocity", params.common);
     auto m = methods::makeMethod(method, params, viewport);
     for (int k = 0; k <= frames; ++k) m->renderFrame({&surface, camera, uint32_t(k)});
-    Rendered r;
-    r.width = viewport.width;
-    r.height = viewport.height;
-    r.flow = gl::readChannel(m->flowTexture(), 0);
-    r.depth = gl::readDepth(m->surfaceDepth());
-    r.rgb = gl::readRgb8TopDown(m->composite());
+    Rendered r = readBack(*m, viewport);
     if (const char* dir = std::getenv("FLOWSURF_TEST_DUMP")) dumpImages(r, dir);
     return r;
 }

@@ -20,6 +20,9 @@ struct Rendered {
     float f(int x, int y) const { return flow[size_t(y) * width + x]; }
 };
 
+// Reads back the last frame of `method`: F_a, depth and the composite.
+Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport);
+
 // Renders `frames` + 1 frames of `data` step 0 (field "velocity") with `method`.
 Rendered renderScene(const core::Dataset& data, const std::string& method, const methods::MethodParams& params,
                      const core::Viewport& viewport, const core::Camera& camera, int frames);

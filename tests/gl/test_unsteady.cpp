@@ -56,11 +56,7 @@ TEST_P(UnsteadyOrientation, TextureFollowsTheFieldOfTheCurrentTime) {
     core::TimeMapping map{0.0, 8.0, 8.0 / 120.0};  // the whole turn over 120 frames
     const core::Viewport vp{192, 192};
     auto m = animate(stream, map, GetParam(), vp, test::orthoFront(2.2f), 120);
-    test::Rendered r;
-    r.width = vp.width;
-    r.height = vp.height;
-    r.flow = gl::readChannel(m->flowTexture());
-    r.depth = gl::readDepth(m->surfaceDepth());
+    test::Rendered r = test::readBack(*m, vp);
     const float now = glm::half_pi<float>() * float(map.at(120) / 8.0);  // the field's angle at t(120)
     std::vector<float> errNow, errFirst;
     for (int y = 30; y < 162; y += 6)
@@ -185,12 +181,7 @@ test::Rendered hybridAt(core::StepStream& stream, methods::TimeLevelSource& sour
     const methods::TimeLevels& levels = source.at(t0, tau, (p.hybrid.filterLength - 1) / 2);
     auto m = methods::makeMethod("hybrid", p, vp);
     m->renderFrame({&surface, cam, 5u, levels.empty() ? nullptr : &levels});
-    test::Rendered r;
-    r.width = vp.width;
-    r.height = vp.height;
-    r.flow = gl::readChannel(m->flowTexture());
-    r.depth = gl::readDepth(m->surfaceDepth());
-    return r;
+    return test::readBack(*m, vp);
 }
 
 // Correlation of a with b shifted by (dx, dy), over the interior.
@@ -302,11 +293,7 @@ TEST(HybridUnsteady, TopologyChangesInsideTheWindowHoldTheField) {
         // seed and level textures.
         m->renderFrame({&surface, cam, uint32_t(k), levels.empty() ? nullptr : &levels});
         EXPECT_FALSE(m->lastFrameDynamic()) << "frame " << k;
-        test::Rendered r;
-        r.width = vp.width;
-        r.height = vp.height;
-        r.flow = gl::readChannel(m->flowTexture());
-        r.depth = gl::readDepth(m->surfaceDepth());
+        test::Rendered r = test::readBack(*m, vp);
         double sum = 0, sum2 = 0;
         int n = 0;
         for (int y = 0; y < vp.height; ++y)
