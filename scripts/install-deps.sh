@@ -14,6 +14,8 @@ PACKAGES=(
   nlohmann-json3-dev                            # camera path files (JSON)
   libgtest-dev                                  # tests
   ffmpeg                                        # MP4 (H.264) output
+  libglfw3-dev libimgui-dev                     # the viewer: window (GLFW 3.3) and panel (Dear ImGui)
+  xvfb xauth                                    # viewer tests: a real X window without a display
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
