@@ -1,6 +1,7 @@
 // flowsurf — command-line program: render, info, bench. One catch here maps each error
 // type to its exit code (exit_codes.h); the library never exits the process.
 #include "commands.h"
+#include "config_file.h"
 #include "core/errors.h"
 #include "exit_codes.h"
 
@@ -46,6 +47,26 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::IsMember({"fit", "paraview"}));
     benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(1, 1001));
+
+    // --config FILE: the file's options first, the command line's on top of them.
+    for (CLI::App* cmd : {renderCmd, compareCmd})
+        cmd->add_option("--config", "JSON config (e.g. saved by the viewer); options given here override it")
+            ->group("Output");
+    try {
+        if (auto config = app::findConfigArgument(argc, argv)) {
+            app::applyConfigFile(*config, render);
+            compare = render;
+        }
+    } catch (const ConfigError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kUsage;
+    } catch (const IoError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kIo;
+    } catch (const FormatError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kFormat;
+    }
 
     try {
         app.parse(argc, argv);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <type_traits>
 
 namespace flowsurf::app {
 
@@ -74,146 +75,380 @@ OutputKind outputKind(const std::string& path) {
     throw ConfigError("--output: '" + path + "' must end in .png, .mp4, or be a %04d.png pattern");
 }
 
-void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
-    auto& p = o.params;
-    cmd.add_option("input", o.input, "Surface file (.vtp .vtu .vtk .ply .obj .stl .foam .e .case .pvd) or builtin:NAME");
-    cmd.add_flag("--list-builtins", o.listBuiltins, "List the built-in scenes and exit");
+std::string formatFloat(float value) {
+    char buf[64];
+    for (int digits = 1; digits <= 9; ++digits) {  // the shortest text that reads back exactly
+        std::snprintf(buf, sizeof buf, "%.*g", digits, double(value));
+        if (std::strtof(buf, nullptr) == value) break;
+    }
+    return buf;
+}
 
+std::string formatDouble(double value) {
+    char buf[64];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+        if (std::strtod(buf, nullptr) == value) break;
+    }
+    return buf;
+}
+
+namespace {
+
+// --- builders of table rows ------------------------------------------------------------
+
+std::string dashed(const std::string& name) { return "--" + name; }
+
+double parseNumber(const std::string& s, const std::string& what) {
+    try {
+        size_t used = 0;
+        double v = std::stod(s, &used);
+        if (used != s.size() || !std::isfinite(v)) throw std::invalid_argument(s);
+        return v;
+    } catch (const std::exception&) {
+        throw ConfigError(what + ": '" + s + "' is not a finite number");
+    }
+}
+
+template <typename T>
+std::string numberText(T v) {
+    if constexpr (std::is_integral_v<T>) return std::to_string(v);
+    else if constexpr (std::is_same_v<T, float>) return formatFloat(v);
+    else return formatDouble(v);
+}
+
+// Checks range and integrality of a parsed number for option `name`.
+template <typename T>
+T checkedNumber(const std::string& name, const std::string& t, double lo, double hi) {
+    double v = parseNumber(t, dashed(name));
+    if (std::is_integral_v<T> && v != std::floor(v)) throw ConfigError(dashed(name) + ": '" + t + "' is not an integer");
+    if (v < lo || v > hi)
+        throw ConfigError(dashed(name) + ": " + t + " is out of range " + formatDouble(lo) + ".." + formatDouble(hi));
+    return T(v);
+}
+
+std::string vec3Text(const glm::vec3& v) {
+    return formatFloat(v.x) + "," + formatFloat(v.y) + "," + formatFloat(v.z);
+}
+
+template <typename T>
+OptionSpec number(std::string name, std::string group, std::string help, T RenderOptions::*field, double lo,
+                  double hi) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help),
+                 std::is_integral_v<T> ? OptionKind::Int : OptionKind::Float, lo, hi, {}, true, nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, field, lo, hi](RenderOptions& o, const std::string& t) { o.*field = checkedNumber<T>(n, t, lo, hi); };
+    s.get = [field](const RenderOptions& o) { return numberText(o.*field); };
+    return s;
+}
+
+// A number inside MethodParams, reached through `ref`.
+template <typename T, typename Ref>
+OptionSpec param(std::string name, std::string group, std::string help, Ref ref, double lo, double hi) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help),
+                 std::is_integral_v<T> ? OptionKind::Int : OptionKind::Float, lo, hi, {}, true, nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, ref, lo, hi](RenderOptions& o, const std::string& t) { ref(o) = checkedNumber<T>(n, t, lo, hi); };
+    s.get = [ref](const RenderOptions& o) { return numberText(ref(const_cast<RenderOptions&>(o))); };
+    return s;
+}
+
+template <typename E, size_t N, typename Ref>
+OptionSpec choice(std::string name, std::string group, std::string help, const methods::EnumNames<E, N>& names,
+                  Ref ref) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), OptionKind::Choice, 0, 0, {}, true,
+                 nullptr, nullptr};
+    for (const auto& [value, text] : names) s.choices.emplace_back(text);
+    const std::string n = s.name;
+    s.set = [n, &names, ref](RenderOptions& o, const std::string& t) {
+        for (const auto& [value, text] : names)
+            if (t == text) {
+                ref(o) = value;
+                return;
+            }
+        std::string list;
+        for (const auto& [value, text] : names) list += (list.empty() ? "" : ", ") + std::string(text);
+        throw ConfigError(dashed(n) + ": '" + t + "' is not one of " + list);
+    };
+    s.get = [&names, ref](const RenderOptions& o) {
+        for (const auto& [value, text] : names)
+            if (ref(const_cast<RenderOptions&>(o)) == value) return std::string(text);
+        return std::string();
+    };
+    return s;
+}
+
+// on|off switches kept as choices for the command line's compatibility.
+template <typename Ref>
+OptionSpec onOff(std::string name, std::string group, std::string help, Ref ref) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), OptionKind::Choice, 0, 0, {"on", "off"},
+                 true, nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, ref](RenderOptions& o, const std::string& t) {
+        if (t != "on" && t != "off") throw ConfigError(dashed(n) + ": '" + t + "' is not one of on, off");
+        ref(o) = t == "on";
+    };
+    s.get = [ref](const RenderOptions& o) { return std::string(ref(const_cast<RenderOptions&>(o)) ? "on" : "off"); };
+    return s;
+}
+
+template <typename Ref>
+OptionSpec flag(std::string name, std::string group, std::string help, Ref ref, bool saved = true) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), OptionKind::Flag, 0, 0, {}, saved,
+                 nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, ref](RenderOptions& o, const std::string& t) {
+        std::string l = lower(t);
+        if (l == "true" || l == "1" || l == "on" || l.empty()) ref(o) = true;
+        else if (l == "false" || l == "0" || l == "off") ref(o) = false;
+        else throw ConfigError(dashed(n) + ": '" + t + "' is not true or false");
+    };
+    s.get = [ref](const RenderOptions& o) { return std::string(ref(const_cast<RenderOptions&>(o)) ? "true" : "false"); };
+    return s;
+}
+
+template <typename Ref>
+OptionSpec text(std::string name, std::string group, std::string help, Ref ref, OptionKind kind = OptionKind::Text) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), kind, 0, 0, {}, true, nullptr, nullptr};
+    s.set = [ref](RenderOptions& o, const std::string& t) { ref(o) = t; };
+    s.get = [ref](const RenderOptions& o) { return ref(const_cast<RenderOptions&>(o)); };
+    return s;
+}
+
+// An optional x,y,z (unset: fitted to the bounds).
+OptionSpec vec3(std::string name, std::string help, std::optional<glm::vec3> RenderOptions::*field) {
+    OptionSpec s{std::move(name), "", "Camera", std::move(help), OptionKind::Vec3, 0, 0, {}, true, nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, field](RenderOptions& o, const std::string& t) {
+        if (t.empty()) o.*field = std::nullopt;
+        else o.*field = parseVec3(t, dashed(n));
+    };
+    s.get = [field](const RenderOptions& o) { return o.*field ? vec3Text(*(o.*field)) : std::string(); };
+    return s;
+}
+
+#define FS_REF(expr) [](RenderOptions& o) -> auto& { return o.expr; }
+
+std::vector<OptionSpec> buildTable() {
+    std::vector<OptionSpec> t;
+    auto add = [&t](OptionSpec s, std::string shortName = "") {
+        s.shortName = std::move(shortName);
+        t.push_back(std::move(s));
+    };
+    add(text("input", "Data", "Surface file (.vtp .vtu .vtk .ply .obj .stl .foam .e .case .pvd), a file series "
+                              "(surf_%04d.vtp, surf_*.vtp) or builtin:NAME", FS_REF(input), OptionKind::Path));
+
+    // Output
     const std::string gOut = "Output";
-    cmd.add_option("-o,--output", o.output, "FILE.png (final composite), FILE.mp4 (all frames) or frame_%04d.png")
-        ->group(gOut)->capture_default_str();
-    cmd.add_option_function<std::string>("--size", [&o](const std::string& s) { o.size = parseSize(s); },
-                                         "Image size WxH in pixels (default 800x600)")->group(gOut);
-    cmd.add_option("--frames", o.frames, "Advection frames before the output frame")
-        ->group(gOut)->capture_default_str()->check(CLI::Range(0, 100000));
-    cmd.add_option("--flow-texture", o.flowTexture, "Also write the advected texture F_a alone (16-bit gray PNG)")
-        ->group(gOut);
-    cmd.add_option("--fps", o.fps, "MP4 frame rate")->group(gOut)->capture_default_str()->check(CLI::Range(1, 240));
-    cmd.add_option("--crf", o.crf, "MP4 H.264 quality, 0 (lossless) .. 51")
-        ->group(gOut)->capture_default_str()->check(CLI::Range(0, 51));
-    cmd.add_flag("-q,--quiet", o.quiet, "No progress bar or messages")->group(gOut);
-    cmd.add_flag("-v,--verbose", o.verbose, "Log the OpenGL renderer and timings")->group(gOut);
+    add(text("output", gOut, "FILE.png (final composite), FILE.mp4 (all frames) or frame_%04d.png", FS_REF(output),
+             OptionKind::Path), "o");
+    {
+        OptionSpec s{"size", "", gOut, "Image size WxH in pixels, 16..8192 per side", OptionKind::Size, 16, 8192, {},
+                     true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) { o.size = parseSize(v); };
+        s.get = [](const RenderOptions& o) { return std::to_string(o.size.width) + "x" + std::to_string(o.size.height); };
+        add(s);
+    }
+    add(number("frames", gOut, "Advection frames before the output frame", &RenderOptions::frames, 0, 100000));
+    add(text("flow-texture", gOut, "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture),
+             OptionKind::Path));
+    t.back().saved = false;
+    add(number("fps", gOut, "MP4 frame rate", &RenderOptions::fps, 1, 240));
+    add(number("crf", gOut, "MP4 H.264 quality, 0 = lossless", &RenderOptions::crf, 0, 51));
+    add(flag("quiet", gOut, "No progress bar or messages", FS_REF(quiet), false), "q");
+    add(flag("verbose", gOut, "Log the OpenGL renderer and timings", FS_REF(verbose), false), "v");
 
+    // Data
     const std::string gData = "Data";
-    cmd.add_option("--field", o.field, "Vector array to show (default: the first 3-component point array)")
-        ->group(gData);
-    cmd.add_option_function<size_t>("--time-step", [&o](size_t s) { o.timeStep = s; o.timeStepGiven = true; },
-                                    "Render only this time step (index), as steady data")->group(gData);
-    cmd.add_option_function<std::string>("--time", [&o](const std::string& s) {
-        auto colon = s.find(':');
-        if (colon == std::string::npos) throw ConfigError("--time: '" + s + "' is not START:END");
-        o.timeRange = std::make_pair(double(parseFloat(s.substr(0, colon), "--time")),
-                                     double(parseFloat(s.substr(colon + 1), "--time")));
-    }, "Data time range START:END of the animation (default: the whole series)")->group(gData);
-    cmd.add_option("--time-per-frame", o.timePerFrame, "Data time per animation frame")
-        ->group(gData)->check(CLI::PositiveNumber);
-    cmd.add_option("--frames-per-step", o.framesPerStep, "Animation frames per data time step")
-        ->group(gData)->check(CLI::Range(1, 100000));
-    cmd.add_option_function<double>("--trace-dt", [&o](double dt) { o.traceDt = dt; },
-                                    "Hybrid on a time series: data time per particle step, so the LIC follows "
-                                    "pathlines (default: the data time per frame; 0: streamlines of each "
-                                    "frame's field)")
-        ->group(gData)->check(CLI::NonNegativeNumber);
+    add(text("field", gData, "Vector array to show (default: the first 3-component point array that is not zero "
+                             "everywhere)", FS_REF(field)));
+    {
+        OptionSpec s{"time-step", "", gData, "Render only this time step (index), as steady data", OptionKind::Int, 0,
+                     1e9, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (v.empty()) { o.timeStepGiven = false; o.timeStep = 0; return; }
+            double d = parseNumber(v, "--time-step");
+            if (d < 0 || d != std::floor(d)) throw ConfigError("--time-step: '" + v + "' is not a step index");
+            o.timeStep = size_t(d);
+            o.timeStepGiven = true;
+        };
+        s.get = [](const RenderOptions& o) { return o.timeStepGiven ? std::to_string(o.timeStep) : std::string(); };
+        add(s);
+    }
+    {
+        OptionSpec s{"time", "", gData, "Data time range START:END of the animation (default: the whole series)",
+                     OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (v.empty()) { o.timeRange.reset(); return; }
+            auto colon = v.find(':');
+            if (colon == std::string::npos) throw ConfigError("--time: '" + v + "' is not START:END");
+            o.timeRange = std::make_pair(parseNumber(v.substr(0, colon), "--time"),
+                                         parseNumber(v.substr(colon + 1), "--time"));
+        };
+        s.get = [](const RenderOptions& o) {
+            return o.timeRange ? formatDouble(o.timeRange->first) + ":" + formatDouble(o.timeRange->second) : std::string();
+        };
+        add(s);
+    }
+    add(number("time-per-frame", gData, "Data time per animation frame (0: see --frames-per-step)",
+               &RenderOptions::timePerFrame, 0, 1e30));
+    add(number("frames-per-step", gData, "Animation frames per data time step (0: the range over --frames)",
+               &RenderOptions::framesPerStep, 0, 100000));
+    {
+        OptionSpec s{"trace-dt", "", gData, "Hybrid on a time series: data time per particle step, so the LIC follows "
+                     "pathlines (default: the data time per frame; 0: streamlines of each frame's field)",
+                     OptionKind::Float, 0, 1e30, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (v.empty()) { o.traceDt.reset(); return; }
+            double d = parseNumber(v, "--trace-dt");
+            if (d < 0) throw ConfigError("--trace-dt: " + v + " must not be negative");
+            o.traceDt = d;
+        };
+        s.get = [](const RenderOptions& o) { return o.traceDt ? formatDouble(*o.traceDt) : std::string(); };
+        add(s);
+    }
 
+    // Method
     const std::string gMethod = "Method";
-    cmd.add_option("-m,--method", o.method, "Visualization method")
-        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({"isa", "ibfvs", "hybrid"}));
-    cmd.add_option("--alpha", p.common.alpha, "Noise blend alpha [L eq. 9], 0..1 (papers: 0.1-0.2)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
-    cmd.add_option("--beta", p.common.beta, "Texture strength beta [L eq. 10], 0..1")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
-    cmd.add_option("--step-px", p.common.stepPx, "Largest displacement per frame in pixels (dt)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 64.0f));
-    cmd.add_option("--speed-percentile", p.common.speedPercentile,
-                   "Clamp advection speed at this percentile of the surface's speeds (100: no clamp)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(1.0f, 100.0f));
-    cmd.add_option_function<std::string>("--normalize", [&p](const std::string& s) { p.common.normalize = s == "on"; },
-                                         "on: unit-length vectors, uniform streaks (default); off: streak length shows speed")
-        ->group(gMethod)->check(CLI::IsMember({"on", "off"}));
-    cmd.add_option("--noise-scale", p.common.noise.scale, "Noise cell size s in pixels (papers: 1-10)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(1.0f, 64.0f));
-    cmd.add_option("--noise-period", p.common.noise.period, "Frames per cycle of each noise cell's profile")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(2.0f, 10000.0f));
-    cmd.add_option_function<std::string>("--noise-profile", [&p](const std::string& s) {
-        p.common.noise.profile = s == "sawtooth" ? core::NoiseProfile::Sawtooth : core::NoiseProfile::Square;
-    }, "Periodic profile w of the noise: square or sawtooth (default square)")
-        ->group(gMethod)->check(CLI::IsMember({"square", "sawtooth"}));
-    cmd.add_option("--seed", p.common.noise.seed, "Noise seed")->group(gMethod)->capture_default_str();
-    cmd.add_option("--grid-res", p.isa.gridRes, "ISA advection mesh resolution R (R x R cells)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(64, 1024));
-    cmd.add_option_function<std::string>("--isa-warp", [&p](const std::string& s) {
-        p.isa.warp = s == "mesh" ? methods::IsaWarp::Mesh : methods::IsaWarp::Pixel;
-    }, "ISA texture advection: pixel (mesh interpolated per pixel, default) or mesh (draw the R x R grid)")
-        ->group(gMethod)->check(CLI::IsMember({"pixel", "mesh"}));
-    cmd.add_flag("--cull-back-faces", p.common.cullBackFaces,
-                 "Skip back-facing triangles (closed, outward-oriented surfaces only; default off)")->group(gMethod);
-    cmd.add_flag("--edge-mask", p.ibfvs.edgeMask, "IBFVS silhouette edge mask over the image [L §IV-E.2]")
-        ->group(gMethod);
-    cmd.add_option_function<std::string>("--on-camera-move", [&p](const std::string& s) {
-        p.common.onCameraMove = s == "none" ? methods::CameraMoveRemedy::None
-                              : s == "freeze" ? methods::CameraMoveRemedy::Freeze
-                                              : methods::CameraMoveRemedy::Translate;
-    }, "When the camera moves: translate (reproject the texture with the surface, default), freeze, none")
-        ->group(gMethod)->check(CLI::IsMember({"translate", "freeze", "none"}));
-    cmd.add_option("--filter-length", p.hybrid.filterLength, "Hybrid LIC filter length L in samples ([W] 25-70)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(1, 1001));
-    cmd.add_option_function<std::string>("--kernel", [&p](const std::string& s) {
-        p.hybrid.kernel = s == "box" ? methods::LicKernel::Box
-                        : s == "exponential" ? methods::LicKernel::Exponential
-                        : s == "hann" ? methods::LicKernel::Hann : methods::LicKernel::Gaussian;
-    }, "Hybrid LIC kernel: box, exponential, gaussian (default), hann")
-        ->group(gMethod)->check(CLI::IsMember({"box", "exponential", "gaussian", "hann"}));
-    cmd.add_option_function<std::string>("--integrator", [&p](const std::string& s) {
-        p.hybrid.integrator = s == "rk2" ? methods::Integrator::Rk2
-                            : s == "rk4" ? methods::Integrator::Rk4 : methods::Integrator::Euler;
-    }, "Hybrid particle integrator: euler (default, as in [W]), rk2, rk4")
-        ->group(gMethod)->check(CLI::IsMember({"euler", "rk2", "rk4"}));
-    cmd.add_option("--noise-size", p.hybrid.noiseSize, "Hybrid solid noise texels per side (64 or 128)")
-        ->group(gMethod)->capture_default_str()->check(CLI::IsMember({64, 128}));
-    cmd.add_option("--edge-epsilon", p.isa.edgeEpsilon, "ISA edge detection eps [L eq. 14], depth range per pixel")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 10.0f));
-    cmd.add_option_function<std::string>("--edge-blending", [&p](const std::string& s) { p.isa.edgeBlending = s == "on"; },
-                                         "ISA edge blending on|off (default on)")
-        ->group(gMethod)->check(CLI::IsMember({"on", "off"}));
+    {
+        OptionSpec s{"method", "", gMethod, "Visualization method", OptionKind::Choice, 0, 0, {}, true, nullptr, nullptr};
+        for (auto m : methods::kMethodNames) s.choices.emplace_back(m);
+        s.set = [](RenderOptions& o, const std::string& v) {
+            for (auto m : methods::kMethodNames)
+                if (v == m) { o.method = v; return; }
+            throw ConfigError("--method: '" + v + "' is not one of isa, ibfvs, hybrid");
+        };
+        s.get = [](const RenderOptions& o) { return o.method; };
+        add(s, "m");
+    }
+    add(param<float>("alpha", gMethod, "Noise blend alpha [L eq. 9] (papers: 0.1-0.2)", FS_REF(params.common.alpha), 0, 1));
+    add(param<float>("beta", gMethod, "Texture strength beta [L eq. 10]", FS_REF(params.common.beta), 0, 1));
+    add(param<float>("step-px", gMethod, "Largest displacement per frame in pixels (dt)", FS_REF(params.common.stepPx), 0, 64));
+    add(param<float>("speed-percentile", gMethod, "Clamp advection speed at this percentile of the surface's speeds "
+                     "(100: no clamp)", FS_REF(params.common.speedPercentile), 1, 100));
+    add(onOff("normalize", gMethod, "on: unit-length vectors, uniform streaks; off: streak length shows speed",
+              FS_REF(params.common.normalize)));
+    add(param<float>("noise-scale", gMethod, "Noise cell size s in pixels (papers: 1-10)", FS_REF(params.common.noise.scale), 1, 64));
+    add(param<float>("noise-period", gMethod, "Frames per cycle of each noise cell's profile",
+                     FS_REF(params.common.noise.period), 2, 10000));
+    add(choice("noise-profile", gMethod, "Periodic profile w of the noise", methods::kNoiseProfileNames,
+               FS_REF(params.common.noise.profile)));
+    add(param<uint32_t>("seed", gMethod, "Noise seed", FS_REF(params.common.noise.seed), 0, 4294967295.0));
+    add(param<int>("grid-res", gMethod, "ISA advection mesh resolution R (R x R cells)", FS_REF(params.isa.gridRes), 64, 1024));
+    add(choice("isa-warp", gMethod, "ISA texture advection: pixel (mesh interpolated per pixel) or mesh (draw the "
+               "R x R grid)", methods::kIsaWarpNames, FS_REF(params.isa.warp)));
+    add(flag("cull-back-faces", gMethod, "Skip back-facing triangles (closed, outward-oriented surfaces only)",
+             FS_REF(params.common.cullBackFaces)));
+    add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));
+    add(choice("on-camera-move", gMethod, "When the camera moves: translate (reproject the texture with the "
+               "surface), freeze, none [L §IV-I]", methods::kCameraMoveNames, FS_REF(params.common.onCameraMove)));
+    add(param<int>("filter-length", gMethod, "Hybrid LIC filter length L in samples ([W] 25-70)",
+                   FS_REF(params.hybrid.filterLength), 1, 1001));
+    add(choice("kernel", gMethod, "Hybrid LIC kernel", methods::kKernelNames, FS_REF(params.hybrid.kernel)));
+    add(choice("integrator", gMethod, "Hybrid particle integrator (euler as in [W])", methods::kIntegratorNames,
+               FS_REF(params.hybrid.integrator)));
+    {
+        OptionSpec s = param<int>("noise-size", gMethod, "Hybrid solid noise texels per side (64 or 128)",
+                                  FS_REF(params.hybrid.noiseSize), 64, 128);
+        s.kind = OptionKind::Choice;
+        s.choices = {"64", "128"};
+        auto inner = s.set;
+        s.set = [inner](RenderOptions& o, const std::string& v) {
+            if (v != "64" && v != "128") throw ConfigError("--noise-size: '" + v + "' is not one of 64, 128");
+            inner(o, v);
+        };
+        add(s);
+    }
+    add(param<float>("edge-epsilon", gMethod, "ISA edge detection eps [L eq. 14], depth range per pixel",
+                     FS_REF(params.isa.edgeEpsilon), 0, 10));
+    add(onOff("edge-blending", gMethod, "ISA edge blending [L §IV-E.1]", FS_REF(params.isa.edgeBlending)));
 
+    // Overlay
     const std::string gLook = "Overlay";
-    cmd.add_option_function<std::string>("--overlay", [&p](const std::string& s) {
-        using methods::OverlayScheme;
-        p.common.overlay = s == "gray" ? OverlayScheme::Gray
-                         : s == "gray-lit" ? OverlayScheme::GrayLit
-                         : s == "hue-lit" ? OverlayScheme::HueLit
-                         : s == "coolwarm" ? OverlayScheme::CoolWarm : OverlayScheme::Blend;
-    }, "blend (eq. 10: texture + colour map x lighting, default); or [W Fig. 6]: gray, gray-lit, hue-lit, coolwarm")
-        ->group(gLook)->check(CLI::IsMember({"blend", "gray", "gray-lit", "hue-lit", "coolwarm"}));
-    cmd.add_option_function<std::string>("--colormap", [&p](const std::string& s) {
-        p.common.colormap = s == "none" ? methods::Colormap::None
-                          : s == "coolwarm" ? methods::Colormap::CoolWarm
-                          : s == "gray" ? methods::Colormap::Gray : methods::Colormap::Viridis;
-    }, "Colour map of speed: viridis, coolwarm, gray, none (default viridis)")
-        ->group(gLook)->check(CLI::IsMember({"viridis", "coolwarm", "gray", "none"}));
-    cmd.add_option_function<std::string>("--lighting", [&p](const std::string& s) { p.common.lighting = s == "on"; },
-                                         "Diffuse lighting on|off (default on)")
-        ->group(gLook)->check(CLI::IsMember({"on", "off"}));
-    cmd.add_flag("--velocity-mask", p.common.velocityMask, "Texture contrast follows speed [L ref 14]")->group(gLook);
-    cmd.add_option("--contrast", p.common.contrast, "Display gain of the flow texture about its mean")
-        ->group(gLook)->capture_default_str()->check(CLI::Range(0.0f, 20.0f));
-    cmd.add_option_function<std::string>("--background", [&p](const std::string& s) { p.common.background = parseColor(s); },
-                                         "Background colour: #RRGGBB, r,g,b in 0..1, black, white, gray")->group(gLook);
+    add(choice("overlay", gLook, "blend (eq. 10: texture + colour map x lighting); or [W Fig. 6]: gray, gray-lit, "
+               "hue-lit, coolwarm", methods::kOverlayNames, FS_REF(params.common.overlay)));
+    add(choice("colormap", gLook, "Colour map of speed", methods::kColormapNames, FS_REF(params.common.colormap)));
+    add(onOff("lighting", gLook, "Diffuse lighting", FS_REF(params.common.lighting)));
+    add(flag("velocity-mask", gLook, "Texture contrast follows speed [L ref 14]", FS_REF(params.common.velocityMask)));
+    add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean", FS_REF(params.common.contrast), 0, 20));
+    {
+        OptionSpec s{"background", "", gLook, "Background colour: #RRGGBB, r,g,b in 0..1, black, white, gray",
+                     OptionKind::Color, 0, 1, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) { o.params.common.background = parseColor(v); };
+        s.get = [](const RenderOptions& o) { return vec3Text(o.params.common.background); };
+        add(s);
+    }
 
+    // Camera
     const std::string gCam = "Camera";
-    cmd.add_option_function<std::string>("--eye", [&o](const std::string& s) { o.eye = parseVec3(s, "--eye"); },
-                                         "Eye position x,y,z (default: fit the bounds)")->group(gCam);
-    cmd.add_option_function<std::string>("--target", [&o](const std::string& s) { o.target = parseVec3(s, "--target"); },
-                                         "Look-at point x,y,z (default: centre of the bounds)")->group(gCam);
-    cmd.add_option_function<std::string>("--up", [&o](const std::string& s) { o.up = parseVec3(s, "--up"); },
-                                         "Up vector x,y,z (default 0,1,0)")->group(gCam);
-    cmd.add_option("--fov", o.fov, "Vertical field of view in degrees")
-        ->group(gCam)->capture_default_str()->check(CLI::Range(1.0f, 170.0f));
-    cmd.add_option("--ortho", o.ortho, "Orthographic view with this view height (object units)")
-        ->group(gCam)->check(CLI::PositiveNumber);
-    cmd.add_option("--orbit", o.orbit, "Camera turns this many degrees per frame about the up axis (dynamic case)")
-        ->group(gCam)->capture_default_str()->check(CLI::Range(-180.0f, 180.0f));
-    cmd.add_option("--camera-path", o.cameraPath, "Keyframed camera path (JSON); see README")->group(gCam);
+    add(vec3("eye", "Eye position x,y,z (default: fit the bounds)", &RenderOptions::eye));
+    add(vec3("target", "Look-at point x,y,z (default: centre of the bounds)", &RenderOptions::target));
+    add(vec3("up", "Up vector x,y,z (default 0,1,0)", &RenderOptions::up));
+    add(number("fov", gCam, "Vertical field of view in degrees", &RenderOptions::fov, 1, 170));
+    add(number("ortho", gCam, "Orthographic view with this view height (object units; 0: perspective)",
+               &RenderOptions::ortho, 0, 1e30));
+    add(number("orbit", gCam, "Camera turns this many degrees per frame about the up axis (dynamic case)",
+               &RenderOptions::orbit, -180, 180));
+    add(text("camera-path", gCam, "Keyframed camera path (JSON); see README", FS_REF(cameraPath), OptionKind::Path));
+    return t;
+}
+
+#undef FS_REF
+
+}  // namespace
+
+const std::vector<OptionSpec>& renderOptionTable() {
+    static const std::vector<OptionSpec> table = buildTable();
+    return table;
+}
+
+const OptionSpec* findOption(const std::string& name) {
+    for (const OptionSpec& s : renderOptionTable())
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+void setOption(RenderOptions& o, const std::string& name, const std::string& value) {
+    const OptionSpec* s = findOption(name);
+    if (!s) throw ConfigError("unknown option '" + name + "'");
+    s->set(o, value);
+}
+
+std::string defaultText(const OptionSpec& spec) {
+    static const RenderOptions defaults;
+    return spec.get(defaults);
+}
+
+void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
+    for (const OptionSpec& spec : renderOptionTable()) {
+        const OptionSpec* s = &spec;
+        if (s->name == "input") {
+            cmd.add_option("input", o.input, s->help);
+            continue;
+        }
+        std::string names = (s->shortName.empty() ? "" : "-" + s->shortName + ",") + dashed(s->name);
+        std::string help = s->help;
+        if (s->kind == OptionKind::Choice) {
+            std::string list;
+            for (const auto& c : s->choices) list += (list.empty() ? "" : "|") + c;
+            help += " [" + list + "]";
+        } else if (s->kind == OptionKind::Int || s->kind == OptionKind::Float) {
+            auto bound = [](double v) {
+                return v == std::floor(v) && std::abs(v) < 1e15 ? std::to_string(static_cast<long long>(v))
+                                                                 : formatDouble(v);
+            };
+            help += s->max >= 1e29 ? " [>= " + bound(s->min) + "]" : " [" + bound(s->min) + ".." + bound(s->max) + "]";
+        }
+        if (std::string d = defaultText(*s); !d.empty() && s->kind != OptionKind::Flag) help += " (default " + d + ")";
+        CLI::Option* opt = nullptr;
+        if (s->kind == OptionKind::Flag)
+            opt = cmd.add_flag_callback(names, [&o, s] { s->set(o, "true"); }, help);
+        else
+            opt = cmd.add_option_function<std::string>(names, [&o, s](const std::string& v) { s->set(o, v); }, help);
+        static const char* const kTypeNames[] = {"", "INT", "FLOAT", "TEXT", "CHOICE", "WxH", "X,Y,Z", "COLOR", "PATH"};
+        opt->group(s->group)->type_name(kTypeNames[int(s->kind)]);
+    }
+    cmd.add_flag("--list-builtins", o.listBuiltins, "List the built-in scenes and exit");
 }
 
 void validateRenderOptions(const RenderOptions& o) {

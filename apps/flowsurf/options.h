@@ -1,5 +1,7 @@
-// flowsurf — the options of `flowsurf render` (one table: CLI11 drives --help from it)
-// and the parsers of their value syntaxes. Library-free of GL so unit tests cover it.
+// flowsurf — the options of `flowsurf render`, `compare` and `view` as one table of data
+// (name, group, help, kind, range, choices, how to set and read the value): the command
+// line (CLI11, --help), config files, the viewer's panel and its event logs all use it.
+// Also the parsers of the value syntaxes. Free of GL so unit tests cover it.
 #pragma once
 
 #include "core/camera.h"
@@ -7,8 +9,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace flowsurf::app {
 
@@ -40,6 +44,34 @@ struct RenderOptions {
     methods::MethodParams params;
 };
 
+// What kind of value an option takes (the viewer picks its widget from this).
+enum class OptionKind { Flag, Int, Float, Text, Choice, Size, Vec3, Color, Path };
+
+struct OptionSpec {
+    std::string name;                 // long name without dashes: CLI --name, config key, event `set name`
+    std::string shortName;            // one letter (-m) or empty
+    std::string group;                // Output, Data, Method, Overlay, Camera
+    std::string help;                 // one line; the default is appended from RenderOptions{}
+    OptionKind kind = OptionKind::Text;
+    double min = 0.0, max = 0.0;      // numeric range, inclusive (Int, Float)
+    std::vector<std::string> choices; // Choice
+    bool saved = true;                // part of a saved view state (config files)
+    // Parses and checks `text` and stores it; throws ConfigError naming the option.
+    std::function<void(RenderOptions&, const std::string&)> set;
+    // The value as text that set() reads back exactly; empty when unset (e.g. camera
+    // "fit the bounds").
+    std::function<std::string(const RenderOptions&)> get;
+};
+
+// Every option of render/compare/view, in --help order. The positional input is "input".
+const std::vector<OptionSpec>& renderOptionTable();
+// The option named `name` (long name without dashes), or null.
+const OptionSpec* findOption(const std::string& name);
+// Sets option `name` from text; throws ConfigError for an unknown name or a bad value.
+void setOption(RenderOptions& o, const std::string& name, const std::string& value);
+// The default of an option as text (from RenderOptions{}): empty when it has none.
+std::string defaultText(const OptionSpec& spec);
+
 // Adds the render options, grouped by topic, to `cmd`.
 void addRenderOptions(CLI::App& cmd, RenderOptions& opt);
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.
@@ -50,6 +82,10 @@ float parseFloat(const std::string& text, const std::string& what);
 core::Viewport parseSize(const std::string& text, const std::string& what = "--size");
 glm::vec3 parseVec3(const std::string& text, const std::string& what);
 glm::vec3 parseColor(const std::string& text, const std::string& what = "--background");
+
+// Numbers as text that parse back to the same value.
+std::string formatFloat(float value);
+std::string formatDouble(double value);
 
 // Output kind from the file name: .png (final frame), .mp4 (all frames), %d pattern.
 enum class OutputKind { Png, Mp4, PngSequence };

@@ -1,5 +1,6 @@
 // Option parsing of `flowsurf render`: the names scripts depend on, and refusals.
 #include "core/errors.h"
+#include "config_file.h"
 #include "options.h"
 
 #include <gtest/gtest.h>
@@ -48,11 +49,11 @@ TEST(CliOptions, ParsesTheDocumentedNames) {
 }
 
 TEST(CliOptions, RefusesOutOfRangeAndUnknownValues) {
-    EXPECT_THROW(parse({"x", "--grid-res", "32"}), CLI::ValidationError);
-    EXPECT_THROW(parse({"x", "--grid-res", "2048"}), CLI::ValidationError);
-    EXPECT_THROW(parse({"x", "--method", "lic"}), CLI::ValidationError);
-    EXPECT_THROW(parse({"x", "--alpha", "1.5"}), CLI::ValidationError);
-    EXPECT_THROW(parse({"x", "--frames", "-1"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--grid-res", "32"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--grid-res", "2048"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--method", "lic"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--alpha", "1.5"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--frames", "-1"}), ConfigError);
     EXPECT_THROW(parse({"x", "--size", "0x100"}), ConfigError);
     EXPECT_THROW(parse({"x", "--size", "100000x100000"}), ConfigError);
     EXPECT_THROW(parse({"x", "--size", "big"}), ConfigError);
@@ -79,4 +80,78 @@ TEST(CliOptions, SizeAndColourSyntaxes) {
     EXPECT_EQ(parseColor("white"), glm::vec3(1.0f));
     EXPECT_EQ(parseColor("0,0.5,1"), glm::vec3(0, 0.5f, 1));
     EXPECT_THROW(parseColor("0,0.5,2"), ConfigError);
+}
+
+// Every option of the table: its default text reads back to the default, and the
+// help shows it (defaults are printed from the structs, never retyped).
+TEST(CliOptions, TableDefaultsRoundTrip) {
+    for (const OptionSpec& spec : renderOptionTable()) {
+        RenderOptions o;
+        const std::string d = defaultText(spec);
+        if (d.empty() || spec.name == "input") continue;
+        EXPECT_NO_THROW(spec.set(o, d)) << spec.name << " = " << d;
+        EXPECT_EQ(spec.get(o), d) << spec.name;
+    }
+    RenderOptions o;
+    setOption(o, "filter-length", "45");
+    setOption(o, "kernel", "hann");
+    setOption(o, "edge-mask", "true");
+    EXPECT_EQ(o.params.hybrid.filterLength, 45);
+    EXPECT_EQ(o.params.hybrid.kernel, methods::LicKernel::Hann);
+    EXPECT_TRUE(o.params.ibfvs.edgeMask);
+    EXPECT_THROW(setOption(o, "no-such-option", "1"), ConfigError);
+    EXPECT_THROW(setOption(o, "filter-length", "4.5"), ConfigError);
+    EXPECT_THROW(setOption(o, "kernel", "triangle"), ConfigError);
+}
+
+// A saved state reads back to the same options, exactly (floats included), and the
+// file's values are overridden by options applied after it.
+TEST(CliOptions, ConfigFileRoundTrip) {
+    RenderOptions a;
+    a.input = "builtin:tori";
+    a.method = "hybrid";
+    a.size = {321, 123};
+    a.eye = glm::vec3(1.0f / 3.0f, -2.7182817f, 12345.678f);
+    a.target = glm::vec3(0.1f, 0.2f, 0.3f);
+    a.up = glm::vec3(0, 0, 1);
+    a.fov = 33.3f;
+    a.timeRange = std::make_pair(0.1, 0.7);
+    a.params.common.alpha = 0.123f;
+    a.params.common.background = {0.2f, 0.4f, 0.6f};
+    a.params.hybrid.integrator = methods::Integrator::Rk4;
+    a.params.ibfvs.edgeMask = true;
+    a.params.common.normalize = false;
+    const std::string path = ::testing::TempDir() + "flowsurf_config_roundtrip.json";
+    writeConfigFile(path, a);
+    RenderOptions b;
+    applyConfigFile(path, b);
+    for (const OptionSpec& spec : renderOptionTable())
+        if (spec.saved) EXPECT_EQ(spec.get(b), spec.get(a)) << spec.name;
+    EXPECT_EQ(*b.eye, *a.eye);
+    EXPECT_EQ(b.params.common.background, a.params.common.background);
+    std::remove(path.c_str());
+}
+
+TEST(CliOptions, ConfigFileErrorsNameFileAndKey) {
+    const std::string path = ::testing::TempDir() + "flowsurf_config_bad.json";
+    auto write = [&](const char* text) { std::FILE* f = std::fopen(path.c_str(), "w"); std::fputs(text, f); std::fclose(f); };
+    RenderOptions o;
+    write("{\"alpha\": 7}");
+    try {
+        applyConfigFile(path, o);
+        FAIL() << "out-of-range alpha accepted";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("flowsurf_config_bad.json"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("alpha"), std::string::npos) << e.what();
+    }
+    write("{\"colour\": \"red\"}");
+    EXPECT_THROW(applyConfigFile(path, o), ConfigError);
+    write("{\"alpha\": ");
+    EXPECT_THROW(applyConfigFile(path, o), FormatError);
+    write("[1, 2]");
+    EXPECT_THROW(applyConfigFile(path, o), FormatError);
+    EXPECT_THROW(applyConfigFile(path + ".missing", o), IoError);
+    std::remove(path.c_str());
+    const char* argv[] = {"flowsurf", "render", "--config", "a.json", "-o", "x.png"};
+    EXPECT_EQ(findConfigArgument(6, argv).value(), "a.json");
 }

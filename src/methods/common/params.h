@@ -6,7 +6,10 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace flowsurf::methods {
 
@@ -89,5 +92,33 @@ struct MethodParams {
     IbfvsParams ibfvs;
     HybridParams hybrid;
 };
+
+// The names of the enum values: one table per enum, used by the command line, config
+// files, the viewer and every other front end (apps/flowsurf/options.cpp).
+template <typename E, size_t N>
+using EnumNames = std::array<std::pair<E, std::string_view>, N>;
+
+inline constexpr EnumNames<Colormap, 4> kColormapNames{{
+    {Colormap::Viridis, "viridis"}, {Colormap::CoolWarm, "coolwarm"}, {Colormap::Gray, "gray"}, {Colormap::None, "none"}}};
+inline constexpr EnumNames<OverlayScheme, 5> kOverlayNames{{{OverlayScheme::Blend, "blend"},
+                                                            {OverlayScheme::Gray, "gray"},
+                                                            {OverlayScheme::GrayLit, "gray-lit"},
+                                                            {OverlayScheme::HueLit, "hue-lit"},
+                                                            {OverlayScheme::CoolWarm, "coolwarm"}}};
+inline constexpr EnumNames<CameraMoveRemedy, 3> kCameraMoveNames{{{CameraMoveRemedy::Translate, "translate"},
+                                                                  {CameraMoveRemedy::Freeze, "freeze"},
+                                                                  {CameraMoveRemedy::None, "none"}}};
+inline constexpr EnumNames<IsaWarp, 2> kIsaWarpNames{{{IsaWarp::Pixel, "pixel"}, {IsaWarp::Mesh, "mesh"}}};
+inline constexpr EnumNames<LicKernel, 4> kKernelNames{{{LicKernel::Box, "box"},
+                                                       {LicKernel::Exponential, "exponential"},
+                                                       {LicKernel::Gaussian, "gaussian"},
+                                                       {LicKernel::Hann, "hann"}}};
+inline constexpr EnumNames<Integrator, 3> kIntegratorNames{{{Integrator::Euler, "euler"},
+                                                            {Integrator::Rk2, "rk2"},
+                                                            {Integrator::Rk4, "rk4"}}};
+inline constexpr EnumNames<core::NoiseProfile, 2> kNoiseProfileNames{{{core::NoiseProfile::Square, "square"},
+                                                                      {core::NoiseProfile::Sawtooth, "sawtooth"}}};
+// The methods, in the order the viewer cycles through them.
+inline constexpr std::array<std::string_view, 3> kMethodNames{"isa", "ibfvs", "hybrid"};
 
 }  // namespace flowsurf::methods
