@@ -40,11 +40,16 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
     levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
 }
 
-const methods::TimeLevels* AnimatedSurface::levelsAt(int frame) {
+const std::vector<double>& AnimatedSurface::times() const {
+    static const std::vector<double> none;
+    return stream_ ? stream_->times() : none;
+}
+
+const methods::TimeLevels* AnimatedSurface::levelsAtTime(double t, double perFrame) {
     if (!stream_) return nullptr;
-    const double perStep = options_.traceDt ? *options_.traceDt : std::abs(mapping_.perFrame);
+    const double perStep = options_.traceDt ? *options_.traceDt : std::abs(perFrame);
     const int halfSteps = std::max(0, (options_.params.hybrid.filterLength - 1) / 2);
-    const methods::TimeLevels& levels = levels_->at(mapping_.at(frame), perStep, halfSteps);
+    const methods::TimeLevels& levels = levels_->at(t, perStep, halfSteps);
     return levels.empty() ? nullptr : &levels;
 }
 
@@ -55,10 +60,9 @@ void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& w
                                                      options_.params.ibfvs.edgeMask);
 }
 
-const methods::SurfaceGpu& AnimatedSurface::at(int frame) {
+const methods::SurfaceGpu& AnimatedSurface::atTime(double t) {
     if (stream_) {
         bool changed = false;
-        const double t = mapping_.at(frame);
         const core::SurfaceMesh& mesh = stream_->meshAt(t, &changed);
         if (!changed && surface_) return *surface_;
         const size_t topology = stream_->topologyStep();

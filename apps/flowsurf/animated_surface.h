@@ -18,14 +18,21 @@ public:
     // Throws ConfigError/FieldError, and what loading a step throws.
     AnimatedSurface(const RenderOptions& o, core::StepProvider& steps);
     // The surface for frame k (uploaded when the data changed since the last call).
-    const methods::SurfaceGpu& at(int frame);
+    const methods::SurfaceGpu& at(int frame) { return atTime(mapping_.at(frame)); }
+    // The surface at data time t (the viewer's clock runs apart from the frame count).
+    const methods::SurfaceGpu& atTime(double t);
     // For methods that integrate through time (the hybrid's pathlines, [W §3]): the field
     // around frame k's data time, over the particles' time window (--trace-dt per step,
     // default the data time per frame; --filter-length steps). Null for steady data.
     // Call after at(frame).
-    const methods::TimeLevels* levelsAt(int frame);
+    const methods::TimeLevels* levelsAt(int frame) { return levelsAtTime(mapping_.at(frame), mapping_.perFrame); }
+    // The same around data time t, with `perFrame` data time per animation frame.
+    const methods::TimeLevels* levelsAtTime(double t, double perFrame);
     bool unsteady() const { return stream_ != nullptr; }
     double timeAt(int frame) const { return mapping_.at(frame); }
+    const core::TimeMapping& mapping() const { return mapping_; }
+    // The data times of the steps (empty for steady data).
+    const std::vector<double>& times() const;
     const std::string& field() const { return field_; }
     size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
 

@@ -4,6 +4,8 @@
 #include "config_file.h"
 #include "core/errors.h"
 #include "exit_codes.h"
+#include "view_app.h"
+#include "view_state.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +27,25 @@ int main(int argc, char** argv) {
     CLI::App* compareCmd = app.add_subcommand("compare", "Methods side by side on one camera, labelled with ms/frame");
     app::addRenderOptions(*compareCmd, compare);
     compareCmd->add_option("--methods", compareMethods, "Comma-separated methods to compare")->capture_default_str();
+
+    app::RenderOptions view;
+    app::view::ViewOptions viewOpts;
+    CLI::App* viewCmd = app.add_subcommand("view", "Interactive viewer: turn, zoom, switch methods, play time");
+    app::addRenderOptions(*viewCmd, view);
+    const std::string gView = "Viewer";
+    viewCmd->add_option("--compare", viewOpts.compare, "Methods side by side sharing one camera, e.g. isa,ibfvs,hybrid")
+        ->group(gView);
+    viewCmd->add_option("--play", viewOpts.play, "Replay an event log (see README, Viewer)")->group(gView);
+    viewCmd->add_option("--record-events", viewOpts.recordEvents, "Write this session's events as a log")->group(gView);
+    viewCmd->add_option("--stats", viewOpts.stats, "Write per-frame times as JSON on exit")->group(gView);
+    viewCmd->add_flag("--headless", viewOpts.headless, "No window: EGL, driven by --play (tests, batch replays)")
+        ->group(gView);
+    {
+        std::string keys = "\nMouse: left drag rotates (turntable; trackball with t), middle drag or shift+left drag "
+                           "pans, the wheel zooms towards the cursor, right drag zooms; drop a file to open it.\nKeys:\n";
+        for (const auto& k : app::view::keyTable()) keys += "  " + std::string(k.name) + "\t" + k.description + "\n";
+        viewCmd->footer(keys);
+    }
 
     std::string infoPath;
     CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, bounds");
@@ -49,13 +70,14 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::Range(1, 1001));
 
     // --config FILE: the file's options first, the command line's on top of them.
-    for (CLI::App* cmd : {renderCmd, compareCmd})
+    for (CLI::App* cmd : {renderCmd, compareCmd, viewCmd})
         cmd->add_option("--config", "JSON config (e.g. saved by the viewer); options given here override it")
             ->group("Output");
     try {
         if (auto config = app::findConfigArgument(argc, argv)) {
             app::applyConfigFile(*config, render);
             compare = render;
+            view = render;
         }
     } catch (const ConfigError& e) {
         std::fprintf(stderr, "flowsurf: %s\n", e.what());
@@ -87,6 +109,14 @@ int main(int argc, char** argv) {
     try {
         if (*renderCmd) return app::runRender(render);
         if (*infoCmd) return app::runInfo(infoPath);
+        if (*viewCmd) {
+#ifdef FLOWSURF_HAVE_VIEWER
+            if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");
+            return app::view::runView(view, viewOpts);
+#else
+            throw ConfigError("view: this flowsurf was built without the viewer (FLOWSURF_BUILD_VIEWER=OFF)");
+#endif
+        }
         if (*compareCmd) return app::runCompare(compare, compareMethods);
         if (*benchCmd) return app::runBench(bench);
     } catch (const ConfigError& e) {

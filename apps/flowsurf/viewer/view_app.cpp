@@ -1,0 +1,346 @@
+// The viewer's frame loop, shared by the window and the headless replay:
+//   (1) input events of this frame (live input, panel edits, the replayed log) -> state
+//   (2) what they ask for: open/reload data, rebuild renderers, resize, record
+//   (3) render every view (the method's stage list, as `render` runs it)
+//   (4) show it (window only), then this frame's outputs (screenshot, config, ...)
+#include "view_app.h"
+
+#include "camera_path_file.h"
+#include "config_file.h"
+#include "core/errors.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "io/image_writer.h"
+#include "io/text_writer.h"
+#include "io/video_writer.h"
+#include "view_pipeline.h"
+#include "view_state.h"
+#include "view_window.h"
+
+#include <epoxy/gl.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace flowsurf::app::view {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::vector<std::string> splitList(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream ss(list);
+    for (std::string m; std::getline(ss, m, ',');)
+        if (!m.empty()) out.push_back(m);
+    return out;
+}
+
+// Appends the camera as a keyframe to a --camera-path file (created if missing).
+void appendKeyframe(const std::string& path, const core::Camera& c, uint32_t frame) {
+    nlohmann::ordered_json doc = {{"keyframes", nlohmann::json::array()}};
+    if (std::ifstream f(path); f) {
+        try {
+            doc = nlohmann::ordered_json::parse(f);
+        } catch (const nlohmann::json::parse_error& e) {
+            throw FormatError(path + ": not valid JSON (" + e.what() + "); not appending to it");
+        }
+        if (!doc.is_object() || !doc.contains("keyframes") || !doc["keyframes"].is_array())
+            throw FormatError(path + ": expected {\"keyframes\": [...]}; not appending to it");
+    }
+    auto& keys = doc["keyframes"];
+    if (!keys.empty() && keys.back().contains("frame") && keys.back()["frame"].is_number_integer() &&
+        keys.back()["frame"].get<long>() >= long(frame))
+        frame = uint32_t(keys.back()["frame"].get<long>() + 30);  // keyframes must move forward
+    keys.push_back({{"frame", frame},
+                    {"eye", {c.eye.x, c.eye.y, c.eye.z}},
+                    {"target", {c.target.x, c.target.y, c.target.z}},
+                    {"up", {c.up.x, c.up.y, c.up.z}},
+                    {"fov", c.fovDeg}});
+    io::writeTextFile(path, doc.dump(2) + "\n");
+}
+
+class Session {
+public:
+    Session(const RenderOptions& o, const ViewOptions& v) : view_(v), state_(o) {
+        state_.compare = splitList(v.compare);
+        for (const auto& m : state_.compare)
+            if (m != "isa" && m != "ibfvs" && m != "hybrid")
+                throw ConfigError("--compare: '" + m + "' is not one of isa, ibfvs, hybrid");
+        if (!v.play.empty()) replay_ = readEventLog(v.play);
+        if (v.headless && v.play.empty()) throw ConfigError("view --headless needs --play FILE (an event log)");
+        const int n = int(state_.shownMethods().size());
+        if (v.headless) {
+            context_ = std::make_unique<gl::HeadlessContext>(o.verbose);
+            renderer_ = context_->renderer();
+        } else {
+            window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view");
+            renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        }
+        info_.renderer = renderer_;
+        state_.setWindowSize(o.size.width * n, o.size.height);
+        // The initial data: headless, an error ends the run; in a window it is shown.
+        try {
+            loadData(state_.options);
+        } catch (const std::exception& e) {
+            if (v.headless) throw;
+            report(e.what());
+        }
+    }
+
+    int run() {
+        for (long frame = 0;; ++frame) {
+            const auto t0 = Clock::now();
+            // (1) input
+            std::vector<Event> input = window_ ? window_->poll(frame) : std::vector<Event>{};
+            while (next_ < replay_.size() && replay_[next_].frame <= frame) input.push_back(replay_[next_++]);
+            for (const Event& e : input) {
+                state_.handle(e);
+                if (!view_.recordEvents.empty()) {
+                    recorded_.push_back(e);
+                    recorded_.back().frame = frame;
+                }
+            }
+            if (!state_.error.empty() && state_.error != lastError_) report(state_.error);
+            // (2) requests
+            Requests req = state_.takeRequests();
+            applyRequests(req);
+            // (3) render
+            const bool rendered = renderIfNeeded();
+            if (recorder_ && rendered) recordFrame();
+            // (4) show, then outputs
+            if (window_) window_->present(state_, pipeline_, info_);
+            for (const Event& out : req.outputs) output(out);
+            if (rendered && !view_.stats.empty()) frameMs_.push_back(msSince(t0));
+            info_.frameMs = msSince(t0);
+            if (rendered) state_.frameDone();
+            const bool replayDone = next_ >= replay_.size();
+            if (req.quit || (window_ && window_->closeRequested()) || (!window_ && replayDone)) break;
+        }
+        finish();
+        return 0;
+    }
+
+private:
+    static double msSince(Clock::time_point t0) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    }
+
+    void report(const std::string& message) {
+        std::fprintf(stderr, "flowsurf view: %s\n", message.c_str());
+        state_.error = message;
+        lastError_ = message;
+    }
+
+    // Reads `o`'s input; the state takes it only on success.
+    void loadData(const RenderOptions& o) {
+        pipeline_.load(o);
+        loaded_ = o;
+        state_.options.input = o.input;
+        state_.options.field = o.field;
+        state_.dataLoaded(pipeline_.bounds(), pipeline_.times(), pipeline_.defaultPerFrame());
+        build();
+        if (window_) window_->setTitle("flowsurf view — " + o.input);
+    }
+
+    void build() {
+        pipeline_.build(state_.options, state_.shownMethods(), state_.viewSize());
+        state_.restartClock();
+        mustRender_ = true;
+    }
+
+    void applyRequests(const Requests& req) {
+        if (req.resize) {
+            if (window_) window_->resize(req.resize->x, req.resize->y);
+            state_.setWindowSize(req.resize->x, req.resize->y);
+        }
+        if (window_) {
+            int w = 0, h = 0;
+            window_->framebufferSize(&w, &h);
+            if (w > 0 && h > 0 && (w != state_.windowSize().width || h != state_.windowSize().height))
+                state_.setWindowSize(w, h);
+        }
+        try {
+            if (req.open) {
+                RenderOptions o = state_.options;
+                o.input = *req.open;
+                o.field.clear();  // a new file has its own arrays
+                o.eye.reset(), o.target.reset();
+                o.timeRange.reset(), o.timeStepGiven = false;
+                loadData(o);
+                state_.status = "opened " + o.input;
+            } else if (req.reload) {
+                loadData(state_.options);
+            }
+        } catch (const std::exception& e) {
+            // Keep the data that was loaded: restore the options that describe it.
+            state_.options.input = loaded_.input;
+            state_.options.field = loaded_.field;
+            state_.options.timeRange = loaded_.timeRange;
+            state_.options.timeStep = loaded_.timeStep;
+            state_.options.timeStepGiven = loaded_.timeStepGiven;
+            state_.options.timePerFrame = loaded_.timePerFrame;
+            state_.options.framesPerStep = loaded_.framesPerStep;
+            report(e.what());
+        }
+        const bool sizeChanged = pipeline_.ready() && (pipeline_.viewSize().width != state_.viewSize().width ||
+                                                       pipeline_.viewSize().height != state_.viewSize().height ||
+                                                       pipeline_.viewCount() != state_.shownMethods().size());
+        if ((req.rebuild || sizeChanged) && pipeline_.ready()) {
+            try {
+                build();
+            } catch (const std::exception& e) {
+                report(e.what());
+            }
+        }
+        if (req.recordStop) stopRecording();
+        if (req.recordStart) {
+            try {
+                stopRecording();
+                const core::Viewport v = pipeline_.viewSize();
+                recorder_ = std::make_unique<io::VideoWriter>(
+                    *req.recordStart, v.width * int(pipeline_.viewCount()), v.height,
+                    io::VideoOptions{state_.options.fps, state_.options.crf});
+                recordPath_ = *req.recordStart;
+                state_.recording = true;
+                state_.status = "recording " + recordPath_;
+            } catch (const std::exception& e) {
+                report(e.what());
+            }
+        }
+    }
+
+    bool renderIfNeeded() {
+        if (!pipeline_.ready()) return false;
+        core::Camera camera;
+        try {
+            camera = state_.camera();
+        } catch (const std::exception& e) {
+            report(e.what());
+            state_.options.cameraPath.clear();
+            return false;
+        }
+        const bool changed = mustRender_ || !core::sameCamera(camera, lastCamera_) || state_.time != lastTime_;
+        if (!state_.advancing() && !changed) return false;
+        try {
+            pipeline_.render(camera, state_.clock(), state_.time, state_.timePerFrame);
+        } catch (const std::exception& e) {
+            report(e.what());
+            state_.paused = true;  // a corrupt step: stop where it is rather than repeat the error
+            return false;
+        }
+        lastCamera_ = camera;
+        lastTime_ = state_.time;
+        mustRender_ = false;
+        if (++timerFrames_ >= 30) {  // the panel shows means over the last 30 frames
+            for (size_t i = 0; i < pipeline_.viewCount(); ++i) {
+                if (view_.stats.empty()) pipeline_.method(i).timer().reset();
+            }
+            timerFrames_ = 0;
+        }
+        return true;
+    }
+
+    void recordFrame() {
+        int w = 0, h = 0;
+        std::vector<uint8_t> img = pipeline_.readImage(&w, &h);
+        try {
+            recorder_->addFrame(img);
+        } catch (const std::exception& e) {
+            recorder_.reset();
+            state_.recording = false;
+            report(e.what());
+        }
+    }
+
+    void stopRecording() {
+        if (!recorder_) return;
+        try {
+            recorder_->finish();
+            state_.status = "wrote " + recordPath_;
+        } catch (const std::exception& e) {
+            report(e.what());
+        }
+        recorder_.reset();
+        state_.recording = false;
+    }
+
+    void output(const Event& e) {
+        try {
+            switch (e.type) {
+            case EventType::Screenshot: {
+                if (!pipeline_.ready()) throw ConfigError("screenshot: nothing rendered yet");
+                int w = 0, h = 0;
+                std::vector<uint8_t> img = pipeline_.readImage(&w, &h);
+                io::writePngRgb8(e.value, w, h, 3, img);
+                break;
+            }
+            case EventType::FlowTexture: {
+                if (!pipeline_.ready()) throw ConfigError("flow-texture: nothing rendered yet");
+                const core::Viewport v = pipeline_.viewSize();
+                io::writePngGray16(e.value, v.width, v.height, gl::readGray16TopDown(pipeline_.method(0).flowTexture()));
+                break;
+            }
+            case EventType::SaveConfig: writeConfigFile(e.value, state_.batchOptions()); break;
+            case EventType::SaveKeyframe: appendKeyframe(e.value, state_.camera(), state_.clock()); break;
+            default: return;
+            }
+            state_.status = "wrote " + e.value;
+            if (!state_.options.quiet) std::fprintf(stderr, "flowsurf view: wrote %s\n", e.value.c_str());
+        } catch (const std::exception& ex) {
+            report(ex.what());
+        }
+    }
+
+    void finish() {
+        stopRecording();
+        if (!view_.recordEvents.empty()) {
+            std::vector<Event> log = recorded_;
+            log.push_back({long(log.empty() ? 0 : log.back().frame), EventType::Quit});
+            io::writeTextFile(view_.recordEvents, formatEventLog(log));
+        }
+        if (!view_.stats.empty()) {
+            nlohmann::ordered_json doc;
+            doc["frame_ms"] = frameMs_;
+            nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+            for (size_t i = 0; pipeline_.ready() && i < pipeline_.viewCount(); ++i)
+                for (const auto& [stage, ms] : pipeline_.method(i).timer().meanMs())
+                    stages[pipeline_.viewCount() > 1 ? pipeline_.methodName(i) + "/" + stage : stage] = ms;
+            doc["stage_ms"] = stages;
+            doc["renderer"] = renderer_;
+            doc["view_size"] = {pipeline_.viewSize().width, pipeline_.viewSize().height};
+            io::writeTextFile(view_.stats, doc.dump(2) + "\n");
+        }
+    }
+
+    ViewOptions view_;
+    ViewerState state_;
+    std::unique_ptr<gl::HeadlessContext> context_;
+    std::unique_ptr<Window> window_;
+    ViewPipeline pipeline_;
+    RenderOptions loaded_;
+    std::vector<Event> replay_, recorded_;
+    size_t next_ = 0;
+    std::string renderer_, lastError_, recordPath_;
+    FrameInfo info_;
+    core::Camera lastCamera_;
+    double lastTime_ = 0.0;
+    bool mustRender_ = true;
+    int timerFrames_ = 0;
+    std::unique_ptr<io::VideoWriter> recorder_;
+    std::vector<double> frameMs_;
+};
+
+}  // namespace
+
+int runView(const RenderOptions& options, const ViewOptions& view) {
+    Session session(options, view);
+    return session.run();
+}
+
+}  // namespace flowsurf::app::view

@@ -1,0 +1,212 @@
+// The viewer's Dear ImGui panel: read-outs, and every method/overlay option as a widget
+// generated from the option table (same names, ranges and defaults as the command line).
+// Edits become `set` events (recorded like mouse and keys), applied on the next frame.
+#include "view_window.h"
+
+#include "options.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace flowsurf::app::view {
+
+namespace {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+}  // namespace
+
+void Window::optionWidget(const OptionSpec& spec, const ViewerState& state) {
+    const std::string current = spec.get(state.options);
+    const char* label = spec.name.c_str();
+    switch (spec.kind) {
+    case OptionKind::Flag: {
+        bool v = current == "true";
+        if (ImGui::Checkbox(label, &v)) emitSet(spec.name, v ? "true" : "false");
+        break;
+    }
+    case OptionKind::Choice: {
+        int index = int(std::find(spec.choices.begin(), spec.choices.end(), current) - spec.choices.begin());
+        if (ImGui::BeginCombo(label, current.c_str())) {
+            for (int i = 0; i < int(spec.choices.size()); ++i)
+                if (ImGui::Selectable(spec.choices[size_t(i)].c_str(), i == index)) emitSet(spec.name, spec.choices[size_t(i)]);
+            ImGui::EndCombo();
+        }
+        break;
+    }
+    case OptionKind::Int:
+    case OptionKind::Float: {
+        // Sliders over the option's range; the value is applied when the edit ends (a new
+        // value rebuilds the renderers, which a drag should not do every frame).
+        auto it = edits_.find(spec.name);
+        double v = std::stod(it != edits_.end() ? it->second : current);
+        bool slider = spec.max - spec.min <= 10000.0;
+        if (spec.kind == OptionKind::Int) {
+            int i = int(v);
+            if (slider) ImGui::SliderInt(label, &i, int(spec.min), int(spec.max), "%d", ImGuiSliderFlags_AlwaysClamp);
+            else ImGui::InputInt(label, &i);
+            v = i;
+        } else {
+            float f = float(v);
+            if (slider) ImGui::SliderFloat(label, &f, float(spec.min), float(spec.max), "%.3g", ImGuiSliderFlags_AlwaysClamp);
+            else ImGui::InputFloat(label, &f, 0, 0, "%.6g");
+            v = f;
+        }
+        const std::string text = spec.kind == OptionKind::Int ? std::to_string(int64_t(v)) : formatFloat(float(v));
+        if (ImGui::IsItemActive()) edits_[spec.name] = text;
+        if (ImGui::IsItemDeactivatedAfterEdit()) emitSet(spec.name, text);
+        if (!ImGui::IsItemActive()) edits_.erase(spec.name);
+        break;
+    }
+    case OptionKind::Color: {
+        glm::vec3 c = state.options.params.common.background;
+        float rgb[3] = {c.r, c.g, c.b};
+        ImGui::ColorEdit3(label, rgb);
+        if (ImGui::IsItemDeactivatedAfterEdit())
+            emitSet(spec.name, formatFloat(rgb[0]) + "," + formatFloat(rgb[1]) + "," + formatFloat(rgb[2]));
+        break;
+    }
+    default: {
+        std::string& text = edits_.try_emplace(spec.name, current).first->second;
+        ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue);
+        if (ImGui::IsItemDeactivatedAfterEdit()) emitSet(spec.name, text);
+        if (!ImGui::IsItemActive()) edits_.erase(spec.name);
+        break;
+    }
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("--%s: %s (default %s)", spec.name.c_str(), spec.help.c_str(),
+                                                  defaultText(spec).c_str());
+}
+
+void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
+    // Method labels over the views, side by side.
+    if (pipeline.ready() && pipeline.viewCount() > 1) {
+        ImDrawList* draw = ImGui::GetForegroundDrawList();
+        for (size_t i = 0; i < pipeline.viewCount(); ++i)
+            draw->AddText(ImVec2(float(i * size_t(pipeline.viewSize().width)) + 8.0f, 6.0f), IM_COL32(255, 255, 255, 230),
+                          upper(pipeline.methodName(i)).c_str());
+    }
+    if (!state.showPanel) return;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 560), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("flowsurf");
+
+    if (!state.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+        ImGui::TextWrapped("Error: %s", state.error.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) state.error.clear();
+    }
+    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+
+    // Read-out: what is shown and what it costs.
+    ImGui::Text("%s", pipeline.input().c_str());
+    ImGui::Text("%zu triangles, %dx%d per view, %s", pipeline.triangles(), pipeline.viewSize().width,
+                pipeline.viewSize().height, info.renderer.c_str());
+    ImGui::Text("frame %.1f ms (%.1f fps), clock k = %u%s", info.frameMs, info.frameMs > 0 ? 1000.0 / info.frameMs : 0.0,
+                state.clock(), state.paused ? ", paused" : "");
+
+    // Method.
+    for (auto m : methods::kMethodNames) {
+        if (m != methods::kMethodNames.front()) ImGui::SameLine();
+        if (ImGui::RadioButton(upper(std::string(m)).c_str(), state.compare.empty() && state.options.method == m))
+            emitSet("method", std::string(m)), emitSet("compare", "off");
+    }
+    bool side = !state.compare.empty();
+    ImGui::SameLine();
+    if (ImGui::Checkbox("side by side", &side)) emitSet("compare", side ? "isa,ibfvs,hybrid" : "off");
+    bool paused = state.paused;
+    if (ImGui::Checkbox("paused", &paused)) emitSet("paused", paused ? "true" : "false");
+    ImGui::SameLine();
+    if (ImGui::Button("step")) queue_.push_back({frame_, EventType::Key, "n"});
+
+    // Field.
+    if (!pipeline.vectorFields().empty() && ImGui::BeginCombo("field", pipeline.field().c_str())) {
+        for (const std::string& f : pipeline.vectorFields())
+            if (ImGui::Selectable(f.c_str(), f == pipeline.field())) emitSet("field", f);
+        ImGui::EndCombo();
+    }
+
+    // Time (series).
+    if (!state.stepTimes.empty() && ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::Button(state.timePlaying ? "pause time" : "play time"))
+            emitSet("time-playing", state.timePlaying ? "false" : "true");
+        ImGui::SameLine();
+        bool loop = state.loop;
+        if (ImGui::Checkbox("loop", &loop)) emitSet("loop", loop ? "true" : "false");
+        ImGui::Text("t = %.6g  (%.6g .. %.6g)", state.time, state.timeStart, state.timeEnd);
+        const auto& t = state.stepTimes;
+        int step = int(std::lower_bound(t.begin(), t.end(), state.time - 1e-12) - t.begin());
+        step = std::clamp(step, 0, int(t.size()) - 1);
+        if (ImGui::SliderInt("step", &step, 0, int(t.size()) - 1)) {
+            emitSet("time-playing", "false");
+            emitSet("time-now", formatDouble(t[size_t(step)]));
+        }
+        double speed = state.timePerFrame;
+        if (ImGui::InputDouble("time/frame", &speed, 0, 0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue))
+            emitSet("speed", formatDouble(speed));
+    }
+
+    // Camera read-out, editable.
+    if (ImGui::CollapsingHeader("Camera")) {
+        int mode = state.rotateMode == RotateMode::Turntable ? 0 : 1;
+        if (ImGui::Combo("rotate", &mode, "turntable\0trackball\0")) emitSet("rotate", mode == 0 ? "turntable" : "trackball");
+        for (const char* name : {"eye", "target", "up", "fov", "ortho"}) optionWidget(*findOption(name), state);
+        if (ImGui::Button("reset view")) queue_.push_back({frame_, EventType::Key, "r"});
+    }
+
+    for (const char* group : {"Method", "Overlay"})
+        if (ImGui::CollapsingHeader(group == std::string("Method") ? "Method parameters" : "Overlay"))
+            for (const OptionSpec& spec : renderOptionTable())
+                if (spec.group == group && spec.name != "method") optionWidget(spec, state);
+
+    // Per-stage times of each view (mean over the last frames).
+    if (pipeline.ready() && ImGui::CollapsingHeader("Stage times", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (size_t i = 0; i < pipeline.viewCount(); ++i) {
+            auto& timer = pipeline.method(i).timer();
+            ImGui::Text("%s%s", upper(pipeline.methodName(i)).c_str(),
+                        pipeline.method(i).lastFrameDynamic() ? " (dynamic case)" : " (static case)");
+            for (const auto& [stage, ms] : timer.meanMs()) ImGui::BulletText("%-28s %7.2f ms", stage.c_str(), ms);
+        }
+    }
+
+    // Outputs.
+    if (ImGui::CollapsingHeader("Save")) {
+        ImGui::InputText("##shot", &screenshotPath_);
+        ImGui::SameLine();
+        if (ImGui::Button("screenshot")) queue_.push_back({frame_, EventType::Screenshot, "", screenshotPath_});
+        ImGui::InputText("##rec", &recordPath_);
+        ImGui::SameLine();
+        if (ImGui::Button(state.recording ? "stop recording" : "record MP4"))
+            queue_.push_back(state.recording ? Event{frame_, EventType::RecordStop}
+                                             : Event{frame_, EventType::Record, "", recordPath_});
+        ImGui::InputText("##cfg", &configPath_);
+        ImGui::SameLine();
+        if (ImGui::Button("save settings")) queue_.push_back({frame_, EventType::SaveConfig, "", configPath_});
+        ImGui::InputText("##key", &keyframePath_);
+        ImGui::SameLine();
+        if (ImGui::Button("save camera keyframe")) queue_.push_back({frame_, EventType::SaveKeyframe, "", keyframePath_});
+        ImGui::InputText("##open", &openPath_);
+        ImGui::SameLine();
+        if (ImGui::Button("open")) queue_.push_back({frame_, EventType::Open, "", openPath_});
+    }
+
+    if (ImGui::CollapsingHeader("Mouse and keys")) {
+        ImGui::BulletText("left drag: rotate (turntable; trackball with t)");
+        ImGui::BulletText("middle drag or shift + left drag: pan");
+        ImGui::BulletText("wheel: zoom towards the cursor; right drag: zoom");
+        ImGui::BulletText("drop a file on the window: open it");
+        for (const KeyBinding& k : keyTable()) ImGui::BulletText("%-6s %s", k.name, k.description);
+    }
+    ImGui::End();
+}
+
+}  // namespace flowsurf::app::view

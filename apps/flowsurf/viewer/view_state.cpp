@@ -1,0 +1,387 @@
+#include "view_state.h"
+
+#include "core/errors.h"
+#include "scene_setup.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace flowsurf::app::view {
+
+const std::vector<KeyBinding>& keyTable() {
+    static const std::vector<KeyBinding> keys = {
+        {"r", "reset the view (fit the bounds)"},
+        {"x", "view along +x (X: along -x)"},
+        {"y", "view along +y (Y: along -y)"},
+        {"z", "view along +z (Z: along -z)"},
+        {"space", "pause / resume the animation"},
+        {"n", "single step (one frame while paused)"},
+        {"m", "next method (isa, ibfvs, hybrid)"},
+        {"c", "side by side: all three methods / one"},
+        {"t", "rotation: turntable / trackball"},
+        {"left", "previous time step (series)"},
+        {"right", "next time step (series)"},
+        {"l", "loop the time series on / off"},
+        {"h", "show / hide the panel (also f1)"},
+        {"p", "screenshot (PNG of the image, no panel)"},
+        {"v", "start / stop recording MP4"},
+        {"s", "save settings (JSON config for render --config)"},
+        {"k", "append the camera to a --camera-path file"},
+        {"q", "quit (also escape)"},
+    };
+    return keys;
+}
+
+namespace {
+
+bool isDataOption(const std::string& n) {
+    return n == "input" || n == "field" || n == "time-step" || n == "time" || n == "time-per-frame" ||
+           n == "frames-per-step";
+}
+bool isCameraOption(const std::string& n) {
+    return n == "eye" || n == "target" || n == "up" || n == "fov" || n == "ortho" || n == "orbit" || n == "camera-path";
+}
+bool isOutputOnly(const std::string& n) {
+    return n == "output" || n == "flow-texture" || n == "fps" || n == "crf" || n == "quiet" || n == "verbose" ||
+           n == "frames";
+}
+
+bool parseBool(const std::string& name, const std::string& v) {
+    if (v == "true" || v == "on" || v == "1") return true;
+    if (v == "false" || v == "off" || v == "0") return false;
+    throw ConfigError(name + ": '" + v + "' is not true or false");
+}
+
+glm::vec3 rotateAbout(const glm::vec3& v, const glm::vec3& axis, float radians) {
+    return glm::angleAxis(radians, glm::normalize(axis)) * v;
+}
+
+}  // namespace
+
+ViewerState::ViewerState(RenderOptions o) : options(std::move(o)), window_(options.size) {
+    if (options.up) turntableUp_ = glm::normalize(*options.up);
+}
+
+void ViewerState::setWindowSize(int width, int height) {
+    window_ = {std::max(width, 16), std::max(height, 16)};
+}
+
+std::vector<std::string> ViewerState::shownMethods() const {
+    return compare.empty() ? std::vector<std::string>{options.method} : compare;
+}
+
+core::Viewport ViewerState::viewSize() const {
+    const int n = int(shownMethods().size());
+    return {std::max(16, window_.width / n), window_.height};
+}
+
+void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<double>& times, double perFrame) {
+    bounds_ = bounds;
+    haveData_ = true;
+    if (options.orbit == 0.0f && options.cameraPath.empty()) {
+        RenderOptions fit = options;
+        fit.size = viewSize();
+        setCamera(makeCamera(fit, bounds_));
+    }
+    stepTimes = times;
+    if (!times.empty()) {
+        RenderOptions m = options;
+        timeStart = m.timeRange ? m.timeRange->first : times.front();
+        timeEnd = m.timeRange ? m.timeRange->second : times.back();
+        timePerFrame = perFrame;
+        time = timeStart;
+    }
+}
+
+core::Camera ViewerState::camera() const {
+    RenderOptions o = options;
+    o.size = viewSize();
+    if (!haveData_) return core::Camera{};
+    if (o.orbit != 0.0f || !o.cameraPath.empty()) return FrameCameras(o, bounds_).at(int(clock_));
+    return makeCamera(o, bounds_);
+}
+
+void ViewerState::setCamera(const core::Camera& c) {
+    options.eye = c.eye;
+    options.target = c.target;
+    options.up = glm::normalize(c.up);
+    options.fov = c.fovDeg;
+    options.ortho = c.orthoHeight;
+}
+
+void ViewerState::takeOverCamera() {
+    if (!haveData_) return;
+    if (options.orbit != 0.0f || !options.cameraPath.empty()) {
+        core::Camera c = camera();
+        options.orbit = 0.0f;
+        options.cameraPath.clear();
+        setCamera(c);
+    }
+}
+
+void ViewerState::frameDone() {
+    if (!advancing()) return;
+    stepOnce = false;
+    ++clock_;
+    if (timePlaying && !stepTimes.empty() && timePerFrame != 0.0) {
+        time += timePerFrame;
+        const double lo = std::min(timeStart, timeEnd), hi = std::max(timeStart, timeEnd);
+        if (time > hi || time < lo) time = loop ? timeStart : std::clamp(time, lo, hi);
+    }
+}
+
+glm::vec2 ViewerState::cursorNdc(float x, float y) const {
+    const core::Viewport v = viewSize();
+    const int n = int(shownMethods().size());
+    const int col = std::clamp(int(x) / v.width, 0, n - 1);
+    const float lx = x - float(col * v.width);
+    return {(lx + 0.5f) / float(v.width) * 2.0f - 1.0f, 1.0f - (y + 0.5f) / float(v.height) * 2.0f};
+}
+
+void ViewerState::mouseMove(float x, float y) {
+    const glm::vec2 d = glm::vec2(x, y) - mouse_;
+    mouse_ = {x, y};
+    if (dragButton_.empty() || !haveData_ || (d.x == 0.0f && d.y == 0.0f)) return;
+    takeOverCamera();
+    core::Camera c = camera();
+    glm::vec3 offset = c.eye - c.target;
+    const glm::vec3 forward = glm::normalize(-offset);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const glm::vec3 camUp = glm::cross(right, forward);
+    const core::Viewport v = viewSize();
+    if (dragPan_) {
+        // The surface under the cursor follows it (exact at the target's depth).
+        const float worldPerPx = c.orthographic() ? c.orthoHeight / float(v.height)
+                                                  : 2.0f * glm::length(offset) *
+                                                        std::tan(glm::radians(c.fovDeg) * 0.5f) / float(v.height);
+        const glm::vec3 shift = (-d.x * right + d.y * camUp) * worldPerPx;
+        c.eye += shift;
+        c.target += shift;
+    } else if (dragButton_ == "right") {
+        // Zoom by dragging: 20 px up = one wheel step in.
+        mouse_ = {x, y};
+        scroll(-d.y / 20.0f);
+        return;
+    } else if (rotateMode == RotateMode::Turntable) {
+        // Azimuth about the up axis, elevation about the screen's horizontal, kept off the poles.
+        offset = rotateAbout(offset, turntableUp_, glm::radians(-d.x * kDegPerPixel));
+        const glm::vec3 r = glm::normalize(glm::cross(-offset, turntableUp_));
+        const float polar = std::acos(std::clamp(glm::dot(glm::normalize(offset), turntableUp_), -1.0f, 1.0f));
+        const float wanted = std::clamp(polar + glm::radians(-d.y * kDegPerPixel), glm::radians(1.0f),
+                                        glm::radians(179.0f));
+        offset = rotateAbout(offset, r, wanted - polar);
+        c.up = turntableUp_;
+    } else {
+        // Trackball: rotation about the screen axis perpendicular to the drag.
+        const glm::vec3 omega = -glm::radians(kDegPerPixel) * (d.x * camUp + d.y * right);
+        const float angle = glm::length(omega);
+        if (angle > 0.0f) {
+            offset = rotateAbout(offset, omega, angle);
+            c.up = rotateAbout(camUp, omega, angle);
+        }
+    }
+    c.eye = c.target + offset;
+    setCamera(c);
+}
+
+void ViewerState::scroll(float steps) {
+    if (!haveData_ || steps == 0.0f) return;
+    takeOverCamera();
+    core::Camera c = camera();
+    const float f = std::pow(kZoomPerStep, steps);
+    const glm::vec3 offset = c.eye - c.target;
+    const glm::vec3 forward = glm::normalize(-offset);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const glm::vec3 camUp = glm::cross(right, forward);
+    const core::Viewport v = viewSize();
+    const glm::vec2 ndc = cursorNdc(mouse_.x, mouse_.y);
+    // The point under the cursor on the plane through the target stays under the cursor.
+    if (c.orthographic()) {
+        const float h = c.orthoHeight * 0.5f;
+        const glm::vec3 p = c.target + ndc.x * h * v.aspect() * right + ndc.y * h * camUp;
+        const glm::vec3 target = p + (c.target - p) * f;
+        c.eye += target - c.target;
+        c.target = target;
+        c.orthoHeight *= f;
+    } else {
+        const float t = std::tan(glm::radians(c.fovDeg) * 0.5f);
+        const glm::vec3 dir = glm::normalize(forward + ndc.x * t * v.aspect() * right + ndc.y * t * camUp);
+        const glm::vec3 p = c.eye + dir * (glm::length(offset) / glm::dot(dir, forward));
+        c.eye = p + (c.eye - p) * f;
+        c.target = p + (c.target - p) * f;
+    }
+    setCamera(c);
+}
+
+void ViewerState::resetView() {
+    if (!haveData_) return;
+    takeOverCamera();
+    RenderOptions fit = options;
+    fit.eye.reset();
+    fit.target.reset();
+    fit.up = turntableUp_;
+    fit.ortho = options.ortho;
+    fit.size = viewSize();
+    setCamera(makeCamera(fit, bounds_));
+}
+
+void ViewerState::viewAlong(const glm::vec3& dir) {
+    if (!haveData_) return;
+    takeOverCamera();
+    core::Camera c = core::fitCamera(bounds_, viewSize(), -dir, options.fov);
+    glm::vec3 up = turntableUp_;
+    if (std::abs(glm::dot(up, dir)) > 0.99f) up = std::abs(dir.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    c.up = up;
+    c.orthoHeight = options.ortho;
+    if (c.orthographic()) c.eye = c.target - dir * bounds_.radius() * 3.0f;
+    setCamera(c);
+}
+
+void ViewerState::key(const std::string& k) {
+    auto stepTo = [this](int direction) {
+        if (stepTimes.empty()) return;
+        timePlaying = false;
+        auto it = direction > 0 ? std::upper_bound(stepTimes.begin(), stepTimes.end(), time + 1e-12)
+                                : std::lower_bound(stepTimes.begin(), stepTimes.end(), time - 1e-12);
+        if (direction > 0) time = it == stepTimes.end() ? stepTimes.back() : *it;
+        else time = it == stepTimes.begin() ? stepTimes.front() : *(it - 1);
+    };
+    if (k == "r") resetView();
+    else if (k == "x") viewAlong({1, 0, 0});
+    else if (k == "X") viewAlong({-1, 0, 0});
+    else if (k == "y") viewAlong({0, 1, 0});
+    else if (k == "Y") viewAlong({0, -1, 0});
+    else if (k == "z") viewAlong({0, 0, 1});
+    else if (k == "Z") viewAlong({0, 0, -1});
+    else if (k == "space") paused = !paused;
+    else if (k == "n") { paused = true; stepOnce = true; }
+    else if (k == "m") {
+        const auto& names = methods::kMethodNames;
+        auto it = std::find(names.begin(), names.end(), options.method);
+        options.method = std::string(it == names.end() || it + 1 == names.end() ? names.front() : *(it + 1));
+        compare.clear();
+        requests_.rebuild = true;
+    } else if (k == "c") {
+        if (compare.empty()) compare.assign(methods::kMethodNames.begin(), methods::kMethodNames.end());
+        else compare.clear();
+        requests_.rebuild = true;
+    } else if (k == "t") rotateMode = rotateMode == RotateMode::Turntable ? RotateMode::Trackball : RotateMode::Turntable;
+    else if (k == "left") stepTo(-1);
+    else if (k == "right") stepTo(+1);
+    else if (k == "l") loop = !loop;
+    else if (k == "h" || k == "f1") showPanel = !showPanel;
+    else if (k == "p") {
+        static int shot = 0;
+        char name[64];
+        std::snprintf(name, sizeof name, "flowsurf_screenshot_%03d.png", ++shot);
+        const bool own = options.output != "flowsurf.png" && outputKind(options.output) == OutputKind::Png;
+        requests_.outputs.push_back({0, EventType::Screenshot, "", own ? options.output : name});
+    } else if (k == "v") {
+        if (recording) requests_.recordStop = true;
+        else requests_.recordStart = outputKind(options.output) == OutputKind::Mp4 ? options.output
+                                                                                    : "flowsurf_recording.mp4";
+    } else if (k == "s") requests_.outputs.push_back({0, EventType::SaveConfig, "", "flowsurf_view.json"});
+    else if (k == "k") requests_.outputs.push_back({0, EventType::SaveKeyframe, "", "flowsurf_camera_path.json"});
+    else if (k == "q" || k == "escape") requests_.quit = true;
+    else throw ConfigError("unknown key '" + k + "' (see the key list)");
+}
+
+void ViewerState::set(const std::string& name, const std::string& value) {
+    // Settings only a viewer has.
+    if (name == "compare") {
+        compare.clear();
+        if (value != "off" && value != "none" && !value.empty()) {
+            std::stringstream ss(value);
+            for (std::string m; std::getline(ss, m, ',');) {
+                if (std::find(methods::kMethodNames.begin(), methods::kMethodNames.end(), m) ==
+                    methods::kMethodNames.end())
+                    throw ConfigError("compare: '" + m + "' is not one of isa, ibfvs, hybrid");
+                compare.push_back(m);
+            }
+        }
+        requests_.rebuild = true;
+        return;
+    }
+    if (name == "rotate") {
+        if (value != "turntable" && value != "trackball")
+            throw ConfigError("rotate: '" + value + "' is not one of turntable, trackball");
+        rotateMode = value == "turntable" ? RotateMode::Turntable : RotateMode::Trackball;
+        return;
+    }
+    if (name == "paused") { paused = parseBool(name, value); return; }
+    if (name == "time-playing") { timePlaying = parseBool(name, value); return; }
+    if (name == "loop") { loop = parseBool(name, value); return; }
+    if (name == "panel") { showPanel = parseBool(name, value); return; }
+    if (name == "time-now") {
+        double t = parseFloat(value, "time-now");
+        time = std::clamp(t, std::min(timeStart, timeEnd), std::max(timeStart, timeEnd));
+        return;
+    }
+    if (name == "speed") {  // data time per frame
+        timePerFrame = parseFloat(value, "speed");
+        return;
+    }
+    if (isCameraOption(name)) takeOverCamera();
+    RenderOptions changed = options;
+    setOption(changed, name, value);  // throws ConfigError naming the option
+    if (name == "size") {
+        requests_.resize = glm::ivec2(changed.size.width * int(shownMethods().size()), changed.size.height);
+        return;
+    }
+    options = changed;
+    if (name == "up" && options.up) turntableUp_ = glm::normalize(*options.up);
+    if (isDataOption(name)) requests_.reload = true;
+    else if (!isCameraOption(name) && !isOutputOnly(name)) requests_.rebuild = true;
+}
+
+void ViewerState::handle(const Event& e) {
+    try {
+        switch (e.type) {
+        case EventType::Set: set(e.name, e.value); break;
+        case EventType::MouseMove: mouseMove(e.x, e.y); break;
+        case EventType::MouseDown:
+            dragButton_ = e.name;
+            dragPan_ = e.name == "middle" || (e.name == "left" && e.shift);
+            break;
+        case EventType::MouseUp: dragButton_.clear(); dragPan_ = false; break;
+        case EventType::Scroll: scroll(e.x); break;
+        case EventType::Key: key(e.name); break;
+        case EventType::Open: requests_.open = e.value; break;
+        case EventType::Record: requests_.recordStart = e.value; break;
+        case EventType::RecordStop: requests_.recordStop = true; break;
+        case EventType::Resize: requests_.resize = glm::ivec2(int(e.x), int(e.y)); break;
+        case EventType::Quit: requests_.quit = true; break;
+        default: requests_.outputs.push_back(e); break;
+        }
+    } catch (const std::exception& ex) {
+        error = ex.what();
+    }
+}
+
+Requests ViewerState::takeRequests() {
+    Requests r = std::move(requests_);
+    requests_ = Requests{};
+    return r;
+}
+
+RenderOptions ViewerState::batchOptions() const {
+    RenderOptions b = options;
+    b.size = viewSize();
+    b.method = shownMethods().front();
+    b.frames = int(clock_);
+    if (!stepTimes.empty() && !b.timeStepGiven) {
+        // Frame k of the batch render shows data time start + k * perFrame: pick the start
+        // so that frame `clock` shows the time on screen now.
+        const bool moving = timePlaying && timePerFrame != 0.0;
+        const double perFrame = moving ? timePerFrame : 0.0;
+        b.timeRange = std::make_pair(time - double(clock_) * perFrame, moving ? timeEnd : time);
+        b.timePerFrame = std::abs(perFrame);
+        b.framesPerStep = 0;
+    }
+    return b;
+}
+
+}  // namespace flowsurf::app::view

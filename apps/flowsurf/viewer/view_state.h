@@ -1,0 +1,119 @@
+// flowsurf view — the viewer's state and what input does to it, free of GL and of any
+// window so unit tests drive it directly. The state is a RenderOptions (the camera lives
+// in its eye/target/up/fov, so a saved config renders the same view offline) plus what
+// only a viewer has: the frame clock, pause, time playback, side-by-side methods, the
+// mouse. Input arrives as Events (view_events.h), from GLFW or a replayed log alike.
+#pragma once
+
+#include "core/camera.h"
+#include "options.h"
+#include "view_events.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flowsurf::app::view {
+
+// Degrees of camera rotation per pixel of drag (turntable and trackball).
+inline constexpr float kDegPerPixel = 0.25f;
+// Zoom factor per wheel step (towards the cursor).
+inline constexpr float kZoomPerStep = 0.85f;
+
+struct KeyBinding {
+    const char* name;         // as in event logs and GLFW key names ("r", "X", "space", "f1")
+    const char* description;  // for the panel and --help
+};
+// Every key the viewer knows, in the order the panel lists them.
+const std::vector<KeyBinding>& keyTable();
+
+enum class RotateMode { Turntable, Trackball };
+
+// What the GL side must do after events changed the state.
+struct Requests {
+    bool reload = false;    // input, field or time options changed: read the data again
+    bool rebuild = false;   // method or parameters changed: new renderers (clock restarts)
+    bool quit = false;
+    std::vector<Event> outputs;  // screenshot, flow-texture, save-config, ... after the frame
+    std::optional<std::string> open;        // open this file (keeps the old data on failure)
+    std::optional<std::string> recordStart; // start recording MP4 to this file
+    bool recordStop = false;
+    std::optional<glm::ivec2> resize;       // window size in pixels
+};
+
+class ViewerState {
+public:
+    explicit ViewerState(RenderOptions options);
+
+    // The options as they stand: method, parameters, camera (explicit once data is loaded).
+    RenderOptions options;
+    std::vector<std::string> compare;  // methods side by side; empty: options.method alone
+    RotateMode rotateMode = RotateMode::Turntable;
+    bool paused = false;               // no advection frames (the view still follows the camera)
+    bool stepOnce = false;             // advance one frame while paused
+    bool showPanel = true;
+    bool recording = false;            // an MP4 is being written (set by the window side)
+    // Time playback of a series (data time per frame: timePerFrame; held or looped at the end).
+    bool timePlaying = true;
+    bool loop = false;
+    double time = 0.0, timeStart = 0.0, timeEnd = 0.0, timePerFrame = 0.0;
+    std::vector<double> stepTimes;     // of the loaded series; empty for steady data
+
+    // After data is loaded: frames the camera (makeCamera of the options, unless a camera
+    // path or orbit drives it), sets the time range. `size` is one view's pixel size.
+    void dataLoaded(const core::Bounds& bounds, const std::vector<double>& times, double perFrame);
+    // Window pixel size of the whole render area (split into views side by side).
+    void setWindowSize(int width, int height);
+    core::Viewport windowSize() const { return window_; }
+    // One view's size and the methods shown, left to right.
+    core::Viewport viewSize() const;
+    std::vector<std::string> shownMethods() const;
+
+    // The camera for the current frame (orbit / camera path play until the user takes over).
+    core::Camera camera() const;
+    // Advection frames since the renderers were (re)built: the noise clock k.
+    uint32_t clock() const { return clock_; }
+    void restartClock() { clock_ = 0; }
+    // Called after each displayed frame: advances the clock and the data time unless paused.
+    void frameDone();
+    // True if the next frame advects (not paused, or a single step asked for).
+    bool advancing() const { return !paused || stepOnce; }
+
+    // Applies one input event; errors (bad option values, unknown keys) land in `error`.
+    void handle(const Event& e);
+    Requests takeRequests();
+    // A render option by name, as from the panel or `set` (classifies what must happen).
+    void set(const std::string& name, const std::string& value);
+
+    // The options that render this very view offline: `render --config` with --frames
+    // = clock() gives the frame on screen (see README, Viewer).
+    RenderOptions batchOptions() const;
+
+    std::string error;       // last error, shown in the panel until the next one or dismissal
+    std::string status;      // last message (saved a file, ...)
+
+private:
+    void key(const std::string& name);
+    void mouseMove(float x, float y);
+    void scroll(float steps);
+    void takeOverCamera();
+    void setCamera(const core::Camera& c);
+    void viewAlong(const glm::vec3& fromDirection);
+    void resetView();
+    // Which view (side by side) the window pixel x falls into, and its NDC.
+    glm::vec2 cursorNdc(float x, float y) const;
+
+    core::Bounds bounds_;
+    bool haveData_ = false;
+    core::Viewport window_{800, 600};
+    uint32_t clock_ = 0;
+    glm::vec3 turntableUp_{0, 1, 0};
+    glm::vec2 mouse_{0, 0};
+    std::string dragButton_;  // "" when no button is down
+    bool dragPan_ = false;
+    Requests requests_;
+};
+
+}  // namespace flowsurf::app::view

@@ -1,0 +1,58 @@
+// flowsurf view — the GLFW window (OpenGL 4.5 core, X11) with the Dear ImGui panel.
+// Turns mouse, keyboard, drops and panel edits into Events; shows the views.
+#pragma once
+
+#include "view_events.h"
+#include "view_pipeline.h"
+#include "view_state.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace flowsurf::app::view {
+
+struct FrameInfo {
+    double frameMs = 0.0;  // wall time of the last frame
+    std::string renderer;  // GL_RENDERER
+};
+
+class Window {
+public:
+    // Opens the window; throws GlError when no display or no 4.5 core context.
+    Window(int width, int height, const std::string& title);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    // Polls input: returns the events since the last call (stamped `frame`).
+    std::vector<Event> poll(long frame);
+    bool closeRequested() const;
+    // Render area size in pixels.
+    void framebufferSize(int* width, int* height) const;
+    void resize(int width, int height);
+    void setTitle(const std::string& title);
+    // Blits the views, draws the panel (if shown; its edits come back from the next
+    // poll) and swaps.
+    void present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
+
+private:
+    void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
+    void optionWidget(const struct OptionSpec& spec, const ViewerState& state);
+    void emitSet(const std::string& name, const std::string& value);
+
+    GLFWwindow* window_ = nullptr;
+    std::vector<Event> queue_;
+    long frame_ = 0;
+    std::map<std::string, std::string> edits_;  // text of widgets being edited
+    std::string configPath_ = "flowsurf_view.json", keyframePath_ = "flowsurf_camera_path.json";
+    std::string screenshotPath_ = "flowsurf_screenshot.png", recordPath_ = "flowsurf_recording.mp4";
+    std::string openPath_;
+
+    friend struct WindowCallbacks;
+};
+
+}  // namespace flowsurf::app::view
