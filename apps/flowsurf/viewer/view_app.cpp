@@ -114,6 +114,8 @@ public:
             const bool rendered = renderIfNeeded();
             if (recorder_ && rendered) recordFrame();
             // (4) show, then outputs
+            for (const Event& out : req.outputs)
+                if (out.type == EventType::WindowShot && window_) window_->requestWindowShot(out.value);
             if (window_) window_->present(state_, pipeline_, info_);
             for (const Event& out : req.outputs) output(out);
             if (rendered && !view_.stats.empty()) frameMs_.push_back(msSince(t0));
@@ -273,6 +275,9 @@ private:
     void output(const Event& e) {
         try {
             switch (e.type) {
+            case EventType::WindowShot:
+                if (window_) return;  // taken by present()
+                [[fallthrough]];
             case EventType::Screenshot: {
                 if (!pipeline_.ready()) throw ConfigError("screenshot: nothing rendered yet");
                 int w = 0, h = 0;

@@ -25,7 +25,7 @@ constexpr TypeName kTypes[] = {
     {EventType::SaveConfig, "save-config"}, {EventType::SaveKeyframe, "save-keyframe"},
     {EventType::Record, "record"},     {EventType::RecordStop, "record-stop"},
     {EventType::Open, "open"},         {EventType::Resize, "resize"},
-    {EventType::Quit, "quit"},
+    {EventType::Quit, "quit"},         {EventType::WindowShot, "window-screenshot"},
 };
 
 std::string trim(const std::string& s) {
@@ -48,7 +48,7 @@ float number(const std::string& word, const std::string& where) {
 }  // namespace
 
 bool isOutputEvent(EventType t) {
-    return t == EventType::Screenshot || t == EventType::FlowTexture || t == EventType::SaveConfig ||
+    return t == EventType::Screenshot || t == EventType::WindowShot || t == EventType::FlowTexture || t == EventType::SaveConfig ||
            t == EventType::SaveKeyframe || t == EventType::Quit;
 }
 
@@ -128,6 +128,7 @@ std::vector<Event> parseEventLog(const std::string& text, const std::string& whe
                 throw FormatError(at + ": window size out of range (16..8192)");
             break;
         case EventType::Screenshot:
+        case EventType::WindowShot:
         case EventType::FlowTexture:
         case EventType::SaveConfig:
         case EventType::SaveKeyframe:

@@ -12,6 +12,7 @@
 //   at 90 flow-texture out/a16.png  F_a alone, 16-bit gray
 //   at 90 save-config out/a.json    the whole state, for render --config
 //   at 90 save-keyframe path.json   append the camera to a --camera-path file
+//   at 90 window-screenshot w.png  the whole window, panel included
 //   at 90 record out/a.mp4 | record-stop | open FILE | resize W H | quit
 #pragma once
 
@@ -22,7 +23,7 @@ namespace flowsurf::app::view {
 
 enum class EventType {
     Set, MouseMove, MouseDown, MouseUp, Scroll, Key, Screenshot, FlowTexture, SaveConfig, SaveKeyframe,
-    Record, RecordStop, Open, Resize, Quit
+    Record, RecordStop, Open, Resize, Quit, WindowShot
 };
 
 struct Event {

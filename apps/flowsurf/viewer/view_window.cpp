@@ -2,6 +2,7 @@
 #include "view_window.h"
 
 #include "core/errors.h"
+#include "io/image_writer.h"
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -11,6 +12,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <utility>
 
 namespace flowsurf::app::view {
 
@@ -169,6 +171,20 @@ void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo
     panel(state, pipeline, info);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (!windowShot_.empty()) {
+        std::vector<uint8_t> rgb(size_t(fw) * size_t(fh) * 3), flipped(rgb.size());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadBuffer(GL_BACK);
+        glReadPixels(0, 0, fw, fh, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        for (int y = 0; y < fh; ++y)
+            std::copy_n(&rgb[size_t(fh - 1 - y) * fw * 3], size_t(fw) * 3, &flipped[size_t(y) * fw * 3]);
+        const std::string path = std::exchange(windowShot_, {});
+        try {
+            io::writePngRgb8(path, fw, fh, 3, flipped);
+        } catch (const std::exception& e) {
+            state.error = e.what();
+        }
+    }
     glfwSwapBuffers(window_);
 }
 

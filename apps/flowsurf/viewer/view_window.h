@@ -38,6 +38,8 @@ public:
     // Blits the views, draws the panel (if shown; its edits come back from the next
     // poll) and swaps.
     void present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
+    // The whole window of the next present(), panel included, to a PNG.
+    void requestWindowShot(const std::string& path) { windowShot_ = path; }
 
 private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
@@ -50,7 +52,7 @@ private:
     std::map<std::string, std::string> edits_;  // text of widgets being edited
     std::string configPath_ = "flowsurf_view.json", keyframePath_ = "flowsurf_camera_path.json";
     std::string screenshotPath_ = "flowsurf_screenshot.png", recordPath_ = "flowsurf_recording.mp4";
-    std::string openPath_;
+    std::string openPath_, windowShot_;
 
     friend struct WindowCallbacks;
 };
