@@ -1,0 +1,321 @@
+// The viewer as a user drives it: replayed event logs (headless EGL, and one in a real
+// GLFW window under Xvfb) against batch renders of the same options. Runs the flowsurf
+// program named by $FLOWSURF; images are read back with io::readPng.
+#include "io/image_writer.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace flowsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Background of every test render: a colour no texture makes, so it marks "no surface".
+constexpr const char* kBackground = "#ff00ff";
+
+class Viewer : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const char* exe = std::getenv("FLOWSURF");
+        ASSERT_NE(exe, nullptr) << "set FLOWSURF to the flowsurf program";
+        exe_ = exe;
+        char tmpl[] = "/tmp/flowsurf_viewer_XXXXXX";
+        ASSERT_NE(mkdtemp(tmpl), nullptr);
+        dir_ = tmpl;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return dir_ + "/" + name; }
+
+    // Runs `flowsurf ARGS`; stderr lands in err_.
+    int run(const std::string& args, const std::string& prefix = "") {
+        const std::string errFile = path("stderr.txt");
+        const std::string cmd = prefix + "'" + exe_ + "' " + args + " 2> '" + errFile + "' > /dev/null";
+        int rc = std::system(cmd.c_str());
+        std::ifstream f(errFile);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        err_ = ss.str();
+        return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    }
+    // Writes an event log and replays it headless on `input` with `options`.
+    int replay(const std::string& input, const std::string& log, const std::string& options,
+               const std::string& prefix = "", bool headless = true) {
+        std::ofstream(path("session.log")) << "# flowsurf events 1\n" << log;
+        return run("view " + input + " --play '" + path("session.log") + "' " + (headless ? "--headless " : "") +
+                       "-q --background '" + kBackground + "' " + options,
+                   prefix);
+    }
+
+    std::string exe_, dir_, err_;
+};
+
+io::PngImage png(const std::string& p) { return io::readPng(p); }
+
+bool isBackground(const io::PngImage& im, size_t i) {
+    return im.samples[i * 3] == 255 && im.samples[i * 3 + 1] == 0 && im.samples[i * 3 + 2] == 255;
+}
+
+// Fraction of pixels on which both images agree about surface vs background.
+double maskAgreement(const io::PngImage& a, const io::PngImage& b) {
+    size_t n = size_t(a.width) * a.height, same = 0;
+    for (size_t i = 0; i < n; ++i) same += isBackground(a, i) == isBackground(b, i);
+    return double(same) / double(n);
+}
+
+size_t surfacePixels(const io::PngImage& a) {
+    size_t n = 0;
+    for (size_t i = 0; i < size_t(a.width) * a.height; ++i) n += !isBackground(a, i);
+    return n;
+}
+
+// Mean absolute difference over all samples, in units of the full range (1 = 255).
+double meanAbsDiff(const io::PngImage& a, const io::PngImage& b, int x0 = 0, int x1 = -1) {
+    if (x1 < 0) x1 = a.width;
+    double sum = 0;
+    size_t n = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = x0; x < x1; ++x)
+            for (int c = 0; c < 3; ++c) {
+                size_t i = (size_t(y) * a.width + x) * 3 + c;
+                sum += std::abs(double(a.samples[i]) - double(b.samples[i]));
+                ++n;
+            }
+    return sum / double(n) / 255.0;
+}
+
+// Pearson correlation of luminance over pixels that are surface in both.
+double surfaceCorrelation(const io::PngImage& a, const io::PngImage& b) {
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < size_t(a.width) * a.height; ++i) {
+        if (isBackground(a, i) || isBackground(b, i)) continue;
+        double la = a.samples[i * 3] + a.samples[i * 3 + 1] + a.samples[i * 3 + 2];
+        double lb = b.samples[i * 3] + b.samples[i * 3 + 1] + b.samples[i * 3 + 2];
+        sa += la, sb += lb, saa += la * la, sbb += lb * lb, sab += la * lb, ++n;
+    }
+    double cov = sab / n - sa / n * sb / n, va = saa / n - sa / n * sa / n, vb = sbb / n - sb / n * sb / n;
+    return cov / std::sqrt(va * vb);
+}
+
+// Lag (pixels) where the autocorrelation of a 16-bit gray image along (dx, dy) drops
+// below 0.5, over the central half of the image.
+float correlationLength(const io::PngImage& im, int dx, int dy) {
+    const int x0 = im.width / 4, x1 = 3 * im.width / 4, y0 = im.height / 4, y1 = 3 * im.height / 4;
+    double mean = 0, var = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) mean += im.samples[size_t(y) * im.width + x], ++n;
+    mean /= n;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            double d = im.samples[size_t(y) * im.width + x] - mean;
+            var += d * d;
+        }
+    var /= n;
+    double prev = 1.0;
+    for (int lag = 1; lag < 40; ++lag) {
+        double c = 0;
+        int m = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                c += (im.samples[size_t(y) * im.width + x] - mean) *
+                     (im.samples[size_t(y + lag * dy) * im.width + x + lag * dx] - mean);
+                ++m;
+            }
+        c /= m * var;
+        if (c < 0.5) return float(lag - 1) + float((prev - 0.5) / (prev - c));
+        prev = c;
+    }
+    return 40.0f;
+}
+
+nlohmann::json readJson(const std::string& p) {
+    std::ifstream f(p);
+    return nlohmann::json::parse(f);
+}
+
+glm::vec3 vec3(const nlohmann::json& j) { return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()}; }
+
+}  // namespace
+
+// Each method: the replayed session's screenshot shows the surface where the batch
+// render does, and its saved config renders offline to the same image (<= 1/255 mean).
+TEST_F(Viewer, SavedConfigRendersTheScreenshotOffline) {
+    for (const char* method : {"isa", "ibfvs", "hybrid"}) {
+        SCOPED_TRACE(method);
+        ASSERT_EQ(replay("builtin:tori",
+                         std::string("at 0 set method ") + method + "\n"
+                         "at 24 screenshot " + path("view.png") + "\n"
+                         "at 24 save-config " + path("view.json") + "\n"
+                         "at 25 quit\n",
+                         "--size 160x120"), 0) << err_;
+        ASSERT_EQ(run("render --config '" + path("view.json") + "' -q -o '" + path("batch.png") + "'"), 0) << err_;
+        io::PngImage v = png(path("view.png")), b = png(path("batch.png"));
+        ASSERT_EQ(v.width, b.width);
+        EXPECT_GT(surfacePixels(v), 2000u);
+        EXPECT_GE(maskAgreement(v, b), 0.999);
+        const double diff = meanAbsDiff(v, b);
+        std::printf("%s: mean |viewer - render --config| = %.5f\n", method, diff);
+        EXPECT_LE(diff, 1.0 / 255.0);
+    }
+}
+
+// A left drag turns the camera by the turntable's degrees per pixel (0.25): 80 px ->
+// 20 degrees about the up axis; the hybrid's texture stays on the surface (correlation
+// with a batch render from the new camera >= 0.9); ISA's texture covers the surface
+// exactly where the batch render's does.
+TEST_F(Viewer, DragTurnsTheCameraAndTextureStaysOnSurface) {
+    for (const char* method : {"hybrid", "isa"}) {
+        SCOPED_TRACE(method);
+        ASSERT_EQ(replay("builtin:sphere",
+                         std::string("at 0 set method ") + method + "\n"
+                         "at 1 save-config " + path("before.json") + "\n"
+                         "at 5 mouse-move 100 80\n"
+                         "at 5 mouse-down left\n"
+                         "at 6 mouse-move 140 80\n"
+                         "at 7 mouse-move 180 80\n"
+                         "at 7 mouse-up left\n"
+                         "at 30 screenshot " + path("view.png") + "\n"
+                         "at 30 save-config " + path("after.json") + "\n"
+                         "at 31 quit\n",
+                         "--size 200x160"), 0) << err_;
+        nlohmann::json before = readJson(path("before.json")), after = readJson(path("after.json"));
+        glm::vec3 t = vec3(after["target"]), e0 = vec3(before["eye"]) - t, e1 = vec3(after["eye"]) - t;
+        float turned = glm::degrees(std::atan2(e0.x, e0.z) - std::atan2(e1.x, e1.z));
+        EXPECT_NEAR(turned, 80 * 0.25f, 0.01f);
+        ASSERT_EQ(run("render --config '" + path("after.json") + "' -q -o '" + path("batch.png") + "'"), 0) << err_;
+        io::PngImage v = png(path("view.png")), b = png(path("batch.png"));
+        EXPECT_GE(maskAgreement(v, b), 0.999);
+        if (std::string(method) == "hybrid") {
+            double c = surfaceCorrelation(v, b);
+            std::printf("hybrid after drag: correlation with batch render %.4f\n", c);
+            EXPECT_GE(c, 0.9);
+        }
+    }
+}
+
+// `m` cycles isa -> ibfvs -> hybrid. ISA and IBFVS advect the same noise along the same
+// field, so their pictures differ only in detail; the hybrid's LIC is another picture.
+TEST_F(Viewer, MethodSwitchChangesThePicture) {
+    ASSERT_EQ(replay("builtin:tori",
+                     "at 19 screenshot " + path("isa.png") + "\n"
+                     "at 20 key m\n"
+                     "at 40 screenshot " + path("ibfvs.png") + "\n"
+                     "at 40 save-config " + path("ibfvs.json") + "\n"
+                     "at 41 key m\n"
+                     "at 61 screenshot " + path("hybrid.png") + "\n"
+                     "at 61 save-config " + path("hybrid.json") + "\n"
+                     "at 61 quit\n",
+                     "--size 160x120 --method isa --overlay gray"), 0) << err_;
+    EXPECT_EQ(readJson(path("ibfvs.json"))["method"], "ibfvs");
+    EXPECT_EQ(readJson(path("hybrid.json"))["method"], "hybrid");
+    io::PngImage isa = png(path("isa.png")), ibfvs = png(path("ibfvs.png")), hybrid = png(path("hybrid.png"));
+    const double dIbfvs = meanAbsDiff(isa, ibfvs), cHybrid = surfaceCorrelation(isa, hybrid);
+    std::printf("isa -> ibfvs: mean difference %.4f; isa vs hybrid: correlation %.3f\n", dIbfvs, cHybrid);
+    EXPECT_GT(dIbfvs, 0.002);
+    EXPECT_LT(cHybrid, 0.5);
+    EXPECT_GE(maskAgreement(isa, hybrid), 0.999);
+}
+
+// builtin:turning-plane: uniform flow along +x at t = 0 turning to +y at t = 8. Played
+// to the end (and held there), the texture runs along y, the last step's field.
+TEST_F(Viewer, TimeSeriesPlaysToItsEndAndFollowsTheLastField) {
+    ASSERT_EQ(replay("builtin:turning-plane",
+                     "at 70 flow-texture " + path("end16.png") + "\n"
+                     "at 70 save-config " + path("end.json") + "\n"
+                     "at 71 quit\n",
+                     "--size 160x160 --method isa --time-per-frame 0.25"), 0) << err_;
+    nlohmann::json cfg = readJson(path("end.json"));
+    EXPECT_EQ(cfg["time"].get<std::string>().substr(cfg["time"].get<std::string>().find(':') + 1), "8");
+    io::PngImage f = png(path("end16.png"));
+    const float alongY = correlationLength(f, 0, 1), alongX = correlationLength(f, 1, 0);
+    std::printf("held at t = 8: correlation length along y %.1f px, along x %.1f px\n", alongY, alongX);
+    EXPECT_GT(alongY, 2.0f * alongX);
+}
+
+// A bad file (missing, corrupt) or a missing field shows an error; the viewer keeps
+// running with the data it had, and still renders it.
+TEST_F(Viewer, BadInputShowsAnErrorAndKeepsRunning) {
+    {
+        std::ofstream g(path("garbage.vtp"));
+        for (int i = 0; i < 3000; ++i) g << char((i * 7919) % 251);
+    }
+    ASSERT_EQ(replay("builtin:sphere",
+                     "at 3 open " + path("missing.vtp") + "\n"
+                     "at 4 open " + path("garbage.vtp") + "\n"
+                     "at 5 set field nosuch\n"
+                     "at 6 set alpha 9\n"
+                     "at 12 screenshot " + path("after.png") + "\n"
+                     "at 12 save-config " + path("after.json") + "\n"
+                     "at 13 quit\n",
+                     "--size 120x120"), 0) << err_;
+    EXPECT_NE(err_.find("missing.vtp"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("garbage.vtp"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("nosuch"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("--alpha"), std::string::npos) << err_;
+    EXPECT_GT(surfacePixels(png(path("after.png"))), 3000u);
+    nlohmann::json cfg = readJson(path("after.json"));
+    EXPECT_EQ(cfg["input"], "builtin:sphere");
+    EXPECT_FALSE(cfg.contains("field") && cfg["field"] == "nosuch");
+}
+
+TEST_F(Viewer, RecordsVideoAndFrameTimes) {
+    ASSERT_EQ(replay("builtin:sphere",
+                     "at 2 record " + path("clip.mp4") + "\n"
+                     "at 12 record-stop\n"
+                     "at 14 quit\n",
+                     "--size 96x96 --stats '" + path("stats.json") + "'"), 0) << err_;
+    EXPECT_GT(fs::file_size(path("clip.mp4")), 1000u);
+    nlohmann::json stats = readJson(path("stats.json"));
+    EXPECT_EQ(stats["frame_ms"].size(), 15u);
+    EXPECT_TRUE(stats["stage_ms"].contains("overlay"));
+}
+
+TEST_F(Viewer, RefusesBadSessionsWithClearErrors) {
+    EXPECT_EQ(run("view builtin:sphere --headless"), 2);
+    EXPECT_NE(err_.find("--play"), std::string::npos) << err_;
+    EXPECT_EQ(run("view builtin:sphere --headless --play '" + path("none.log") + "'"), 3);
+    EXPECT_NE(err_.find("none.log"), std::string::npos) << err_;
+    std::ofstream(path("bad.log")) << "at 1 key r\nat two key r\n";
+    EXPECT_EQ(run("view builtin:sphere --headless --play '" + path("bad.log") + "'"), 4);
+    EXPECT_NE(err_.find("bad.log:2"), std::string::npos) << err_;
+    EXPECT_EQ(run("view builtin:sphere --headless --compare isa,lic --play '" + path("bad.log") + "'"), 2);
+}
+
+// The real GLFW window under Xvfb: the same session gives the same image as headless,
+// and the window (panel included) differs from the image only where the panel is.
+TEST_F(Viewer, RealWindowUnderXvfb) {
+    if (std::system("command -v xvfb-run > /dev/null") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string log = "at 0 set method isa\n"
+                            "at 3 mouse-move 100 60\n"
+                            "at 3 mouse-down left\n"
+                            "at 4 mouse-move 130 70\n"
+                            "at 4 mouse-up left\n"
+                            "at 20 screenshot " + path("shot.png") + "\n"
+                            "at 20 window-screenshot " + path("window.png") + "\n"
+                            "at 21 quit\n";
+    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360", "xvfb-run -a -s '-screen 0 1024x768x24' ", false), 0)
+        << err_;
+    fs::rename(path("shot.png"), path("window_shot.png"));
+    fs::rename(path("window.png"), path("window_full.png"));
+    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360"), 0) << err_;
+    io::PngImage w = png(path("window_shot.png")), h = png(path("shot.png")), full = png(path("window_full.png"));
+    ASSERT_EQ(w.width, 480);
+    EXPECT_LE(meanAbsDiff(w, h), 1.0 / 255.0);
+    // The panel sits at the left: the window differs there, and matches on the right.
+    EXPECT_GT(meanAbsDiff(full, w, 0, 60), 0.05);
+    EXPECT_LE(meanAbsDiff(full, w, 440, 480), 1.0 / 255.0);
+}
