@@ -143,8 +143,7 @@ private:
     void loadData(const RenderOptions& o) {
         pipeline_.load(o);
         loaded_ = o;
-        state_.options.input = o.input;
-        state_.options.field = o.field;
+        state_.options = o;  // a newly opened file comes with its own camera and time
         state_.dataLoaded(pipeline_.bounds(), pipeline_.times(), pipeline_.defaultPerFrame());
         build();
         if (window_) window_->setTitle("flowsurf view — " + o.input);

@@ -95,9 +95,10 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     }
     if (!state.showPanel) return;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 560), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("flowsurf");
+    ImGui::Begin("flowsurf", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(170);
 
     if (!state.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
@@ -109,8 +110,9 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
 
     // Read-out: what is shown and what it costs.
     ImGui::Text("%s", pipeline.input().c_str());
-    ImGui::Text("%zu triangles, %dx%d per view, %s", pipeline.triangles(), pipeline.viewSize().width,
-                pipeline.viewSize().height, info.renderer.c_str());
+    ImGui::Text("%zu triangles, %dx%d per view", pipeline.triangles(), pipeline.viewSize().width,
+                pipeline.viewSize().height);
+    ImGui::Text("%s", info.renderer.c_str());
     ImGui::Text("frame %.1f ms (%.1f fps), clock k = %u%s", info.frameMs, info.frameMs > 0 ? 1000.0 / info.frameMs : 0.0,
                 state.clock(), state.paused ? ", paused" : "");
 
@@ -206,6 +208,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         ImGui::BulletText("drop a file on the window: open it");
         for (const KeyBinding& k : keyTable()) ImGui::BulletText("%-6s %s", k.name, k.description);
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
