@@ -284,6 +284,33 @@ TEST_F(Viewer, RecordsVideoAndFrameTimes) {
     EXPECT_TRUE(stats["stage_ms"].contains("overlay"));
 }
 
+// A session's recorded events replay to the same pictures.
+TEST_F(Viewer, RecordedEventsReplayTheSession) {
+    ASSERT_EQ(replay("builtin:tori",
+                     "at 0 set method hybrid\n"
+                     "at 2 mouse-move 50 50\n"
+                     "at 2 mouse-down middle\n"
+                     "at 3 mouse-move 70 40\n"
+                     "at 3 mouse-up middle\n"
+                     "at 4 scroll 1.5\n"
+                     "at 5 key t\n"
+                     "at 5 mouse-down left\n"
+                     "at 6 mouse-move 90 70\n"
+                     "at 6 mouse-up left\n"
+                     "at 9 screenshot " + path("first.png") + "\n"
+                     "at 10 quit\n",
+                     "--size 128x96 --record-events '" + path("recorded.log") + "'"), 0) << err_;
+    std::ifstream in(path("recorded.log"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string recorded = ss.str();
+    ASSERT_NE(recorded.find("at 6 mouse-move 90 70"), std::string::npos) << recorded;
+    fs::rename(path("first.png"), path("original.png"));
+    ASSERT_EQ(run("view builtin:tori --headless -q --background '#ff00ff' --size 128x96 --play '" + path("recorded.log") + "'"), 0)
+        << err_;
+    EXPECT_LE(meanAbsDiff(png(path("original.png")), png(path("first.png"))), 0.0);
+}
+
 TEST_F(Viewer, RefusesBadSessionsWithClearErrors) {
     EXPECT_EQ(run("view builtin:sphere --headless"), 2);
     EXPECT_NE(err_.find("--play"), std::string::npos) << err_;
