@@ -275,6 +275,9 @@ TEST_F(Viewer, BadInputShowsAnErrorAndKeepsRunning) {
 TEST_F(Viewer, RecordsVideoAndFrameTimes) {
     ASSERT_EQ(replay("builtin:sphere",
                      "at 2 record " + path("clip.mp4") + "\n"
+                     "at 3 save-keyframe " + path("path.json") + "\n"
+                     "at 4 key x\n"
+                     "at 8 save-keyframe " + path("path.json") + "\n"
                      "at 12 record-stop\n"
                      "at 14 quit\n",
                      "--size 96x96 --stats '" + path("stats.json") + "'"), 0) << err_;
@@ -282,6 +285,15 @@ TEST_F(Viewer, RecordsVideoAndFrameTimes) {
     nlohmann::json stats = readJson(path("stats.json"));
     EXPECT_EQ(stats["frame_ms"].size(), 15u);
     EXPECT_TRUE(stats["stage_ms"].contains("overlay"));
+    // Hand-recorded keyframes: a camera path that render accepts.
+    nlohmann::json keys = readJson(path("path.json"))["keyframes"];
+    ASSERT_EQ(keys.size(), 2u);
+    EXPECT_EQ(keys[0]["frame"], 3);
+    EXPECT_EQ(keys[1]["frame"], 8);
+    EXPECT_NEAR(keys[1]["eye"][0].get<float>() - keys[1]["target"][0].get<float>(), -glm::length(
+        vec3(keys[1]["eye"]) - vec3(keys[1]["target"])), 1e-4f);  // along +x: the eye on the -x side
+    EXPECT_EQ(run("render builtin:sphere --size 64x64 --frames 8 -q --camera-path '" + path("path.json") + "' -o '" +
+                  path("p.png") + "'"), 0) << err_;
 }
 
 // A session's recorded events replay to the same pictures.
