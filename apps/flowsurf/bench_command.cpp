@@ -3,7 +3,7 @@
 #include "bench.h"
 #include "core/errors.h"
 #include "gl/context.h"
-#include "options.h"
+#include "cli_options.h"
 
 #include <cstdio>
 #include <fstream>

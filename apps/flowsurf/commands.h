@@ -1,7 +1,7 @@
 // flowsurf — the subcommands of the command-line program.
 #pragma once
 
-#include "options.h"
+#include "cli_options.h"
 
 #include <string>
 #include <vector>

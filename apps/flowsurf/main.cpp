@@ -1,7 +1,7 @@
 // flowsurf — command-line program: render, info, bench. One catch here maps each error
 // type to its exit code (exit_codes.h); the library never exits the process.
 #include "commands.h"
-#include "config_file.h"
+#include "session/config_file.h"
 #include "core/errors.h"
 #include "exit_codes.h"
 #include "view_app.h"

@@ -7,9 +7,9 @@
 #include "io/image_writer.h"
 #include "io/video_writer.h"
 #include "methods/common/frame.h"
-#include "animated_surface.h"
+#include "session/animated_surface.h"
 #include "progress.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include <epoxy/gl.h>
 

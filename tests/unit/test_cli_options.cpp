@@ -1,7 +1,7 @@
 // Option parsing of `flowsurf render`: the names scripts depend on, and refusals.
 #include "core/errors.h"
-#include "config_file.h"
-#include "options.h"
+#include "session/config_file.h"
+#include "cli_options.h"
 
 #include <gtest/gtest.h>
 

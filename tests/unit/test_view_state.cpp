@@ -1,6 +1,6 @@
 // The viewer's logic without a window: event logs, and what events do to the state
 // (camera by the stated degrees per pixel, method switches, time playback, errors).
-#include "animated_surface.h"
+#include "session/animated_surface.h"
 #include "core/errors.h"
 #include "view_events.h"
 #include "view_state.h"

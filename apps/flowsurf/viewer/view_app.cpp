@@ -5,8 +5,8 @@
 //   (4) show it (window only), then this frame's outputs (screenshot, config, ...)
 #include "view_app.h"
 
-#include "camera_path_file.h"
-#include "config_file.h"
+#include "session/camera_path_file.h"
+#include "session/config_file.h"
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"

@@ -3,7 +3,7 @@
 // replayed sessions. See view_state.h for what input does and view_events.h for logs.
 #pragma once
 
-#include "options.h"
+#include "cli_options.h"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // Edits become `set` events (recorded like mouse and keys), applied on the next frame.
 #include "view_window.h"
 
-#include "options.h"
+#include "cli_options.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

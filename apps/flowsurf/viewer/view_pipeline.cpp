@@ -2,7 +2,7 @@
 
 #include "core/errors.h"
 #include "gl/readback.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include <algorithm>
 

@@ -4,10 +4,10 @@
 // a GLFW window's or a headless EGL one.
 #pragma once
 
-#include "animated_surface.h"
+#include "session/animated_surface.h"
 #include "core/time_series.h"
 #include "methods/common/frame.h"
-#include "options.h"
+#include "cli_options.h"
 
 #include <memory>
 #include <string>

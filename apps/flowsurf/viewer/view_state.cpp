@@ -1,7 +1,7 @@
 #include "view_state.h"
 
 #include "core/errors.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include <glm/gtc/quaternion.hpp>
 

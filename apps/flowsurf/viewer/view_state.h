@@ -6,7 +6,7 @@
 #pragma once
 
 #include "core/camera.h"
-#include "options.h"
+#include "cli_options.h"
 #include "view_events.h"
 
 #include <glm/glm.hpp>

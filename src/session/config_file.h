@@ -6,12 +6,12 @@
 // syntax they spell. Options on the command line override the file.
 #pragma once
 
-#include "options.h"
+#include "session/options.h"
 
 #include <optional>
 #include <string>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 // Applies every key of the file to `o`. Throws IoError (cannot open), FormatError (not
 // JSON, not an object) or ConfigError (unknown key, bad value), naming the file and key.
@@ -23,4 +23,4 @@ void writeConfigFile(const std::string& path, const RenderOptions& o);
 // The FILE of `--config FILE` or `--config=FILE` in a command line, if any.
 std::optional<std::string> findConfigArgument(int argc, const char* const* argv);
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -7,14 +7,12 @@
 #include "core/camera.h"
 #include "methods/common/params.h"
 
-#include <CLI/CLI.hpp>
-
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 struct RenderOptions {
     std::string input;                  // file or builtin:NAME
@@ -72,8 +70,6 @@ void setOption(RenderOptions& o, const std::string& name, const std::string& val
 // The default of an option as text (from RenderOptions{}): empty when it has none.
 std::string defaultText(const OptionSpec& spec);
 
-// Adds the render options, grouped by topic, to `cmd`.
-void addRenderOptions(CLI::App& cmd, RenderOptions& opt);
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.
 void validateRenderOptions(const RenderOptions& opt);
 
@@ -91,4 +87,4 @@ std::string formatDouble(double value);
 enum class OutputKind { Png, Mp4, PngSequence };
 OutputKind outputKind(const std::string& path);
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

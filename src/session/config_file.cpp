@@ -1,4 +1,4 @@
-#include "config_file.h"
+#include "session/config_file.h"
 
 #include "core/errors.h"
 #include "io/text_writer.h"
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 namespace {
 
@@ -109,4 +109,4 @@ std::optional<std::string> findConfigArgument(int argc, const char* const* argv)
     return found;
 }
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -8,9 +8,9 @@
 #include "core/time_series.h"
 
 #include <memory>
-#include "options.h"
+#include "session/options.h"
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 core::Dataset loadInput(const std::string& input);
 // The input as time steps loaded on demand: builtin:NAME, a file, or a file series
@@ -34,4 +34,4 @@ private:
     core::Bounds bounds_;
 };
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -7,9 +7,9 @@
 
 #include <string>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 // Throws IoError (cannot open) or FormatError naming the file and the keyframe.
 core::CameraPath readCameraPath(const std::string& path, const core::Camera& defaults);
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

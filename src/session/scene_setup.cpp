@@ -1,14 +1,14 @@
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
 
 #include <algorithm>
-#include "camera_path_file.h"
+#include "session/camera_path_file.h"
 #include "io/dataset_reader.h"
 #include "io/series_reader.h"
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 core::Dataset loadInput(const std::string& input) {
     if (core::isBuiltinSpec(input)) return core::makeBuiltin(input);
@@ -63,4 +63,4 @@ core::Camera FrameCameras::at(int frame) const {
     return c;
 }
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -1,4 +1,4 @@
-#include "camera_path_file.h"
+#include "session/camera_path_file.h"
 
 #include "core/errors.h"
 
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 namespace {
 
@@ -62,4 +62,4 @@ core::CameraPath readCameraPath(const std::string& path, const core::Camera& def
     return core::CameraPath(std::move(keys));
 }
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -1,12 +1,12 @@
-#include "animated_surface.h"
+#include "session/animated_surface.h"
 
 #include "core/errors.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times) {
     core::TimeMapping m;
@@ -77,4 +77,4 @@ const methods::SurfaceGpu& AnimatedSurface::atTime(double t) {
     return *surface_;
 }
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session

@@ -6,11 +6,11 @@
 #include "core/step_stream.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
-#include "options.h"
+#include "session/options.h"
 
 #include <memory>
 
-namespace flowsurf::app {
+namespace flowsurf::session {
 
 class AnimatedSurface {
 public:
@@ -52,4 +52,4 @@ private:
 // The frame -> data time mapping of the options for these step times.
 core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times);
 
-}  // namespace flowsurf::app
+}  // namespace flowsurf::session
