@@ -98,6 +98,14 @@ HeadlessContext::HeadlessContext(bool verbose) {
                   "); install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver");
 }
 
+void HeadlessContext::makeCurrent() {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+        throw GlError("cannot make the headless OpenGL context current (EGL error 0x" +
+                      std::to_string(eglGetError()) + ")");
+}
+
+void HeadlessContext::release() { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
+
 HeadlessContext::~HeadlessContext() {
     if (display_) {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

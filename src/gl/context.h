@@ -16,6 +16,10 @@ public:
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
     const std::string& renderer() const { return renderer_; }
+    // Makes this context current on the calling thread / releases it from the thread (so
+    // another thread may make it current). Throws GlError if EGL refuses.
+    void makeCurrent();
+    void release();
     const std::string& description() const { return description_; }
 
 private:

@@ -126,7 +126,9 @@ TEST(CliOptions, ConfigFileRoundTrip) {
     RenderOptions b;
     applyConfigFile(path, b);
     for (const OptionSpec& spec : renderOptionTable())
-        if (spec.saved) EXPECT_EQ(spec.get(b), spec.get(a)) << spec.name;
+        if (spec.saved) {
+            EXPECT_EQ(spec.get(b), spec.get(a)) << spec.name;
+        }
     EXPECT_EQ(*b.eye, *a.eye);
     EXPECT_EQ(b.params.common.background, a.params.common.background);
     std::remove(path.c_str());

@@ -1,0 +1,91 @@
+// flowsurf — renders flow textures of a Surface with one method (ISA, IBFVS or the hybrid
+// LIC) into images in caller memory. Options are set by their command-line names and take
+// the same values, ranges and defaults (`flowsurf render --help`); the same inputs, seed
+// and frame count give the same image as the command line, byte for byte.
+//
+//   flowsurf::Renderer r;                       // its own headless EGL context
+//   r.set("method", "hybrid");
+//   r.set("size", "800x600");
+//   r.render(surface, 90);                      // as `flowsurf render --frames 90`
+//   std::vector<uint8_t> rgb(r.width() * r.height() * 3);
+//   r.readImage(rgb.data());
+#pragma once
+
+#include <flowsurf/surface.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace flowsurf {
+
+// Whose OpenGL context renders. Own: the renderer makes a headless OpenGL 4.5 core
+// context through EGL (any thread may use the renderer; calls are serialised). Current:
+// the caller's context, current on the calling thread whenever the renderer is used (a
+// viewer or a host application with a window).
+enum class ContextMode { Own, Current };
+
+struct CameraView {
+    float eye[3] = {0, 0, 5};
+    float target[3] = {0, 0, 0};
+    float up[3] = {0, 1, 0};
+    float fovDeg = 30.0f;      // vertical, perspective
+    float orthoHeight = 0.0f;  // > 0: orthographic with this view height
+};
+
+class Renderer {
+public:
+    // Throws GlError when no OpenGL 4.5 core context can be made (ContextMode::Own).
+    explicit Renderer(ContextMode mode = ContextMode::Own);
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    // An option by its command-line name without dashes ("method", "size", "alpha",
+    // "filter-length", "overlay", "eye", "orbit", "time-per-frame", ...) and its value as
+    // text. Throws ConfigError naming the option for an unknown name or a bad value.
+    void set(const std::string& option, const std::string& value);
+    std::string get(const std::string& option) const;
+    // Every option name, in `--help` order.
+    static std::vector<std::string> optionNames();
+
+    // The camera: explicit, or (default, and after fitCamera) fitted to the surface's
+    // bounds as the command line does. An orbit ("orbit" option) turns it per frame.
+    void setCamera(const CameraView& view);
+    void fitCamera();
+    // The camera of the last rendered frame.
+    CameraView camera() const;
+
+    // Renders frames 0..frames of `surface` from a fresh start (the image after them is
+    // what `flowsurf render --frames N` writes). Throws what loading a step throws.
+    void render(const Surface& surface, int frames);
+    // Starts an animation of `surface` without rendering; then advance() renders frame
+    // 0, 1, 2, ... (the camera path and data time follow the frame as in batch).
+    void begin(const Surface& surface);
+    void advance();
+    // Frames rendered since render()/begin(); the frame on screen is frame() - 1.
+    int frame() const;
+    // Data time of the last frame (0 for steady data).
+    double time() const;
+
+    int width() const;
+    int height() const;
+    // The composite of the last frame, RGB8, rows top to bottom: width*height*3 bytes.
+    void readImage(uint8_t* rgb) const;
+    // The advected texture F_a alone, rows top to bottom: width*height values in [0, 1]
+    // (float) or 0..65535 (as the command line's 16-bit --flow-texture PNG).
+    void readFlowTexture(float* values) const;
+    void readFlowTexture16(uint16_t* values) const;
+    // Milliseconds per stage of the last frame, in the method's stage order.
+    std::vector<std::pair<std::string, double>> stageMs() const;
+    // GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    std::string glRenderer() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace flowsurf

@@ -1,0 +1,58 @@
+// flowsurf — a triangle surface with per-vertex vector fields, steady or a time series,
+// built from caller arrays or read from a file. Cheap to copy (shared, immutable data).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flowsurf {
+
+namespace detail {
+struct SurfaceData;
+}
+
+class Surface {
+public:
+    // From arrays, copied: `points` n x 3 (object space), `triangles` m x 3 indices into
+    // the points, `vectors` n x 3 (the field, named `field`), `normals` n x 3 or null
+    // (computed, area-weighted). Throws FormatError naming the first bad element: an
+    // index out of range, a NaN/Inf coordinate or vector, no triangles.
+    static Surface fromArrays(const float* points, size_t pointCount, const uint32_t* triangles,
+                              size_t triangleCount, const float* vectors, const std::string& field = "velocity",
+                              const float* normals = nullptr);
+    // Any input the command line reads: a file (.vtp .vtu .vtk .ply .obj .stl .foam .e
+    // .case .pvd), a file series (surf_%04d.vtp, surf_*.vtp) or builtin:NAME. `field`
+    // chooses the vector array (empty: the first one that is not zero everywhere). A
+    // series is streamed step by step while rendering. Throws IoError, FormatError,
+    // FieldError, naming the file.
+    static Surface read(const std::string& path, const std::string& field = "");
+
+    // Another n x 3 per-vertex vector array (copied), e.g. to switch fields later.
+    // Throws FormatError (NaN/Inf) or ConfigError (name taken). In-memory surfaces only.
+    void addVectors(const std::string& name, const float* vectors);
+    // The field to show; throws FieldError if the surface has no such vector array.
+    void setField(const std::string& name);
+
+    const std::string& field() const;
+    std::vector<std::string> vectorFields() const;
+    size_t pointCount() const;      // of the first step
+    size_t triangleCount() const;   // of the first step
+    size_t stepCount() const;       // 1 for steady data
+    std::vector<double> times() const;
+    // Axis-aligned bounds over all steps (where known), object space.
+    void bounds(float lo[3], float hi[3]) const;
+    // Where it came from, for messages: the path, builtin:NAME or "arrays".
+    const std::string& source() const;
+
+    // The library's own view of the data (for Renderer).
+    const std::shared_ptr<detail::SurfaceData>& data_shared() const { return data_; }
+
+private:
+    explicit Surface(std::shared_ptr<detail::SurfaceData> d) : data_(std::move(d)) {}
+    std::shared_ptr<detail::SurfaceData> data_;
+};
+
+}  // namespace flowsurf

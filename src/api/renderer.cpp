@@ -1,0 +1,218 @@
+#include <flowsurf/renderer.h>
+
+#include "api/surface_data.h"
+#include "core/errors.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "methods/common/frame.h"
+#include "session/animated_surface.h"
+#include "session/options.h"
+#include "session/scene_setup.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <mutex>
+
+namespace flowsurf {
+
+namespace {
+
+// Headless contexts are made current on whichever thread calls; one call at a time.
+std::recursive_mutex& glMutex() {
+    static std::recursive_mutex m;
+    return m;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+    ContextMode mode = ContextMode::Own;
+    std::unique_ptr<gl::HeadlessContext> context;
+    session::RenderOptions options;
+    std::shared_ptr<const detail::SurfaceData> data;
+    std::unique_ptr<core::StepProvider> steps;
+    std::unique_ptr<session::AnimatedSurface> surface;
+    std::unique_ptr<session::FrameCameras> cameras;
+    std::unique_ptr<methods::FlowMethod> method;
+    int frame = 0;
+    double time = 0.0;
+    core::Camera lastCamera;
+    bool optionsChanged = false;   // since begin(): the next advance() starts over
+    bool cameraChanged = false;    // since begin(): new FrameCameras, same frame count
+
+    // Holds the lock and the context for one public call.
+    struct Scope {
+        std::unique_lock<std::recursive_mutex> lock;
+        Impl& impl;
+        explicit Scope(Impl& i) : lock(glMutex()), impl(i) {
+            if (impl.context) impl.context->makeCurrent();
+        }
+        ~Scope() {
+            if (impl.context && lock.owns_lock()) impl.context->release();
+        }
+    };
+
+    void start(std::shared_ptr<const detail::SurfaceData> d) {
+        // Release the old stream before the new one starts (its prefetch thread reads).
+        surface.reset();
+        method.reset();
+        data = std::move(d);
+        options.input = data->source;
+        options.field = data->field;
+        session::validateRenderOptions(options);
+        steps = data->provider();
+        cameras = std::make_unique<session::FrameCameras>(options, data->bounds);
+        surface = std::make_unique<session::AnimatedSurface>(options, *steps);
+        method = methods::makeMethod(options.method, options.params, options.size);
+        method->timer().setEnabled(true);
+        frame = 0;
+        optionsChanged = cameraChanged = false;
+    }
+
+    void step() {
+        if (!data) throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
+        if (optionsChanged) start(data);
+        if (cameraChanged) {
+            cameras = std::make_unique<session::FrameCameras>(options, data->bounds);
+            cameraChanged = false;
+        }
+        const methods::SurfaceGpu& s = surface->at(frame);
+        lastCamera = cameras->at(frame);
+        time = surface->unsteady() ? surface->timeAt(frame) : 0.0;
+        method->timer().reset();
+        method->renderFrame({&s, lastCamera, uint32_t(frame), method->usesTimeLevels() ? surface->levelsAt(frame) : nullptr});
+        ++frame;
+    }
+
+    const methods::FlowMethod& rendered() const {
+        if (!method || frame == 0) throw ConfigError("nothing rendered yet: call render() or advance() first");
+        return *method;
+    }
+};
+
+Renderer::Renderer(ContextMode mode) : impl_(std::make_unique<Impl>()) {
+    std::lock_guard<std::recursive_mutex> lock(glMutex());
+    impl_->mode = mode;
+    if (mode == ContextMode::Own) {
+        impl_->context = std::make_unique<gl::HeadlessContext>();
+        impl_->context->release();
+    }
+}
+
+Renderer::~Renderer() {
+    if (!impl_) return;
+    Impl::Scope scope(*impl_);
+    impl_->surface.reset();
+    impl_->method.reset();  // GL objects go while the context is current
+}
+
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+void Renderer::set(const std::string& option, const std::string& value) {
+    if (option == "input" || option == "field")
+        throw ConfigError("'" + option + "' is the surface's: use Surface::read / Surface::setField");
+    const bool camera = option == "eye" || option == "target" || option == "up" || option == "fov" ||
+                        option == "ortho" || option == "orbit" || option == "camera-path";
+    session::setOption(impl_->options, option, value);
+    (camera ? impl_->cameraChanged : impl_->optionsChanged) = true;
+}
+
+std::string Renderer::get(const std::string& option) const {
+    const session::OptionSpec* spec = session::findOption(option);
+    if (!spec) throw ConfigError("unknown option '" + option + "'");
+    return spec->get(impl_->options);
+}
+
+std::vector<std::string> Renderer::optionNames() {
+    std::vector<std::string> names;
+    for (const auto& spec : session::renderOptionTable())
+        if (spec.name != "input") names.push_back(spec.name);
+    return names;
+}
+
+void Renderer::setCamera(const CameraView& v) {
+    auto& o = impl_->options;
+    o.eye = glm::vec3(v.eye[0], v.eye[1], v.eye[2]);
+    o.target = glm::vec3(v.target[0], v.target[1], v.target[2]);
+    o.up = glm::vec3(v.up[0], v.up[1], v.up[2]);
+    if (glm::length(*o.up) == 0.0f) throw ConfigError("camera: the up vector must not be zero");
+    if (glm::length(*o.eye - *o.target) == 0.0f) throw ConfigError("camera: eye and target must differ");
+    if (!(v.fovDeg >= 1.0f && v.fovDeg <= 170.0f)) throw ConfigError("camera: fov must be 1..170 degrees");
+    o.fov = v.fovDeg;
+    o.ortho = std::max(0.0f, v.orthoHeight);
+    impl_->cameraChanged = true;
+}
+
+void Renderer::fitCamera() {
+    impl_->options.eye.reset();
+    impl_->options.target.reset();
+    impl_->options.up.reset();
+    impl_->cameraChanged = true;
+}
+
+CameraView Renderer::camera() const {
+    CameraView v;
+    const core::Camera& c = impl_->lastCamera;
+    for (int a = 0; a < 3; ++a) v.eye[a] = c.eye[a], v.target[a] = c.target[a], v.up[a] = c.up[a];
+    v.fovDeg = c.fovDeg;
+    v.orthoHeight = c.orthoHeight;
+    return v;
+}
+
+void Renderer::render(const Surface& surface, int frames) {
+    if (frames < 0) throw ConfigError("render: frames must not be negative");
+    Impl::Scope scope(*impl_);
+    impl_->start(surface.data_shared());
+    for (int k = 0; k <= frames; ++k) impl_->step();
+}
+
+void Renderer::begin(const Surface& surface) {
+    Impl::Scope scope(*impl_);
+    impl_->start(surface.data_shared());
+}
+
+void Renderer::advance() {
+    Impl::Scope scope(*impl_);
+    impl_->step();
+}
+
+int Renderer::frame() const { return impl_->frame; }
+double Renderer::time() const { return impl_->time; }
+int Renderer::width() const { return impl_->options.size.width; }
+int Renderer::height() const { return impl_->options.size.height; }
+
+void Renderer::readImage(uint8_t* rgb) const {
+    Impl::Scope scope(*impl_);
+    std::vector<uint8_t> img = gl::readRgb8TopDown(impl_->rendered().composite());
+    std::copy(img.begin(), img.end(), rgb);
+}
+
+void Renderer::readFlowTexture(float* values) const {
+    Impl::Scope scope(*impl_);
+    const gl::Texture2D& t = impl_->rendered().flowTexture();
+    std::vector<float> bottomUp = gl::readChannel(t, 0);
+    const int w = t.width(), h = t.height();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            values[size_t(y) * w + x] = std::clamp(bottomUp[size_t(h - 1 - y) * w + x], 0.0f, 1.0f);
+}
+
+void Renderer::readFlowTexture16(uint16_t* values) const {
+    Impl::Scope scope(*impl_);
+    std::vector<uint16_t> img = gl::readGray16TopDown(impl_->rendered().flowTexture());
+    std::copy(img.begin(), img.end(), values);
+}
+
+std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
+    if (!impl_->method) return {};
+    return impl_->method->timer().meanMs();
+}
+
+std::string Renderer::glRenderer() const {
+    Impl::Scope scope(*impl_);
+    return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+}
+
+}  // namespace flowsurf

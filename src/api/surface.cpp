@@ -1,0 +1,160 @@
+#include <flowsurf/surface.h>
+
+#include "api/surface_data.h"
+#include "core/errors.h"
+#include "methods/common/surface_gpu.h"
+#include "session/scene_setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flowsurf {
+
+namespace detail {
+
+namespace {
+
+// The steps of a dataset shared between renderers (no copy per renderer).
+class SharedSteps final : public core::StepProvider {
+public:
+    explicit SharedSteps(std::shared_ptr<const core::Dataset> d) : data_(std::move(d)) {}
+    size_t count() const override { return data_->steps.size(); }
+    double time(size_t i) const override { return data_->steps[i].time; }
+    core::SurfaceMesh load(size_t i) override { return data_->steps[i].mesh; }
+    std::string label(size_t i) const override {
+        return data_->steps.size() > 1 ? data_->source + " step " + std::to_string(i) : data_->source;
+    }
+    core::Bounds bounds() override { return data_->bounds(); }
+
+private:
+    std::shared_ptr<const core::Dataset> data_;
+};
+
+}  // namespace
+
+std::unique_ptr<core::StepProvider> SurfaceData::provider() const {
+    if (dataset) return std::make_unique<SharedSteps>(dataset);
+    return session::openInput(source);
+}
+
+}  // namespace detail
+
+namespace {
+
+std::shared_ptr<detail::SurfaceData> describe(std::shared_ptr<detail::SurfaceData> d, core::StepProvider& steps,
+                                              const std::string& field) {
+    const core::SurfaceMesh first = steps.load(0);
+    d->field = methods::selectField(first, field, steps.label(0));
+    d->fields.clear();
+    for (const auto& f : first.fields) d->fields.push_back(f.name);
+    d->points = first.vertexCount();
+    d->triangles = first.triangleCount();
+    d->times.clear();
+    for (size_t i = 0; i < steps.count(); ++i) d->times.push_back(steps.time(i));
+    d->bounds = steps.bounds();
+    return d;
+}
+
+const core::SurfaceMesh& onlyMesh(const detail::SurfaceData& d, const char* what) {
+    if (!d.dataset || d.dataset->steps.size() != 1)
+        throw ConfigError(std::string(what) + ": only for a surface built from arrays or a one-step file");
+    return d.dataset->steps.front().mesh;
+}
+
+}  // namespace
+
+Surface Surface::fromArrays(const float* points, size_t pointCount, const uint32_t* triangles, size_t triangleCount,
+                            const float* vectors, const std::string& field, const float* normals) {
+    if (!points || !triangles || !vectors) throw ConfigError("Surface: points, triangles and vectors are required");
+    if (field.empty()) throw ConfigError("Surface: the field needs a name");
+    if (pointCount == 0) throw FormatError("arrays: the surface has no points");
+    if (triangleCount == 0) throw FormatError("arrays: the surface has no triangles");
+    core::SurfaceMesh m;
+    m.positions.resize(pointCount);
+    std::copy_n(points, pointCount * 3, &m.positions[0].x);
+    m.triangles.resize(triangleCount);
+    for (size_t t = 0; t < triangleCount; ++t)
+        m.triangles[t] = glm::uvec3(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]);
+    core::VectorField f{field, std::vector<glm::vec3>(pointCount)};
+    std::copy_n(vectors, pointCount * 3, &f.values[0].x);
+    m.fields.push_back(std::move(f));
+    if (normals) {
+        m.normals.resize(pointCount);
+        std::copy_n(normals, pointCount * 3, &m.normals[0].x);
+        for (size_t i = 0; i < pointCount; ++i) {
+            const glm::vec3& n = m.normals[i];
+            if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z) || glm::length(n) == 0.0f)
+                throw FormatError("arrays: normal " + std::to_string(i) + " is zero or not finite");
+            m.normals[i] = glm::normalize(n);
+        }
+    }
+    core::validateMesh(m, "arrays");  // indices, NaN/Inf, sizes: names the element
+    if (m.normals.empty()) m.normals = core::computeVertexNormals(m.positions, m.triangles);
+    auto data = std::make_shared<core::Dataset>();
+    data->source = "arrays";
+    data->steps.push_back({0.0, std::move(m)});
+    auto d = std::make_shared<detail::SurfaceData>();
+    d->source = "arrays";
+    d->dataset = data;
+    detail::SharedSteps steps(data);
+    return Surface(describe(d, steps, field));
+}
+
+Surface Surface::read(const std::string& path, const std::string& field) {
+    std::unique_ptr<core::StepProvider> steps = session::openInput(path);
+    auto d = std::make_shared<detail::SurfaceData>();
+    d->source = path;
+    if (steps->count() == 1) {  // read once, shared by every render
+        auto data = std::make_shared<core::Dataset>();
+        data->source = path;
+        data->steps.push_back({steps->time(0), steps->load(0)});
+        d->dataset = data;
+        detail::SharedSteps shared(data);
+        return Surface(describe(d, shared, field));
+    }
+    return Surface(describe(d, *steps, field));
+}
+
+void Surface::addVectors(const std::string& name, const float* vectors) {
+    const core::SurfaceMesh& old = onlyMesh(*data_, "addVectors");
+    if (old.findField(name)) throw ConfigError("addVectors: the surface already has an array '" + name + "'");
+    core::SurfaceMesh m = old;
+    core::VectorField f{name, std::vector<glm::vec3>(m.vertexCount())};
+    std::copy_n(vectors, m.vertexCount() * 3, &f.values[0].x);
+    m.fields.push_back(std::move(f));
+    core::validateMesh(m, data_->source);
+    auto data = std::make_shared<core::Dataset>(*data_->dataset);
+    data->steps.front().mesh = std::move(m);
+    auto d = std::make_shared<detail::SurfaceData>(*data_);
+    d->dataset = data;
+    d->fields.push_back(name);
+    data_ = d;  // copies of this Surface keep the old data
+}
+
+void Surface::setField(const std::string& name) {
+    if (std::find(data_->fields.begin(), data_->fields.end(), name) == data_->fields.end()) {
+        std::string list;
+        for (const auto& f : data_->fields) list += (list.empty() ? "" : ", ") + f;
+        throw FieldError(data_->source + ": no vector field '" + name + "' (has: " + list + ")");
+    }
+    auto d = std::make_shared<detail::SurfaceData>(*data_);
+    d->field = name;
+    data_ = d;
+}
+
+const std::string& Surface::field() const { return data_->field; }
+std::vector<std::string> Surface::vectorFields() const { return data_->fields; }
+size_t Surface::pointCount() const { return data_->points; }
+size_t Surface::triangleCount() const { return data_->triangles; }
+size_t Surface::stepCount() const { return data_->times.size(); }
+std::vector<double> Surface::times() const { return data_->times; }
+const std::string& Surface::source() const { return data_->source; }
+
+void Surface::bounds(float lo[3], float hi[3]) const {
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = data_->bounds.lo[a];
+        hi[a] = data_->bounds.hi[a];
+    }
+}
+
+}  // namespace flowsurf
