@@ -1,0 +1,225 @@
+"""flowsurf: dense, animated flow textures on triangle-mesh surfaces.
+
+ISA and IBFVS (Laramee et al. 2004) and the hybrid physical/device-space LIC (Weiskopf &
+Ertl 2004), rendered on the GPU (or Mesa's llvmpipe) into numpy arrays::
+
+    import flowsurf, numpy as np
+    s = flowsurf.Surface(points, triangles, vectors)          # (N,3), (M,3), (N,3)
+    s = flowsurf.read("case.vtp", field="wallShearStress")     # any format the CLI reads
+    img = flowsurf.render(s, method="hybrid", size=(800, 600), frames=90, seed=1)
+    img, tex = flowsurf.render(s, method="isa", flow_texture=True)
+    r = flowsurf.Renderer(method="ibfvs", size=(640, 480), alpha=0.1)
+    for frame in r.frames(s, n=120, orbit=1.0): ...
+    r.stage_ms
+
+Keywords are the command-line option names with ``_`` for ``-`` (``step_px``,
+``filter_length``, ``on_camera_move``, ``time_per_frame``...), with the same defaults and
+ranges (``flowsurf render --help``). Bad keywords or values raise ``ValueError`` naming
+them; unreadable files raise ``OSError``; malformed data ``flowsurf.FormatError`` (a
+``ValueError``). Rendering releases the GIL; renderers in several threads take turns.
+"""
+
+import struct as _struct
+import zlib as _zlib
+
+import numpy as _np
+
+from ._flowsurf import FieldError, FormatError, GlError, Surface, option_names, read
+from ._flowsurf import _Renderer
+
+__all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "FormatError", "FieldError",
+           "GlError", "option_names"]
+
+_OPTIONS = set(option_names())
+
+
+def _option_text(name, value):
+    """A Python value as the command line's text for option `name`."""
+    if isinstance(value, (bool, _np.bool_)):
+        return "on" if value else "off"  # flags and on/off switches both read it
+    if isinstance(value, (tuple, list, _np.ndarray)):
+        items = [v.item() if hasattr(v, "item") else v for v in value]
+        if name == "size":
+            if len(items) != 2:
+                raise ValueError("size must be (width, height), got %r" % (value,))
+            return "%dx%d" % (int(items[0]), int(items[1]))
+        if name == "time":
+            if len(items) != 2:
+                raise ValueError("time must be (start, end), got %r" % (value,))
+            return "%r:%r" % (float(items[0]), float(items[1]))
+        return ",".join(repr(float(v)) for v in items)
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def _apply(renderer, options):
+    for key, value in options.items():
+        name = key.replace("_", "-")
+        if name not in _OPTIONS or name in ("input", "field", "output", "flow-texture"):
+            raise ValueError("unknown keyword %r (render options: %s)" % (
+                key, ", ".join(sorted(o.replace("-", "_") for o in _OPTIONS - {"input", "field", "output",
+                                                                                "flow-texture"}))))
+        if value is None:
+            continue
+        try:
+            renderer.set(name, _option_text(name, value))
+        except ValueError as e:
+            raise ValueError("%s=%r: %s" % (key, value, e)) from None
+
+
+def _triangles_from_faces(faces):
+    """PyVista's flat face array [n, i0, .., i(n-1), n, ...] as (M,3) triangles (fans)."""
+    faces = _np.asarray(faces).ravel()
+    tris, i = [], 0
+    while i < len(faces):
+        n = int(faces[i])
+        poly = faces[i + 1:i + 1 + n]
+        if n < 3 or len(poly) != n:
+            raise ValueError("faces: malformed cell at offset %d" % i)
+        for k in range(1, n - 1):
+            tris.append((poly[0], poly[k], poly[k + 1]))
+        i += n + 1
+    return _np.asarray(tris, dtype=_np.int64).reshape(-1, 3)
+
+
+def _as_surface(mesh, field=None):
+    """A flowsurf.Surface from a Surface, a PyVista-like mesh (points, faces, point_data)
+    or a vedo Mesh (vertices, cells, pointdata)."""
+    if isinstance(mesh, Surface):
+        if field and field != mesh.field:
+            mesh.set_field(field)
+        return mesh
+    if hasattr(mesh, "vertices") and hasattr(mesh, "cells") and hasattr(mesh, "pointdata"):  # vedo
+        # vedo 2023.4 has methods vertices()/cells(); later versions properties.
+        points = _np.asarray(mesh.vertices() if callable(mesh.vertices) else mesh.vertices)
+        cells = mesh.cells() if callable(mesh.cells) else mesh.cells
+        tris = []
+        for c in cells:
+            c = list(c)
+            if len(c) < 3:
+                raise ValueError("vedo mesh: a cell with %d points is not a surface polygon" % len(c))
+            tris.extend((c[0], c[k], c[k + 1]) for k in range(1, len(c) - 1))
+        triangles = _np.asarray(tris, dtype=_np.int64).reshape(-1, 3)
+        data = mesh.pointdata
+        names = list(data.keys())
+    elif hasattr(mesh, "points") and hasattr(mesh, "faces"):  # PyVista PolyData layout
+        points = _np.asarray(mesh.points)
+        triangles = _triangles_from_faces(mesh.faces)
+        data = getattr(mesh, "point_data", None) or getattr(mesh, "point_arrays", {})
+        names = list(data.keys())
+    else:
+        raise ValueError("expected a flowsurf.Surface, a mesh with points and faces (PyVista), or a vedo Mesh; "
+                         "got %s" % type(mesh).__name__)
+    vectors = [n for n in names if _np.asarray(data[n]).ndim == 2 and _np.asarray(data[n]).shape[1] == 3
+               and n.lower() != "normals"]
+    if field is None:
+        if not vectors:
+            raise ValueError("the mesh has no 3-component point array to use as the vector field")
+        field = vectors[0]
+    if field not in names:
+        raise FieldError("the mesh has no point array %r (has: %s)" % (field, ", ".join(names)))
+    surface = Surface(points, triangles, _np.asarray(data[field]), field=field)
+    for n in vectors:
+        if n != field:
+            surface.add_vectors(n, _np.asarray(data[n]))
+    return surface
+
+
+class Renderer:
+    """A renderer with one method and its options; keeps its texture between frames."""
+
+    def __init__(self, **options):
+        self._r = _Renderer()
+        _apply(self._r, options)
+
+    def set(self, **options):
+        """Sets options by keyword; the next frame starts over unless only the camera changed."""
+        _apply(self._r, options)
+
+    def get(self, name):
+        """An option's value as the command line would print it."""
+        return self._r.get(name.replace("_", "-"))
+
+    def render(self, surface, field=None):
+        """Frames 0..`frames` from a fresh start; the last one as an (H, W, 3) uint8 array."""
+        self._r.render(_as_surface(surface, field), int(self._r.get("frames")))
+        return self._r.image()
+
+    def frames(self, surface, n, field=None, **options):
+        """Yields the image of frames 0..n-1 of an animation (camera path, orbit and data time
+        follow the frame as on the command line)."""
+        _apply(self._r, options)
+        self._r.begin(_as_surface(surface, field))
+        for _ in range(int(n)):
+            self._r.advance()
+            yield self._r.image()
+
+    def image(self):
+        return self._r.image()
+
+    def flow_texture(self):
+        """F_a of the last frame alone: (H, W) float32 in [0, 1]."""
+        return self._r.flow_texture()
+
+    @property
+    def stage_ms(self):
+        """Milliseconds per stage of the last frame."""
+        return self._r.stage_ms()
+
+    @property
+    def camera(self):
+        return self._r.camera()
+
+    @property
+    def frame(self):
+        return self._r.frame
+
+    @property
+    def time(self):
+        return self._r.time
+
+    @property
+    def gl_renderer(self):
+        return self._r.gl_renderer()
+
+
+def render(surface, flow_texture=False, field=None, **options):
+    """Renders `surface` as `flowsurf render` does: the image after `frames` frames (90),
+    (H, W, 3) uint8; with flow_texture=True also F_a, (H, W) float32."""
+    r = Renderer(**options)
+    img = r.render(surface, field)
+    return (img, r.flow_texture()) if flow_texture else img
+
+
+def to_png(img):
+    """PNG bytes of an (H, W, 3) uint8 image or an (H, W) float image in [0, 1]."""
+    a = _np.asarray(img)
+    if a.ndim == 2:
+        a = _np.repeat((_np.clip(a, 0, 1) * 255 + 0.5).astype(_np.uint8)[:, :, None], 3, axis=2)
+    if a.ndim != 3 or a.shape[2] != 3:
+        raise ValueError("to_png: expected (H, W, 3) or (H, W), got shape %r" % (a.shape,))
+    a = _np.ascontiguousarray(a, dtype=_np.uint8)
+    h, w = a.shape[:2]
+    raw = b"".join(b"\x00" + a[y].tobytes() for y in range(h))
+
+    def chunk(kind, data):
+        return (_struct.pack(">I", len(data)) + kind + data +
+                _struct.pack(">I", _zlib.crc32(kind + data) & 0xFFFFFFFF))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", _struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", _zlib.compress(raw, 6)) + chunk(b"IEND", b""))
+
+
+class Image:
+    """An image that a notebook shows: Image(flowsurf.render(s))."""
+
+    def __init__(self, img):
+        self.array = _np.asarray(img)
+
+    def _repr_png_(self):
+        return to_png(self.array)
+
+    def save(self, path):
+        with open(path, "wb") as f:
+            f.write(to_png(self.array))

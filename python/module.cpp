@@ -1,0 +1,165 @@
+// flowsurf._flowsurf — the Python binding of the public C++ library (pybind11 + numpy).
+// numpy arrays in (any dtype, any strides: converted), numpy arrays out; rendering
+// releases the GIL. The keyword layer, mesh adapters and PNG encoding are in
+// flowsurf/__init__.py.
+#include <flowsurf/flowsurf.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+
+namespace py = pybind11;
+using namespace flowsurf;
+
+namespace {
+
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+using IndexArray = py::array_t<int64_t, py::array::c_style | py::array::forcecast>;
+
+// (n, 3) or raise ValueError naming the argument.
+void needRows3(const py::array& a, const char* name) {
+    if (a.ndim() != 2 || a.shape(1) != 3)
+        throw py::value_error(std::string(name) + " must have shape (n, 3), got " + std::string(py::str(a.attr("shape"))));
+}
+
+Surface makeSurface(py::object points, py::object triangles, py::object vectors, py::object normals,
+                    const std::string& field) {
+    FloatArray p = FloatArray::ensure(points), v = FloatArray::ensure(vectors);
+    IndexArray t = IndexArray::ensure(triangles);
+    if (!p || !v || !t) throw py::value_error("points, triangles and vectors must be numeric arrays");
+    needRows3(p, "points");
+    needRows3(t, "triangles");
+    needRows3(v, "vectors");
+    const size_t n = size_t(p.shape(0)), m = size_t(t.shape(0));
+    if (size_t(v.shape(0)) != n)
+        throw py::value_error("vectors has " + std::to_string(v.shape(0)) + " rows, points " + std::to_string(n));
+    std::vector<uint32_t> tri(m * 3);
+    const int64_t* ti = t.data();
+    for (size_t i = 0; i < m * 3; ++i) {
+        if (ti[i] < 0 || size_t(ti[i]) >= n)
+            throw FormatError("triangles: triangle " + std::to_string(i / 3) + " has index " + std::to_string(ti[i]) +
+                              ", out of range for " + std::to_string(n) + " points");
+        tri[i] = uint32_t(ti[i]);
+    }
+    FloatArray nrm;
+    if (!normals.is_none()) {
+        nrm = FloatArray::ensure(normals);
+        if (!nrm) throw py::value_error("normals must be a numeric array");
+        needRows3(nrm, "normals");
+        if (size_t(nrm.shape(0)) != n) throw py::value_error("normals must have one row per point");
+    }
+    py::gil_scoped_release release;
+    return Surface::fromArrays(p.data(), n, tri.data(), m, v.data(), field, normals.is_none() ? nullptr : nrm.data());
+}
+
+py::array_t<uint8_t> image(const Renderer& r) {
+    py::array_t<uint8_t> out({r.height(), r.width(), 3});
+    uint8_t* data = out.mutable_data();
+    py::gil_scoped_release release;
+    r.readImage(data);
+    return out;
+}
+
+py::array_t<float> flowTexture(const Renderer& r) {
+    py::array_t<float> out({r.height(), r.width()});
+    float* data = out.mutable_data();
+    py::gil_scoped_release release;
+    r.readFlowTexture(data);
+    return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_flowsurf, m) {
+    m.doc() = "flowsurf: dense, animated flow textures on triangle-mesh surfaces (C++ core)";
+
+    // Errors: what a user can cause maps to Python's own kinds.
+    static py::exception<FormatError> formatError(m, "FormatError", PyExc_ValueError);
+    static py::exception<FieldError> fieldError(m, "FieldError", PyExc_ValueError);
+    static py::exception<GlError> glError(m, "GlError", PyExc_RuntimeError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const FormatError& e) {
+            formatError(e.what());
+        } catch (const FieldError& e) {
+            fieldError(e.what());
+        } catch (const IoError& e) {
+            PyErr_SetString(PyExc_OSError, e.what());
+        } catch (const ConfigError& e) {
+            PyErr_SetString(PyExc_ValueError, e.what());
+        } catch (const GlError& e) {
+            glError(e.what());
+        }
+    });
+
+    py::class_<Surface>(m, "Surface")
+        .def(py::init(&makeSurface), py::arg("points"), py::arg("triangles"), py::arg("vectors"),
+             py::arg("normals") = py::none(), py::arg("field") = "velocity",
+             "A surface from arrays: points (n,3), triangles (m,3) indices, vectors (n,3); copied")
+        .def("add_vectors",
+             [](Surface& s, const std::string& name, py::object vectors) {
+                 FloatArray v = FloatArray::ensure(vectors);
+                 if (!v) throw py::value_error("vectors must be a numeric array");
+                 needRows3(v, "vectors");
+                 if (size_t(v.shape(0)) != s.pointCount()) throw py::value_error("vectors must have one row per point");
+                 s.addVectors(name, v.data());
+             },
+             py::arg("name"), py::arg("vectors"))
+        .def("set_field", &Surface::setField, py::arg("name"))
+        .def_property_readonly("field", &Surface::field)
+        .def_property_readonly("fields", &Surface::vectorFields)
+        .def_property_readonly("point_count", &Surface::pointCount)
+        .def_property_readonly("triangle_count", &Surface::triangleCount)
+        .def_property_readonly("times", &Surface::times)
+        .def_property_readonly("source", &Surface::source)
+        .def_property_readonly("bounds",
+                               [](const Surface& s) {
+                                   float lo[3], hi[3];
+                                   s.bounds(lo, hi);
+                                   return py::make_tuple(py::make_tuple(lo[0], lo[1], lo[2]),
+                                                         py::make_tuple(hi[0], hi[1], hi[2]));
+                               })
+        .def("__repr__", [](const Surface& s) {
+            return "<flowsurf.Surface " + s.source() + ": " + std::to_string(s.pointCount()) + " points, " +
+                   std::to_string(s.triangleCount()) + " triangles, field '" + s.field() + "', " +
+                   std::to_string(s.stepCount()) + " step(s)>";
+        });
+
+    m.def("read", &Surface::read, py::arg("path"), py::arg("field") = "", py::call_guard<py::gil_scoped_release>(),
+          "Read a surface: any format the command line reads, a file series, or builtin:NAME");
+
+    py::class_<Renderer>(m, "_Renderer")
+        .def(py::init([]() { return std::make_unique<Renderer>(); }), py::call_guard<py::gil_scoped_release>())
+        .def("set", &Renderer::set)
+        .def("get", &Renderer::get)
+        .def("render", &Renderer::render, py::call_guard<py::gil_scoped_release>())
+        .def("begin", &Renderer::begin, py::call_guard<py::gil_scoped_release>())
+        .def("advance", &Renderer::advance, py::call_guard<py::gil_scoped_release>())
+        .def("image", &image)
+        .def("flow_texture", &flowTexture)
+        .def("stage_ms", [](const Renderer& r) {
+            py::dict d;
+            for (const auto& [stage, ms] : r.stageMs()) d[py::str(stage)] = ms;
+            return d;
+        })
+        .def("camera", [](const Renderer& r) {
+            CameraView c = r.camera();
+            return py::dict(py::arg("eye") = py::make_tuple(c.eye[0], c.eye[1], c.eye[2]),
+                            py::arg("target") = py::make_tuple(c.target[0], c.target[1], c.target[2]),
+                            py::arg("up") = py::make_tuple(c.up[0], c.up[1], c.up[2]), py::arg("fov") = c.fovDeg);
+        })
+        .def_property_readonly("frame", &Renderer::frame)
+        .def_property_readonly("time", &Renderer::time)
+        .def_property_readonly("width", &Renderer::width)
+        .def_property_readonly("height", &Renderer::height)
+        .def("gl_renderer", &Renderer::glRenderer);
+
+    m.def("option_names", &Renderer::optionNames, "Every render option's command-line name, in --help order");
+    m.def("_write_png", [](const std::string& path, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {
+        if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("image must have shape (h, w, 3)");
+        writePng(path, int(rgb.shape(1)), int(rgb.shape(0)), rgb.data());
+    });
+}

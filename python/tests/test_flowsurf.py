@@ -1,0 +1,260 @@
+"""The Python module as a scientist uses it: numpy in, images out, the same bytes as the
+command line, clear exceptions, vedo meshes, flat memory, threads."""
+import os
+import resource
+import struct
+import subprocess
+import threading
+import zlib
+
+import numpy as np
+import pytest
+
+import flowsurf
+
+FLOWSURF = os.environ.get("FLOWSURF", "flowsurf")
+
+
+# --- helpers -------------------------------------------------------------------------
+
+def sphere(rings=64, segments=128, w=(0.3, 1.0, 0.2)):
+    """UV sphere in solid-body rotation about w: points, triangles, velocity w x p."""
+    th = np.linspace(0, np.pi, rings + 1)
+    ph = np.linspace(0, 2 * np.pi, segments + 1)
+    T, P = np.meshgrid(th, ph, indexing="ij")
+    pts = np.stack([np.sin(T) * np.cos(P), np.cos(T), np.sin(T) * np.sin(P)], -1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(rings), np.arange(segments), indexing="ij")
+    a = (i * (segments + 1) + j).ravel()
+    b = a + segments + 1
+    tris = np.concatenate([np.stack([a, b, a + 1], 1), np.stack([a + 1, b, b + 1], 1)])
+    w = np.asarray(w, float) / np.linalg.norm(w)
+    return pts, tris, np.cross(w, pts), w
+
+
+def read_png(path):
+    """8-bit RGB or gray PNG -> array (our own decoder: no imaging library needed)."""
+    data = open(path, "rb").read()
+    pos, idat = 8, b""
+    while pos < len(data):
+        n, = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+        if kind == b"IHDR":
+            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+    ch = {0: 1, 2: 3}[ctype] * depth // 8
+    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(h, 1 + w * ch)
+    out = np.zeros((h, w * ch), np.int32)
+    prev = np.zeros(w * ch, np.int32)
+    for y in range(h):
+        f, line = raw[y, 0], raw[y, 1:].astype(np.int32)
+        cur = np.zeros_like(line)
+        for x in range(len(line)):
+            a = cur[x - ch] if x >= ch else 0
+            b = prev[x]
+            c = prev[x - ch] if x >= ch else 0
+            pred = [0, a, b, (a + b) // 2][f] if f < 4 else (
+                a if abs(b - c) <= abs(a - c) and abs(b - c) <= abs(a + b - 2 * c)
+                else b if abs(a - c) <= abs(a + b - 2 * c) else c)
+            cur[x] = (line[x] + pred) & 255
+        out[y], prev = cur, cur
+    return out.reshape(h, w, ch).astype(np.uint8) if depth == 8 else out
+
+
+def gaussian_blur(a, sigma):
+    r = int(3 * sigma)
+    k = np.exp(-0.5 * (np.arange(-r, r + 1) / sigma) ** 2)
+    k /= k.sum()
+    a = np.apply_along_axis(lambda v: np.convolve(v, k, mode="same"), 0, a)
+    return np.apply_along_axis(lambda v: np.convolve(v, k, mode="same"), 1, a)
+
+
+def look_at(eye, target, up):
+    f = np.subtract(target, eye)
+    f /= np.linalg.norm(f)
+    r = np.cross(f, up)
+    r /= np.linalg.norm(r)
+    return f, r, np.cross(r, f)
+
+
+def orientation_error(img_tex, cam, w, width, height, fov):
+    """Median angle (deg) between the streaks of F_a (structure tensor, sigma 4 px) and
+    the projected field, where the sphere faces the camera and moves (as the GL tests)."""
+    gy, gx = np.gradient(img_tex.astype(np.float64))
+    jxx, jxy, jyy = (gaussian_blur(v, 4.0) for v in (gx * gx, gx * gy, gy * gy))
+    grad_angle = 0.5 * np.arctan2(2 * jxy, jxx - jyy)   # image rows downwards
+    streak = np.mod(grad_angle + np.pi / 2, np.pi)
+    eye = np.array(cam["eye"])
+    f, r, u = look_at(eye, cam["target"], cam["up"])
+    t = np.tan(np.radians(fov) / 2)
+    errs = []
+    for py in range(8, height - 8, 5):
+        for px in range(8, width - 8, 5):
+            ndc = np.array([(px + 0.5) / width * 2 - 1, 1 - (py + 0.5) / height * 2])
+            d = f + ndc[0] * t * width / height * r + ndc[1] * t * u
+            d /= np.linalg.norm(d)
+            b = np.dot(eye, d)
+            disc = b * b - (np.dot(eye, eye) - 1.0)
+            if disc < 0:
+                continue
+            p = eye + (-b - np.sqrt(disc)) * d            # unit sphere hit
+            if np.dot(p, -d) < 0.4:
+                continue                                   # near the silhouette
+            v = np.cross(w, p)
+            if np.linalg.norm(v) < 0.4 * 0.4:
+                continue                                   # near the rotation poles
+
+            def to_px(q):
+                c = q - eye
+                z = np.dot(c, f)
+                return np.array([np.dot(c, r) / (z * t * width / height), np.dot(c, u) / (z * t)])
+
+            dv = to_px(p + 0.01 * v) - to_px(p)
+            expected = np.mod(np.arctan2(-dv[1] * height, dv[0] * width), np.pi)  # rows downwards
+            e = abs(streak[py, px] - expected) % np.pi
+            errs.append(np.degrees(min(e, np.pi - e)))
+    assert len(errs) > 200
+    return float(np.median(errs))
+
+
+# --- tests ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("method,limit", [("isa", 10.0), ("ibfvs", 10.0), ("hybrid", 5.0)])
+def test_orientation_on_a_spinning_sphere_built_in_numpy(method, limit):
+    pts, tris, vel, w = sphere()
+    s = flowsurf.Surface(pts, tris, vel)
+    eye = np.array([0.3, 0.4, 1.0]) / np.linalg.norm([0.3, 0.4, 1.0]) * 4.2
+    r = flowsurf.Renderer(method=method, size=(320, 320), seed=7, frames=1 if method == "hybrid" else 100,
+                          eye=eye, target=(0, 0, 0), up=(0, 1, 0), fov=30)
+    r.render(s)
+    err = orientation_error(r.flow_texture(), r.camera, w, 320, 320, 30)
+    print("%s: median orientation error %.2f deg" % (method, err))
+    assert err <= limit
+
+
+@pytest.mark.parametrize("method", ["isa", "ibfvs", "hybrid"])
+def test_same_bytes_as_the_command_line(method, tmp_path):
+    out = tmp_path / "cli.png"
+    subprocess.run([FLOWSURF, "render", "builtin:tori", "--method", method, "--size", "160x120", "--frames", "12",
+                    "--seed", "5", "--alpha", "0.1", "-q", "-o", str(out)], check=True)
+    img = flowsurf.render(flowsurf.read("builtin:tori"), method=method, size=(160, 120), frames=12, seed=5,
+                          alpha=0.1)
+    assert img.shape == (120, 160, 3) and img.dtype == np.uint8
+    assert np.array_equal(img, read_png(out))
+
+
+def test_errors_raise_the_named_exceptions(tmp_path):
+    pts, tris, vel, _ = sphere(8, 16)
+    bad = vel.copy()
+    bad[5, 1] = np.nan
+    with pytest.raises(flowsurf.FormatError, match="5"):
+        flowsurf.Surface(pts, tris, bad)
+    with pytest.raises(ValueError, match="out of range"):
+        flowsurf.Surface(pts, np.where(tris == 3, 10 ** 6, tris), vel)
+    with pytest.raises(ValueError, match="shape"):
+        flowsurf.Surface(pts[:, :2], tris, vel)
+    with pytest.raises(ValueError, match="rows"):
+        flowsurf.Surface(pts, tris, vel[:-1])
+    with pytest.raises(OSError, match="nosuch.vtp"):
+        flowsurf.read(str(tmp_path / "nosuch.vtp"))
+    garbage = tmp_path / "garbage.vtp"
+    garbage.write_bytes(bytes((i * 7919) % 251 for i in range(3000)))
+    with pytest.raises(flowsurf.FormatError, match="garbage.vtp"):
+        flowsurf.read(str(garbage))
+    assert issubclass(flowsurf.FormatError, ValueError)
+    with pytest.raises(flowsurf.FieldError, match="pressure"):
+        flowsurf.read("builtin:sphere", field="pressure")
+    s = flowsurf.Surface(pts, tris, vel)
+    with pytest.raises(ValueError, match="filter_lenght"):
+        flowsurf.render(s, filter_lenght=20)
+    with pytest.raises(ValueError, match="alpha=1.5"):
+        flowsurf.render(s, alpha=1.5)
+    with pytest.raises(ValueError, match="method"):
+        flowsurf.render(s, method="lic")
+
+
+def test_inputs_need_not_be_contiguous_or_float32():
+    pts, tris, vel, _ = sphere(16, 32)
+    a = flowsurf.render(flowsurf.Surface(pts.astype(np.float32), tris.astype(np.int32), vel.astype(np.float32)),
+                        method="hybrid", size=(64, 64), frames=1)
+    wide = np.zeros((len(pts), 6))
+    wide[:, ::2] = pts  # a strided view
+    b = flowsurf.render(flowsurf.Surface(wide[:, ::2], tris.astype(np.uint64), vel.tolist()), method="hybrid",
+                        size=(64, 64), frames=1)
+    assert np.array_equal(a, b)
+
+
+def test_vedo_mesh_and_pyvista_layout_are_accepted():
+    vedo = pytest.importorskip("vedo")
+    m = vedo.Sphere(res=48)
+    pts = np.asarray(m.vertices() if callable(m.vertices) else m.vertices)
+    m.pointdata["velocity"] = np.cross([0.0, 1.0, 0.0], pts)
+    img = flowsurf.render(m, field="velocity", method="hybrid", size=(96, 96), frames=1)
+    cells = m.cells() if callable(m.cells) else m.cells
+    direct = flowsurf.render(flowsurf.Surface(pts, np.asarray(cells), np.cross([0.0, 1.0, 0.0], pts)),
+                             method="hybrid", size=(96, 96), frames=1)
+    assert np.array_equal(img, direct)
+    assert (img != img[0, 0]).any(axis=2).sum() > 2000  # the sphere is there
+
+    class PolyData:  # PyVista's layout: flat faces [3, i, j, k, ...], point_data
+        points = pts
+        faces = np.hstack([np.full((len(cells), 1), 3), np.asarray(cells)]).ravel()
+        point_data = {"velocity": np.cross([0.0, 1.0, 0.0], pts)}
+
+    assert np.array_equal(flowsurf.render(PolyData(), method="hybrid", size=(96, 96), frames=1), direct)
+
+
+def rss_mb():
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * resource.getpagesize() / 2 ** 20
+
+
+def test_memory_stays_flat_over_500_renders():
+    pts, tris, vel, _ = sphere(8, 16)
+    s = flowsurf.Surface(pts, tris, vel)
+    for _ in range(50):
+        flowsurf.render(s, size=(32, 32), frames=1)
+    before = rss_mb()
+    for _ in range(500):
+        flowsurf.render(s, size=(32, 32), frames=1)
+    grown = rss_mb() - before
+    print("resident memory grew %.1f MB over 500 renders" % grown)
+    assert grown < 20
+
+
+def test_two_threads_render_at_once():
+    """Both work: calls take turns on the GL lock (GIL released while they wait)."""
+    pts, tris, vel, _ = sphere(16, 32)
+    s = flowsurf.Surface(pts, tris, vel)
+    expected = {m: flowsurf.render(s, method=m, size=(80, 60), frames=6) for m in ("isa", "hybrid")}
+    got = {}
+
+    def work(m):
+        got[m] = [flowsurf.render(s, method=m, size=(80, 60), frames=6) for _ in range(3)]
+
+    threads = [threading.Thread(target=work, args=(m,)) for m in ("isa", "hybrid")]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for m in expected:
+        assert all(np.array_equal(img, expected[m]) for img in got[m])
+
+
+def test_animation_frames_and_stage_times():
+    s = flowsurf.read("builtin:sphere")
+    r = flowsurf.Renderer(method="ibfvs", size=(64, 48), alpha=0.1)
+    frames = list(r.frames(s, n=5, orbit=1.0))
+    assert len(frames) == 5 and frames[0].shape == (48, 64, 3)
+    assert r.frame == 5
+    assert "overlay" in r.stage_ms and all(v >= 0 for v in r.stage_ms.values())
+    assert not np.array_equal(frames[0], frames[-1])
+
+
+def test_png_for_notebooks(tmp_path):
+    img = flowsurf.render(flowsurf.read("builtin:sphere"), size=(40, 30), frames=2)
+    png = flowsurf.Image(img)._repr_png_()
+    assert png.startswith(b"\x89PNG")
+    (tmp_path / "a.png").write_bytes(flowsurf.to_png(img))
+    assert np.array_equal(read_png(tmp_path / "a.png"), img)
