@@ -1,0 +1,136 @@
+// The public C++ API as a consumer uses it (only <flowsurf/flowsurf.h>): contexts, arrays,
+// animation, errors. Links libflowsurf.so; the "caller's context" is made here with EGL.
+#include <flowsurf/flowsurf.h>
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace {
+
+struct Arrays {
+    std::vector<float> points, vectors;
+    std::vector<uint32_t> triangles;
+};
+
+// A 33 x 33 grid on z = 0 with a vortex about its centre.
+Arrays vortexPlane() {
+    Arrays a;
+    const int n = 33;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            float x = -1.0f + 2.0f * i / (n - 1), y = -1.0f + 2.0f * j / (n - 1);
+            a.points.insert(a.points.end(), {x, y, 0.0f});
+            a.vectors.insert(a.vectors.end(), {-y, x, 0.0f});
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            uint32_t v = uint32_t(j * n + i);
+            a.triangles.insert(a.triangles.end(), {v, v + 1, v + uint32_t(n), v + 1, v + uint32_t(n) + 1, v + uint32_t(n)});
+        }
+    return a;
+}
+
+flowsurf::Surface surfaceOf(const Arrays& a) {
+    return flowsurf::Surface::fromArrays(a.points.data(), a.points.size() / 3, a.triangles.data(),
+                                         a.triangles.size() / 3, a.vectors.data(), "swirl");
+}
+
+std::vector<uint8_t> image(const flowsurf::Renderer& r) {
+    std::vector<uint8_t> rgb(size_t(r.width()) * r.height() * 3);
+    r.readImage(rgb.data());
+    return rgb;
+}
+
+// A current OpenGL 4.5 core context of the caller's own (surfaceless EGL).
+class CallerContext {
+public:
+    CallerContext() {
+        auto getDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        dpy_ = getDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        eglInitialize(dpy_, nullptr, nullptr);
+        eglBindAPI(EGL_OPENGL_API);
+        const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+        ctx_ = eglCreateContext(dpy_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+        ok_ = ctx_ != EGL_NO_CONTEXT && eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_);
+    }
+    ~CallerContext() {
+        eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (ctx_ != EGL_NO_CONTEXT) eglDestroyContext(dpy_, ctx_);
+    }
+    bool ok() const { return ok_; }
+
+private:
+    EGLDisplay dpy_ = EGL_NO_DISPLAY;
+    EGLContext ctx_ = EGL_NO_CONTEXT;
+    bool ok_ = false;
+};
+
+}  // namespace
+
+// The library's own context and a caller's current one render the same image.
+TEST(Api, OwnAndCallerContextsRenderTheSameImage) {
+    const flowsurf::Surface s = surfaceOf(vortexPlane());
+    flowsurf::Renderer own;
+    own.set("size", "96x80");
+    own.set("method", "isa");
+    own.render(s, 20);
+    const std::vector<uint8_t> a = image(own);
+    CallerContext caller;
+    ASSERT_TRUE(caller.ok()) << "no surfaceless EGL 4.5 context";
+    flowsurf::Renderer borrowed(flowsurf::ContextMode::Current);
+    borrowed.set("size", "96x80");
+    borrowed.set("method", "isa");
+    borrowed.render(s, 20);
+    EXPECT_EQ(image(borrowed), a);
+    EXPECT_NE(a, std::vector<uint8_t>(a.size(), a[0]));  // not a blank image
+}
+
+// begin + advance animate frame by frame: the frame count, the orbit turning the camera,
+// and frame N equal to render(N).
+TEST(Api, AnimationFrameByFrameEqualsOneRender) {
+    const flowsurf::Surface s = surfaceOf(vortexPlane());
+    flowsurf::Renderer r;
+    r.set("size", "64x64");
+    r.set("method", "ibfvs");
+    r.set("orbit", "2");
+    r.begin(s);
+    for (int k = 0; k <= 10; ++k) r.advance();
+    EXPECT_EQ(r.frame(), 11);
+    const std::vector<uint8_t> stepped = image(r);
+    const flowsurf::CameraView cam = r.camera();
+    r.render(s, 10);
+    EXPECT_EQ(image(r), stepped);
+    EXPECT_EQ(r.camera().eye[0], cam.eye[0]);
+    std::vector<float> flow(64 * 64);
+    r.readFlowTexture(flow.data());
+    for (float v : flow) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+    EXPECT_FALSE(r.stageMs().empty());
+}
+
+TEST(Api, BadArraysAndOptionsThrowTypedErrorsNamingTheItem) {
+    Arrays a = vortexPlane();
+    a.triangles[7] = 100000;
+    try {
+        surfaceOf(a);
+        FAIL() << "index out of range accepted";
+    } catch (const flowsurf::FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("triangle 2"), std::string::npos) << e.what();
+    }
+    a = vortexPlane();
+    a.vectors[3 * 12 + 1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(surfaceOf(a), flowsurf::FormatError);
+    flowsurf::Surface s = surfaceOf(vortexPlane());
+    EXPECT_THROW(s.setField("pressure"), flowsurf::FieldError);
+    flowsurf::Renderer r;
+    EXPECT_THROW(r.set("filter-length", "0"), flowsurf::ConfigError);
+    EXPECT_THROW(r.set("no-such-option", "1"), flowsurf::ConfigError);
+    EXPECT_THROW(r.advance(), flowsurf::ConfigError);  // nothing begun
+    EXPECT_THROW(flowsurf::Surface::read("/nonexistent/case.vtp"), flowsurf::IoError);
+    EXPECT_EQ(r.get("filter-length"), "31");  // the CLI's default
+}
