@@ -145,6 +145,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         p.isa.warp = s == "mesh" ? methods::IsaWarp::Mesh : methods::IsaWarp::Pixel;
     }, "ISA texture advection: pixel (mesh interpolated per pixel, default) or mesh (draw the R x R grid)")
         ->group(gMethod)->check(CLI::IsMember({"pixel", "mesh"}));
+    cmd.add_option_function<std::string>("--resample", [&p](const std::string& s) {
+        p.common.resample = s == "bilinear" ? methods::Resample::Bilinear : methods::Resample::Bicubic;
+    }, "ISA/IBFVS: resampling of the advected texture each frame: bicubic (Catmull-Rom, default) or bilinear ([L])")
+        ->group(gMethod)->check(CLI::IsMember({"bilinear", "bicubic"}));
     cmd.add_flag("--cull-back-faces", p.common.cullBackFaces,
                  "Skip back-facing triangles (closed, outward-oriented surfaces only; default off)")->group(gMethod);
     cmd.add_flag("--edge-mask", p.ibfvs.edgeMask, "IBFVS silhouette edge mask over the image [L §IV-E.2]")

@@ -2,6 +2,7 @@
 // (the noise mean) is blended in so texture is not carried across a geometric
 // discontinuity. A grid cell touching an edge vertex counts as edge: interpolating the
 // flag would let half the upstream texture leak across at every edge cell.
+#include "common/resample.glsl"
 layout(binding = 0) uniform sampler2D uPrevFlow;  // F_a(k-1), R32F, linear filtering
 uniform int uEdgeBlending;
 uniform float uGray;
@@ -19,7 +20,7 @@ void main() {
     vec2 vTexcoord = m.xy;
     float vEdge = m.z;
 #endif
-    float f = texture(uPrevFlow, vTexcoord).r;
+    float f = resampleFlow(uPrevFlow, vTexcoord);
     if (uEdgeBlending != 0 && vEdge > 1e-3) f = uGray;
     outFlow = vec4(f, 0.0, 0.0, 1.0);
 }

@@ -25,6 +25,11 @@ enum class OverlayScheme { Blend, Gray, GrayLit, HueLit, CoolWarm };
 // mapped onto the surface from the view where it was made; resumes when it stops.
 enum class CameraMoveRemedy { None, Translate, Freeze };
 
+// How ISA and IBFVS resample the previous F_a at the backward-integrated coordinates
+// each frame (shaders/common/resample.glsl). Bilinear: the texture filter, as in [L]; its
+// numerical diffusion blurs across the flow as much as along it. Bicubic: Catmull-Rom.
+enum class Resample { Bilinear, Bicubic };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2
@@ -45,6 +50,7 @@ struct CommonParams {
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
     CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
+    Resample resample = Resample::Bicubic;  // F_a resampling in ISA and IBFVS ([L]: bilinear)
     // Skip back-facing triangles in the surface passes: cheaper for closed, consistently
     // oriented surfaces (counter-clockwise seen from outside); wrong for open CFD walls,
     // which are seen from both sides, so off by default. Off-screen triangles are always

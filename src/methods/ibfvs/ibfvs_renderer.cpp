@@ -5,6 +5,7 @@ namespace flowsurf::methods::ibfvs {
 IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
+      polygonAdvection_(params.common.resample),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),

@@ -1,11 +1,14 @@
 #include "methods/ibfvs/polygon_advection.h"
 
+#include "methods/common/resample.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace flowsurf::methods::ibfvs {
 
-PolygonAdvection::PolygonAdvection()
-    : program_({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}}) {}
+PolygonAdvection::PolygonAdvection(Resample resample)
+    : program_({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
+               resampleDefine(resample)) {}
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,

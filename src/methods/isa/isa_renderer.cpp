@@ -10,7 +10,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
                      SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
-      textureAdvection_(params.isa.gridRes, params.isa.warp),
+      textureAdvection_(params.isa.gridRes, params.isa.warp, params.common.resample),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),

@@ -1,22 +1,26 @@
 #include "methods/isa/texture_advection.h"
 
+#include "methods/common/resample.h"
+
 #include <vector>
 
 namespace flowsurf::methods::isa {
 
 namespace {
-gl::Program makeProgram(IsaWarp warp) {
+gl::Program makeProgram(IsaWarp warp, Resample resample) {
+    const std::string defines = resampleDefine(resample);
     if (warp == IsaWarp::Pixel)
         return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
                             {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
-                           "#define PER_PIXEL 1\n");
+                           "#define PER_PIXEL 1\n" + defines);
     return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"},
-                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}});
+                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+                       defines);
 }
 }  // namespace
 
-TextureAdvection::TextureAdvection(int gridRes, IsaWarp warp)
-    : gridRes_(gridRes), warp_(warp), vao_(gl::VertexArray::create()), program_(makeProgram(warp)) {
+TextureAdvection::TextureAdvection(int gridRes, IsaWarp warp, Resample resample)
+    : gridRes_(gridRes), warp_(warp), vao_(gl::VertexArray::create()), program_(makeProgram(warp, resample)) {
     if (warp != IsaWarp::Mesh) return;
     // Two triangles per grid cell; vertices come from the mesh texture by gl_VertexID.
     std::vector<uint32_t> idx;

@@ -4,6 +4,7 @@
 // with M = R^2 triangles); `Pixel` interpolates the same mesh per pixel with the
 // texture filter (cost grows with pixels only; equal up to bilinear-vs-triangle
 // interpolation inside a cell), the paper's "per-pixel advection" future work.
+// F_a itself is resampled bilinearly (as in [L]) or bicubically (common/resample.glsl).
 #pragma once
 
 #include "gl/objects.h"
@@ -13,7 +14,7 @@ namespace flowsurf::methods::isa {
 
 class TextureAdvection {
 public:
-    TextureAdvection(int gridRes, IsaWarp warp);
+    TextureAdvection(int gridRes, IsaWarp warp, Resample resample);
     void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Framebuffer& nextFlow,
                bool edgeBlending, float gray) const;
 
