@@ -149,6 +149,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         p.common.resample = s == "bilinear" ? methods::Resample::Bilinear : methods::Resample::Bicubic;
     }, "ISA/IBFVS: resampling of the advected texture each frame: bicubic (Catmull-Rom, default) or bilinear ([L])")
         ->group(gMethod)->check(CLI::IsMember({"bilinear", "bicubic"}));
+    cmd.add_option_function<std::string>("--noise-injection", [&p](const std::string& s) {
+        p.common.noiseInjection = s == "point" ? methods::NoiseInjectionMode::Point : methods::NoiseInjectionMode::Swept;
+    }, "ISA/IBFVS: noise G sampled at the pixel (point, [L]) or averaged along its motion over the frame (swept, default)")
+        ->group(gMethod)->check(CLI::IsMember({"point", "swept"}));
     cmd.add_flag("--cull-back-faces", p.common.cullBackFaces,
                  "Skip back-facing triangles (closed, outward-oriented surfaces only; default off)")->group(gMethod);
     cmd.add_flag("--edge-mask", p.ibfvs.edgeMask, "IBFVS silhouette edge mask over the image [L §IV-E.2]")

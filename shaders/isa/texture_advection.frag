@@ -13,7 +13,8 @@ in vec2 vGridUv;
 in vec2 vTexcoord;
 in float vEdge;
 #endif
-out vec4 outFlow;
+layout(location = 0) out vec4 outFlow;
+layout(location = 1) out vec2 outMotion;  // d' in pixels, for swept noise injection
 void main() {
 #ifdef PER_PIXEL
     vec4 m = texture(uMesh, vGridUv);
@@ -23,4 +24,5 @@ void main() {
     float f = resampleFlow(uPrevFlow, vTexcoord);
     if (uEdgeBlending != 0 && vEdge > 1e-3) f = uGray;
     outFlow = vec4(f, 0.0, 0.0, 1.0);
+    outMotion = gl_FragCoord.xy - vTexcoord * vec2(textureSize(uPrevFlow, 0));
 }

@@ -2,12 +2,13 @@
 
 namespace flowsurf::methods {
 
-NoiseInjection::NoiseInjection()
-    : program_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/noise_injection.frag"}}),
+NoiseInjection::NoiseInjection(NoiseInjectionMode mode)
+    : program_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/noise_injection.frag"}},
+               mode == NoiseInjectionMode::Swept ? "#define NOISE_SWEPT 1\n" : ""),
       emptyVao_(gl::VertexArray::create()) {}
 
-void NoiseInjection::apply(const gl::Framebuffer& flowFbo, const gl::Texture2D& depth, uint32_t frame,
-                           float alpha, const core::NoiseParams& noise) const {
+void NoiseInjection::apply(const gl::Framebuffer& flowFbo, const gl::Texture2D& depth, const gl::Texture2D& motion,
+                           uint32_t frame, float alpha, const core::NoiseParams& noise) const {
     glBindFramebuffer(GL_FRAMEBUFFER, flowFbo.id());
     glViewport(0, 0, depth.width(), depth.height());
     glDisable(GL_DEPTH_TEST);
@@ -21,6 +22,7 @@ void NoiseInjection::apply(const gl::Framebuffer& flowFbo, const gl::Texture2D& 
     glUniform1i(program_.uniform("uProfile"), noise.profile == core::NoiseProfile::Square ? 0 : 1);
     glUniform1ui(program_.uniform("uSeed"), noise.seed);
     glBindTextureUnit(0, depth.id());
+    glBindTextureUnit(1, motion.id());
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_BLEND);

@@ -30,6 +30,13 @@ enum class CameraMoveRemedy { None, Translate, Freeze };
 // numerical diffusion blurs across the flow as much as along it. Bicubic: Catmull-Rom.
 enum class Resample { Bilinear, Bicubic };
 
+// How ISA and IBFVS inject the noise G of eq. 9 (shaders/common/noise_injection.frag).
+// Point: G at the pixel, as in [L]; noise finer than the step leaves dotted streaks.
+// Swept: G averaged along the pixel's image motion over the frame, x - t d' for t in
+// [0,1): a box filter along the flow over one step, so the noise is band-limited to the
+// step along the flow and keeps its full resolution across it.
+enum class NoiseInjectionMode { Point, Swept };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2
@@ -51,6 +58,7 @@ struct CommonParams {
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
     CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
     Resample resample = Resample::Bicubic;  // F_a resampling in ISA and IBFVS ([L]: bilinear)
+    NoiseInjectionMode noiseInjection = NoiseInjectionMode::Swept;  // ISA and IBFVS ([L]: point)
     // Skip back-facing triangles in the surface passes: cheaper for closed, consistently
     // oriented surfaces (counter-clockwise seen from outside); wrong for open CFD walls,
     // which are seen from both sides, so off by default. Off-screen triangles are always

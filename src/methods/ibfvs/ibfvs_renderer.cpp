@@ -6,10 +6,12 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
     : params_(params),
       viewport_(viewport),
       polygonAdvection_(params.common.resample),
+      noiseInjection_(params.common.noiseInjection),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
+      motionPx_(GL_RG16F, viewport.width, viewport.height, GL_NEAREST),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {
     const float gray[4] = {params.ibfvs.flowBackground, 0, 0, 1};
@@ -18,8 +20,9 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
         flowFbo_[i] = gl::Framebuffer::create();
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, shade_);
+        flowFbo_[i].attach(GL_COLOR_ATTACHMENT2, motionPx_);
         flowFbo_[i].attach(GL_DEPTH_ATTACHMENT, depth_);
-        flowFbo_[i].finish(2);
+        flowFbo_[i].finish(3);
         noiseFbo_[i] = gl::Framebuffer::create();
         noiseFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
         noiseFbo_[i].finish(1);
@@ -51,7 +54,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (3) noise injection clipped to the surface [L eq. 9, §IV-G]
     timer_.begin("noise blend");
-    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], depth_, in.frame, c.alpha, c.noise);
+    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], depth_, motionPx_, in.frame, c.alpha, c.noise);
     current_ = target;
 
     // (4) overlay [L eq. 10]

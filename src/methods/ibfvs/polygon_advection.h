@@ -1,7 +1,8 @@
 // IBFVS stages 1-2 — object-space mesh projection [L eq. 13] (in the vertex shader,
 // shaders/ibfvs/mesh_projection.glsl) and polygonal texture advection [L §IV-D.2]
 // (shaders/ibfvs/polygon_advection.*): one draw of the surface mesh into the next F_a
-// (R32F), sampling the previous F_a; also writes shade (RGBA16F) and depth. Cost
+// (R32F), sampling the previous F_a; also writes shade (RGBA16F), the image motion
+// d' (RG16F, pixels) and depth. Cost
 // grows with the triangles N, in the static and the dynamic case alike. F_a is resampled
 // bilinearly (as in [L]) or bicubically (shaders/common/resample.glsl).
 #pragma once

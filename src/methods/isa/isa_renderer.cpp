@@ -11,8 +11,10 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(params.isa.gridRes, params.isa.warp, params.common.resample),
+      noiseInjection_(params.common.noiseInjection),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
+      motionPx_(GL_RG16F, viewport.width, viewport.height, GL_NEAREST),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {
     const float gray[4] = {0.5f, 0.0f, 0.0f, 1.0f};  // start at the noise mean
@@ -20,7 +22,11 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
         flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
         flowFbo_[i] = gl::Framebuffer::create();
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        flowFbo_[i].finish(1);
+        flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, motionPx_);
+        flowFbo_[i].finish(2);
+        noiseFbo_[i] = gl::Framebuffer::create();
+        noiseFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
+        noiseFbo_[i].finish(1);
         glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
     }
     compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
@@ -74,7 +80,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // (4) noise injection and blending on the surface only [L eq. 9]
     timer_.begin("noise blend");
-    if (plan.advect) noiseInjection_.apply(flowFbo_[target], vel.depth(), in.frame, c.alpha, c.noise);
+    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], vel.depth(), motionPx_, in.frame, c.alpha, c.noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
