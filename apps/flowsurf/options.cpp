@@ -122,8 +122,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
     cmd.add_option("--beta", p.common.beta, "Texture strength beta [L eq. 10], 0..1")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
-    cmd.add_option("--step-px", p.common.stepPx, "Largest displacement per frame in pixels (dt)")
-        ->group(gMethod)->capture_default_str()->check(CLI::Range(0.0f, 64.0f));
+    cmd.add_option_function<float>("--step-px", [&p](float s) { p.common.stepPx = p.hybrid.stepPx = s; },
+                                   "Pixels per step (dt): ISA/IBFVS largest displacement per frame (default 4), "
+                                   "hybrid arc length per integration step (default 2)")
+        ->group(gMethod)->check(CLI::Range(0.0f, 64.0f));
     cmd.add_option("--speed-percentile", p.common.speedPercentile,
                    "Clamp advection speed at this percentile of the surface's speeds (100: no clamp)")
         ->group(gMethod)->capture_default_str()->check(CLI::Range(1.0f, 100.0f));

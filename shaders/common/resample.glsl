@@ -13,26 +13,25 @@ vec4 catmullRomWeights(float t) {
                 0.5 * t3 - 0.5 * t2);
 }
 float resampleFlow(sampler2D tex, vec2 uv) {
-    ivec2 size = textureSize(tex, 0);
-    vec2 p = uv * vec2(size) - 0.5;  // texel-centre coordinates
+    vec2 size = vec2(textureSize(tex, 0));
+    vec2 p = uv * size - 0.5;  // texel-centre coordinates
     vec2 base = floor(p);
     vec2 t = p - base;
     vec4 wx = catmullRomWeights(t.x), wy = catmullRomWeights(t.y);
-    ivec2 i0 = ivec2(base) - 1;
-    float sum = 0.0, lo = 1e30, hi = -1e30;
-    for (int j = 0; j < 4; ++j) {
-        int y = clamp(i0.y + j, 0, size.y - 1);  // clamp to edge, as the bilinear sampler
-        vec4 row;
-        for (int i = 0; i < 4; ++i) row[i] = texelFetch(tex, ivec2(clamp(i0.x + i, 0, size.x - 1), y), 0).r;
-        sum += wy[j] * dot(wx, row);
-        if (j == 1 || j == 2) {
-            lo = min(lo, min(row.y, row.z));
-            hi = max(hi, max(row.y, row.z));
-        }
-    }
+    // The 4 x 4 footprint as four 2 x 2 gathers (clamp to edge from the sampler). A
+    // gather at the corner shared by texels (i, j)..(i+1, j+1) returns
+    // (i, j+1), (i+1, j+1), (i+1, j), (i, j).
+    vec2 c = (base + 0.0) / size;  // corner between texels base-1 and base
+    vec2 s2 = 2.0 / size;
+    vec4 g00 = textureGather(tex, c), g10 = textureGather(tex, c + vec2(s2.x, 0.0));
+    vec4 g01 = textureGather(tex, c + vec2(0.0, s2.y)), g11 = textureGather(tex, c + s2);
+    vec4 r0 = vec4(g00.wz, g10.wz), r1 = vec4(g00.xy, g10.xy);
+    vec4 r2 = vec4(g01.wz, g11.wz), r3 = vec4(g01.xy, g11.xy);
+    float sum = dot(wy, vec4(dot(wx, r0), dot(wx, r1), dot(wx, r2), dot(wx, r3)));
     // The negative lobes overshoot; where the backward map varies from pixel to pixel
     // (converging flow) repeated overshoot can grow without bound. Clamping to the four
     // nearest texels (the bilinear footprint) keeps every frame within its input's range.
+    float lo = min(min(r1.y, r1.z), min(r2.y, r2.z)), hi = max(max(r1.y, r1.z), max(r2.y, r2.z));
     return clamp(sum, lo, hi);
 }
 #else

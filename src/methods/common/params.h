@@ -39,9 +39,11 @@ enum class NoiseInjectionMode { Point, Swept };
 
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
-    float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2
+    float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
     float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
-    float stepPx = 2.0f;         // largest displacement per frame, pixels ([L] dt)
+    // ISA/IBFVS: largest displacement per frame, pixels ([L] dt). 4 with swept noise
+    // (measured, doc/README); the paper's point-sampled noise needs stepPx <= noise scale.
+    float stepPx = 4.0f;
     // Advection speed: vectors faster than this percentile of the surface's speeds are
     // clamped to it (CFD fields span decades; the max would freeze most of the
     // surface). 100 = no clamping. Streak length shows speed below it.
@@ -91,6 +93,7 @@ enum class Integrator { Euler, Rk2, Rk4 };
 // Hybrid physical/device-space LIC only, [W §3-6].
 struct HybridParams {
     int filterLength = 31;            // L: samples along the streamline, [W] 25..70
+    float stepPx = 2.0f;              // arc length per integration step, pixels ([W] dt)
     LicKernel kernel = LicKernel::Gaussian;
     Integrator integrator = Integrator::Euler;  // as in [W]; RK2/RK4 on request
     int noiseSize = 64;               // solid noise texels per side: 64 or 128
