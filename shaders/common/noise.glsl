@@ -19,21 +19,14 @@ float noiseCell(int ix, int iy, uint frame, float period, int profile, uint seed
     return noiseProfile(profile, float(frame) / period + phase);
 }
 // G(x; k), x in pixels: bilinear interpolation (triangular pulse h) of cell values.
-// `seedHash` = hashPcg(seed); each row's hash is shared by its two cells: 7 hashes per
-// sample instead of 12, the same values as hashCell.
-float noiseAtSeeded(vec2 px, uint frame, float scale, float period, int profile, uint seedHash) {
+float noiseAt(vec2 px, uint frame, float scale, float period, int profile, uint seed) {
     vec2 u = px / scale - 0.5;
     vec2 f = floor(u);
     ivec2 i = ivec2(f);
     vec2 a = u - f;
-    uint row0 = hashPcg(uint(i.y) + seedHash), row1 = hashPcg(uint(i.y + 1) + seedHash);
-    float t = float(frame) / period;
-    float g00 = noiseProfile(profile, t + hashToUnit(hashPcg(uint(i.x) + row0)));
-    float g10 = noiseProfile(profile, t + hashToUnit(hashPcg(uint(i.x + 1) + row0)));
-    float g01 = noiseProfile(profile, t + hashToUnit(hashPcg(uint(i.x) + row1)));
-    float g11 = noiseProfile(profile, t + hashToUnit(hashPcg(uint(i.x + 1) + row1)));
+    float g00 = noiseCell(i.x, i.y, frame, period, profile, seed);
+    float g10 = noiseCell(i.x + 1, i.y, frame, period, profile, seed);
+    float g01 = noiseCell(i.x, i.y + 1, frame, period, profile, seed);
+    float g11 = noiseCell(i.x + 1, i.y + 1, frame, period, profile, seed);
     return mix(mix(g00, g10, a.x), mix(g01, g11, a.x), a.y);
-}
-float noiseAt(vec2 px, uint frame, float scale, float period, int profile, uint seed) {
-    return noiseAtSeeded(px, frame, scale, period, profile, hashPcg(seed));
 }

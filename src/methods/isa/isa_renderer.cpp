@@ -10,11 +10,9 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
                      SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
-      textureAdvection_(params.isa.gridRes, params.isa.warp, params.common.resample),
-      noiseInjection_(params.common.noiseInjection),
+      textureAdvection_(viewport, params.isa.gridRes, params.isa.warp, params.common),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
-      motionPx_(GL_RG16F, viewport.width, viewport.height, GL_NEAREST),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {
     const float gray[4] = {0.5f, 0.0f, 0.0f, 1.0f};  // start at the noise mean
@@ -22,11 +20,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
         flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
         flowFbo_[i] = gl::Framebuffer::create();
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, motionPx_);
-        flowFbo_[i].finish(2);
-        noiseFbo_[i] = gl::Framebuffer::create();
-        noiseFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        noiseFbo_[i].finish(1);
+        flowFbo_[i].finish(1);
         glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
     }
     compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
@@ -73,14 +67,12 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     }
     const SurfaceGBuffer& vel = velocityImage_[vi_];
 
-    // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1]
+    // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1] and
+    // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], flowFbo_[target], params_.isa.edgeBlending,
-                            0.5f);
-
-    // (4) noise injection and blending on the surface only [L eq. 9]
-    timer_.begin("noise blend");
-    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], vel.depth(), motionPx_, in.frame, c.alpha, c.noise);
+    const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], vel.depth(), flowFbo_[target],
+                            params_.isa.edgeBlending, 0.5f, noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]

@@ -33,13 +33,10 @@ private:
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
-    NoiseInjection noiseInjection_;
     Overlay overlay_;
     CameraMotion motion_;
     gl::Texture2D flow_[2];       // F_a ping-pong, R32F
-    gl::Texture2D motionPx_;      // RG16F image motion d' of the advection (swept noise)
-    gl::Framebuffer flowFbo_[2];  // F_a + motion: the advection pass
-    gl::Framebuffer noiseFbo_[2]; // F_a alone: noise injection reads the motion
+    gl::Framebuffer flowFbo_[2];
     gl::Texture2D composite_;     // RGBA8
     gl::Framebuffer compositeFbo_;
     int current_ = 0, source_ = 0;
