@@ -47,6 +47,22 @@ TEST(CliOptions, ParsesTheDocumentedNames) {
     EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
+// Issue 14: sharper defaults for ISA and IBFVS; the paper's behaviour [L] by options.
+TEST(CliOptions, PaperResamplingAndNoiseReachable) {
+    RenderOptions d = parse({"builtin:sphere"});
+    EXPECT_EQ(d.params.common.resample, methods::Resample::Bicubic);
+    EXPECT_EQ(d.params.common.noiseInjection, methods::NoiseInjectionMode::Swept);
+    EXPECT_FLOAT_EQ(d.params.common.stepPx, 4.0f);
+    EXPECT_FLOAT_EQ(d.params.hybrid.stepPx, 2.0f);
+    RenderOptions o = parse({"builtin:sphere", "--resample", "bilinear", "--noise-injection", "point", "--step-px", "2"});
+    EXPECT_EQ(o.params.common.resample, methods::Resample::Bilinear);
+    EXPECT_EQ(o.params.common.noiseInjection, methods::NoiseInjectionMode::Point);
+    EXPECT_FLOAT_EQ(o.params.common.stepPx, 2.0f);
+    EXPECT_FLOAT_EQ(o.params.hybrid.stepPx, 2.0f);  // --step-px sets both
+    EXPECT_THROW(parse({"x", "--resample", "lanczos"}), CLI::ValidationError);
+    EXPECT_THROW(parse({"x", "--noise-injection", "line"}), CLI::ValidationError);
+}
+
 TEST(CliOptions, RefusesOutOfRangeAndUnknownValues) {
     EXPECT_THROW(parse({"x", "--grid-res", "32"}), CLI::ValidationError);
     EXPECT_THROW(parse({"x", "--grid-res", "2048"}), CLI::ValidationError);
