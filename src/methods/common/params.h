@@ -27,10 +27,11 @@ enum class CameraMoveRemedy { None, Translate, Freeze };
 
 // How ISA and IBFVS resample the previous F_a at the backward-integrated coordinates
 // each frame (shaders/common/resample.glsl). Bilinear: the texture filter, as in [L]; its
-// numerical diffusion blurs across the flow as much as along it. Bicubic: Catmull-Rom.
+// numerical diffusion blurs across the flow as much as along it. Bicubic: Catmull-Rom,
+// clamped to the four nearest texels.
 enum class Resample { Bilinear, Bicubic };
 
-// How ISA and IBFVS inject the noise G of eq. 9 (shaders/common/noise_injection.frag).
+// How ISA and IBFVS inject the noise G of eq. 9 (shaders/common/noise_injection.glsl).
 // Point: G at the pixel, as in [L]; noise finer than the step leaves dotted streaks.
 // Swept: G averaged along the pixel's image motion over the frame, x - t d' for t in
 // [0,1): a box filter along the flow over one step, so the noise is band-limited to the

@@ -2,9 +2,8 @@
 // shaders/ibfvs/mesh_projection.glsl), polygonal texture advection [L §IV-D.2] and noise
 // injection [L eq. 9] (shaders/ibfvs/polygon_advection.*): one draw of the surface mesh
 // into the next F_a (R32F), sampling the previous F_a; also writes shade (RGBA16F) and
-// depth. Cost
-// grows with the triangles N, in the static and the dynamic case alike. F_a is resampled
-// bilinearly (as in [L]) or bicubically (shaders/common/resample.glsl).
+// depth. Cost grows with the triangles N, in the static and the dynamic case alike. F_a
+// is resampled bilinearly (as in [L]) or bicubically (shaders/common/resample.glsl).
 #pragma once
 
 #include "core/camera.h"

@@ -8,6 +8,7 @@
 // F_a itself is resampled bilinearly (as in [L]) or bicubically (common/resample.glsl).
 #pragma once
 
+#include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
