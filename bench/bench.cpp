@@ -23,7 +23,7 @@ struct Column {
 const std::vector<Column> kColumns = {
     {"surface", {"velocity image", "seed textures"}},   // N-dependent pass of ISA / hybrid
     {"adv.mesh", {"advection mesh"}},                   // ISA, M-dependent
-    {"advect", {"texture advection", "particle tracing"}},  // IBFVS: includes the mesh projection
+    {"advect", {"texture advection", "particle tracing"}},  // IBFVS: includes the mesh projection; ISA, IBFVS: and the noise blend
     {"noise", {"noise blend", "solid noise"}},
     {"overlay", {"overlay", "edge mask"}},
 };

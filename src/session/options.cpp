@@ -323,7 +323,10 @@ std::vector<OptionSpec> buildTable() {
     }
     add(param<float>("alpha", gMethod, "Noise blend alpha [L eq. 9] (papers: 0.1-0.2)", FS_REF(params.common.alpha), 0, 1));
     add(param<float>("beta", gMethod, "Texture strength beta [L eq. 10]", FS_REF(params.common.beta), 0, 1));
-    add(param<float>("step-px", gMethod, "Largest displacement per frame in pixels (dt)", FS_REF(params.common.stepPx), 0, 64));
+    add(param<float>("step-px", gMethod, "ISA/IBFVS: largest displacement per frame in pixels (dt)",
+                     FS_REF(params.common.stepPx), 0, 64));
+    add(param<float>("lic-step-px", gMethod, "Hybrid: arc length per particle integration step in pixels ([W] dt)",
+                     FS_REF(params.hybrid.stepPx), 0.05, 64));
     add(param<float>("speed-percentile", gMethod, "Clamp advection speed at this percentile of the surface's speeds "
                      "(100: no clamp)", FS_REF(params.common.speedPercentile), 1, 100));
     add(onOff("normalize", gMethod, "on: unit-length vectors, uniform streaks; off: streak length shows speed",
@@ -337,6 +340,10 @@ std::vector<OptionSpec> buildTable() {
     add(param<int>("grid-res", gMethod, "ISA advection mesh resolution R (R x R cells)", FS_REF(params.isa.gridRes), 64, 1024));
     add(choice("isa-warp", gMethod, "ISA texture advection: pixel (mesh interpolated per pixel) or mesh (draw the "
                "R x R grid)", methods::kIsaWarpNames, FS_REF(params.isa.warp)));
+    add(choice("resample", gMethod, "ISA/IBFVS: resampling of the advected texture each frame: bicubic "
+               "(Catmull-Rom, clamped) or bilinear ([L])", methods::kResampleNames, FS_REF(params.common.resample)));
+    add(choice("noise-injection", gMethod, "ISA/IBFVS: noise G sampled at the pixel (point, [L]) or averaged along "
+               "its motion over the frame (swept)", methods::kNoiseInjectionNames, FS_REF(params.common.noiseInjection)));
     add(flag("cull-back-faces", gMethod, "Skip back-facing triangles (closed, outward-oriented surfaces only)",
              FS_REF(params.common.cullBackFaces)));
     add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));

@@ -41,37 +41,131 @@ TEST_P(MethodProperties, UniformFlowStreaksAlongFlow) {
     EXPECT_GE(along, 3.0f * across) << "along " << along << " px, across " << across << " px";
 }
 
-// Spinning sphere: the structure orientation of F_a matches the projected field
-// (median error <= 10 degrees) where the surface faces the camera and moves.
+namespace {
+
+// The spinning sphere of the orientation tests: builtin:sphere turning about a tilted
+// axis, 320^2, seen from (0.3, 0.4, 1).
+struct SpinningSphere {
+    core::Dataset data = core::makeBuiltin("builtin:sphere");
+    core::Viewport vp{320, 320};
+    core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    test::Rendered render(const std::string& method, const methods::MethodParams& p, int frames) const {
+        return test::renderScene(data, method, p, vp, cam, frames);
+    }
+    // Median angle between the streaks (structure tensor of F_a averaged over a Gaussian
+    // of `sigma` px) and the projected field, where the surface faces the camera and moves.
+    float medianErrorDeg(const test::Rendered& r, float sigma) const {
+        const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+        const glm::mat4 invVP = glm::inverse(cam.viewProjection(vp.aspect()));
+        std::vector<float> errors;
+        for (int y = 8; y < vp.height - 8; y += 6)
+            for (int x = 8; x < vp.width - 8; x += 6) {
+                if (!r.onSurface(x, y)) continue;
+                float depth = r.depth[size_t(y) * vp.width + x];
+                glm::vec4 h = invVP * glm::vec4((x + 0.5f) / vp.width * 2 - 1, (y + 0.5f) / vp.height * 2 - 1,
+                                                depth * 2 - 1, 1);
+                glm::vec3 p = glm::vec3(h) / h.w;
+                glm::vec3 toEye = glm::normalize(cam.eye - p);
+                if (glm::dot(glm::normalize(p), toEye) < 0.4f) continue;  // near the silhouette
+                glm::vec3 v = glm::cross(w, p);
+                glm::vec3 a = core::projectToPixels(cam, vp, p), b = core::projectToPixels(cam, vp, p + 0.01f * v);
+                glm::vec2 vPx = glm::vec2(b - a);
+                if (glm::length(vPx) < 0.01f * 0.4f * 120.0f) continue;  // near the rotation poles
+                float expected = std::fmod(std::atan2(vPx.y, vPx.x) + glm::two_pi<float>(), glm::pi<float>());
+                errors.push_back(test::orientationErrorDeg(test::streakOrientation(r, x, y, sigma), expected));
+            }
+        EXPECT_GT(errors.size(), 200u);
+        if (errors.empty()) return 90.0f;
+        std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+        return errors[errors.size() / 2];
+    }
+};
+
+// The paper's behaviour [L]: bilinear resampling of F_a, noise sampled at the pixel, and
+// the step of 2 px that point-sampled noise of scale 2 px needs.
+methods::MethodParams paperParams() {
+    methods::MethodParams p = defaultParams();
+    p.common.resample = methods::Resample::Bilinear;
+    p.common.noiseInjection = methods::NoiseInjectionMode::Point;
+    p.common.stepPx = 2.0f;
+    return p;
+}
+
+}  // namespace
+
+// Spinning sphere: the structure orientation of F_a matches the projected field. Median
+// error, sigma = 4 px: ISA and IBFVS measured 2.63 deg at seed 7 (2.46-2.87 at seeds
+// 1-3; 4.1 deg before the bicubic resampling and swept noise), tolerance 3.5 deg; the
+// hybrid measured 3.56 deg, tolerance 10 (its own tests hold it to 5).
 TEST_P(MethodProperties, SphereOrientationMatchesProjectedField) {
-    core::Dataset d = core::makeBuiltin("builtin:sphere");
-    const core::Viewport vp{320, 320};
-    core::Camera cam = core::fitCamera(d.bounds(), vp, {0.3f, 0.4f, 1.0f});
-    test::Rendered r = test::renderScene(d, GetParam(), defaultParams(), vp, cam, frames(100));
-    const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
-    const glm::mat4 invVP = glm::inverse(cam.viewProjection(vp.aspect()));
-    std::vector<float> errors;
-    for (int y = 8; y < vp.height - 8; y += 6)
-        for (int x = 8; x < vp.width - 8; x += 6) {
-            if (!r.onSurface(x, y)) continue;
-            float depth = r.depth[size_t(y) * vp.width + x];
-            glm::vec4 h = invVP * glm::vec4((x + 0.5f) / vp.width * 2 - 1, (y + 0.5f) / vp.height * 2 - 1,
-                                            depth * 2 - 1, 1);
-            glm::vec3 p = glm::vec3(h) / h.w;
-            glm::vec3 toEye = glm::normalize(cam.eye - p);
-            if (glm::dot(glm::normalize(p), toEye) < 0.4f) continue;  // near the silhouette
-            glm::vec3 v = glm::cross(w, p);
-            glm::vec3 a = core::projectToPixels(cam, vp, p), b = core::projectToPixels(cam, vp, p + 0.01f * v);
-            glm::vec2 vPx = glm::vec2(b - a);
-            if (glm::length(vPx) < 0.01f * 0.4f * 120.0f) continue;  // near the rotation poles
-            float expected = std::fmod(std::atan2(vPx.y, vPx.x) + glm::two_pi<float>(), glm::pi<float>());
-            errors.push_back(test::orientationErrorDeg(test::streakOrientation(r, x, y, 4.0f), expected));
+    SpinningSphere s;
+    test::Rendered r = s.render(GetParam(), defaultParams(), frames(100));
+    float median = s.medianErrorDeg(r, 4.0f);
+    std::printf("median orientation error %.2f deg (sigma 4 px)\n", median);
+    EXPECT_LE(median, GetParam() == "hybrid" ? 10.0f : 3.5f);
+}
+
+// The same at a finer scale (sigma = 2 px), where blotchy texture shows: the target of
+// issue 14 is 5 deg. ISA and IBFVS measured 4.41 / 4.40 deg at seed 7 (3.67-4.39 at seeds
+// 1-3; 7.5 deg with the paper's bilinear, point-noise defaults); the hybrid 3.80 deg.
+TEST_P(MethodProperties, SphereOrientationFineScale) {
+    SpinningSphere s;
+    test::Rendered r = s.render(GetParam(), defaultParams(), frames(100));
+    float median = s.medianErrorDeg(r, 2.0f);
+    std::printf("median orientation error %.2f deg (sigma 2 px)\n", median);
+    EXPECT_LE(median, 5.0f);
+}
+
+// No flicker: with a still camera, consecutive frames of F_a correlate >= 0.9 over the
+// surface (the texture moves one step along streaks of ~step / alpha px, and alpha of
+// it is renewed). Measured 0.956 for ISA and IBFVS (the paper's defaults: 0.975).
+TEST(ImageSpaceMethods, ConsecutiveFramesCorrelate) {
+    SpinningSphere s;
+    for (const std::string method : {"isa", "ibfvs"}) {
+        methods::SurfaceGpu surface(s.data.steps.front().mesh, "velocity", defaultParams().common);
+        auto m = methods::makeMethod(method, defaultParams(), s.vp);
+        test::Rendered prev;
+        double worst = 1.0;
+        for (int k = 0; k <= 100; ++k) {
+            m->renderFrame({&surface, s.cam, uint32_t(k)});
+            if (k < 96) continue;
+            test::Rendered r = test::readBack(*m, s.vp);
+            if (k > 96) {
+                std::vector<double> a, b;
+                for (int y = 0; y < s.vp.height; ++y)
+                    for (int x = 0; x < s.vp.width; ++x)
+                        if (r.onSurface(x, y)) {
+                            a.push_back(prev.f(x, y));
+                            b.push_back(r.f(x, y));
+                        }
+                worst = std::min(worst, test::pearson(a, b));
+            }
+            prev = std::move(r);
         }
-    ASSERT_GT(errors.size(), 200u);
-    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-    float median = errors[errors.size() / 2];
-    std::printf("median orientation error %.2f deg over %zu samples\n", median, errors.size());
-    EXPECT_LE(median, 10.0f) << "over " << errors.size() << " samples";
+        std::printf("%s: consecutive frames correlate >= %.3f\n", method.c_str(), worst);
+        EXPECT_GE(worst, 0.9) << method;
+    }
+}
+
+// The paper's behaviour stays reachable by options (--resample bilinear --noise-injection
+// point --step-px 2) and is the texture of before issue 14: its orientation errors are
+// those measured then (sigma 4 / 2 px: ISA 4.11 / 7.53, IBFVS 4.06 / 7.57 deg, within
+// 0.3 deg), measurably worse than the defaults.
+TEST(ImageSpaceMethods, PaperBehaviourReachable) {
+    SpinningSphere s;
+    const struct { const char* method; float coarse, fine; } before[] = {{"isa", 4.11f, 7.53f},
+                                                                          {"ibfvs", 4.06f, 7.57f}};
+    for (const auto& b : before) {
+        test::Rendered paper = s.render(b.method, paperParams(), 100);
+        test::Rendered now = s.render(b.method, defaultParams(), 100);
+        float coarse = s.medianErrorDeg(paper, 4.0f), fine = s.medianErrorDeg(paper, 2.0f);
+        float fineNow = s.medianErrorDeg(now, 2.0f);
+        std::printf("%s, paper's options: %.2f / %.2f deg (defaults %.2f at sigma 2)\n", b.method, coarse, fine,
+                    fineNow);
+        EXPECT_NEAR(coarse, b.coarse, 0.3f) << b.method;
+        EXPECT_NEAR(fine, b.fine, 0.3f) << b.method;
+        EXPECT_GT(fine - fineNow, 2.0f) << b.method;
+    }
 }
 
 // Texture clipping: every background pixel equals the background colour exactly.

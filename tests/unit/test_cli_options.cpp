@@ -48,6 +48,23 @@ TEST(CliOptions, ParsesTheDocumentedNames) {
     EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
+// Issue 14: sharper defaults for ISA and IBFVS; the paper's behaviour [L] by options.
+TEST(CliOptions, PaperResamplingAndNoiseReachable) {
+    RenderOptions d = parse({"builtin:sphere"});
+    EXPECT_EQ(d.params.common.resample, methods::Resample::Bicubic);
+    EXPECT_EQ(d.params.common.noiseInjection, methods::NoiseInjectionMode::Swept);
+    EXPECT_FLOAT_EQ(d.params.common.stepPx, 4.0f);
+    EXPECT_FLOAT_EQ(d.params.hybrid.stepPx, 2.0f);
+    RenderOptions o = parse({"builtin:sphere", "--resample", "bilinear", "--noise-injection", "point", "--step-px", "2",
+                             "--lic-step-px", "1.5"});
+    EXPECT_EQ(o.params.common.resample, methods::Resample::Bilinear);
+    EXPECT_EQ(o.params.common.noiseInjection, methods::NoiseInjectionMode::Point);
+    EXPECT_FLOAT_EQ(o.params.common.stepPx, 2.0f);
+    EXPECT_FLOAT_EQ(o.params.hybrid.stepPx, 1.5f);  // each method's own step
+    EXPECT_THROW(parse({"x", "--resample", "lanczos"}), ConfigError);
+    EXPECT_THROW(parse({"x", "--noise-injection", "line"}), ConfigError);
+}
+
 TEST(CliOptions, RefusesOutOfRangeAndUnknownValues) {
     EXPECT_THROW(parse({"x", "--grid-res", "32"}), ConfigError);
     EXPECT_THROW(parse({"x", "--grid-res", "2048"}), ConfigError);

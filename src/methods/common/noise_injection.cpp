@@ -1,29 +1,49 @@
 #include "methods/common/noise_injection.h"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace flowsurf::methods {
 
-NoiseInjection::NoiseInjection()
-    : program_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/noise_injection.frag"}}),
-      emptyVao_(gl::VertexArray::create()) {}
+namespace {
+// Cells beyond each image side: swept samples reach back one step (a few pixels); farther
+// ones (edge advection points) read the border cells, which gray blending hides anyway.
+constexpr int kMargin = 8;
+}  // namespace
 
-void NoiseInjection::apply(const gl::Framebuffer& flowFbo, const gl::Texture2D& depth, uint32_t frame,
-                           float alpha, const core::NoiseParams& noise) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, flowFbo.id());
-    glViewport(0, 0, depth.width(), depth.height());
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendColor(0, 0, 0, alpha);
-    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-    program_.use();
-    glUniform1ui(program_.uniform("uFrame"), frame);
-    glUniform1f(program_.uniform("uScale"), noise.scale);
-    glUniform1f(program_.uniform("uPeriod"), noise.period);
-    glUniform1i(program_.uniform("uProfile"), noise.profile == core::NoiseProfile::Square ? 0 : 1);
-    glUniform1ui(program_.uniform("uSeed"), noise.seed);
-    glBindTextureUnit(0, depth.id());
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
+NoiseInjection::NoiseInjection(const CommonParams& params, const core::Viewport& viewport)
+    : mode_(params.noiseInjection),
+      sweepSamples_(std::clamp(int(std::ceil(params.stepPx / params.noise.scale)), 1, 8)),
+      viewport_(viewport) {}
+
+std::string NoiseInjection::defines() const {
+    if (mode_ != NoiseInjectionMode::Swept) return "";
+    return "#define NOISE_SWEPT " + std::to_string(sweepSamples_) + "\n";
+}
+
+void NoiseInjection::bind(const gl::Program& program, const NoiseStep& step) const {
+    const core::NoiseParams& n = step.noise;
+    if (phases_.id() == 0 || n.scale != phaseScale_ || n.seed != phaseSeed_) {
+        // Cells i = floor(x / s - 0.5) for x in [0, width]: -1 .. width / s.
+        const int w = int(std::ceil(viewport_.width / n.scale)) + 2 + 2 * kMargin;
+        const int h = int(std::ceil(viewport_.height / n.scale)) + 2 + 2 * kMargin;
+        std::vector<float> phi(size_t(w) * h);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                phi[size_t(j) * w + i] = core::hashToUnit(core::hashCell(i - kMargin, j - kMargin, n.seed));
+        phases_ = gl::Texture2D(GL_R32F, w, h, GL_NEAREST);
+        glTextureSubImage2D(phases_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, phi.data());
+        phaseScale_ = n.scale;
+        phaseSeed_ = n.seed;
+    }
+    glUniform1ui(program.uniform("uFrame"), step.frame);
+    glUniform1f(program.uniform("uAlpha"), step.alpha);
+    glUniform1f(program.uniform("uScale"), n.scale);
+    glUniform1f(program.uniform("uPeriod"), n.period);
+    glUniform1i(program.uniform("uProfile"), n.profile == core::NoiseProfile::Square ? 0 : 1);
+    glUniform1f(program.uniform("uPhaseMargin"), float(kMargin));
+    glBindTextureUnit(3, phases_.id());
 }
 
 }  // namespace flowsurf::methods

@@ -28,11 +28,26 @@ enum class OverlayScheme { Blend, Gray, GrayLit, HueLit, CoolWarm };
 // mapped onto the surface from the view where it was made; resumes when it stops.
 enum class CameraMoveRemedy { None, Translate, Freeze };
 
+// How ISA and IBFVS resample the previous F_a at the backward-integrated coordinates
+// each frame (shaders/common/resample.glsl). Bilinear: the texture filter, as in [L]; its
+// numerical diffusion blurs across the flow as much as along it. Bicubic: Catmull-Rom,
+// clamped to the four nearest texels.
+enum class Resample { Bilinear, Bicubic };
+
+// How ISA and IBFVS inject the noise G of eq. 9 (shaders/common/noise_injection.glsl).
+// Point: G at the pixel, as in [L]; noise finer than the step leaves dotted streaks.
+// Swept: G averaged along the pixel's image motion over the frame, x - t d' for t in
+// [0,1): a box filter along the flow over one step, so the noise is band-limited to the
+// step along the flow and keeps its full resolution across it.
+enum class NoiseInjectionMode { Point, Swept };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
-    float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2
+    float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
     float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
-    float stepPx = 2.0f;         // largest displacement per frame, pixels ([L] dt)
+    // ISA/IBFVS: largest displacement per frame, pixels ([L] dt). 4 with swept noise
+    // (measured, doc/README); the paper's point-sampled noise needs stepPx <= noise scale.
+    float stepPx = 4.0f;
     // Advection speed: vectors faster than this percentile of the surface's speeds are
     // clamped to it (CFD fields span decades; the max would freeze most of the
     // surface). 100 = no clamping. Streak length shows speed below it.
@@ -48,6 +63,8 @@ struct CommonParams {
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
     CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
+    Resample resample = Resample::Bicubic;  // F_a resampling in ISA and IBFVS ([L]: bilinear)
+    NoiseInjectionMode noiseInjection = NoiseInjectionMode::Swept;  // ISA and IBFVS ([L]: point)
     // Skip back-facing triangles in the surface passes: cheaper for closed, consistently
     // oriented surfaces (counter-clockwise seen from outside); wrong for open CFD walls,
     // which are seen from both sides, so off by default. Off-screen triangles are always
@@ -80,6 +97,7 @@ enum class Integrator { Euler, Rk2, Rk4 };
 // Hybrid physical/device-space LIC only, [W §3-6].
 struct HybridParams {
     int filterLength = 31;            // L: samples along the streamline, [W] 25..70
+    float stepPx = 2.0f;              // arc length per integration step, pixels ([W] dt)
     LicKernel kernel = LicKernel::Gaussian;
     Integrator integrator = Integrator::Euler;  // as in [W]; RK2/RK4 on request
     int noiseSize = 64;               // solid noise texels per side: 64 or 128
@@ -118,6 +136,9 @@ inline constexpr EnumNames<Integrator, 3> kIntegratorNames{{{Integrator::Euler, 
                                                             {Integrator::Rk4, "rk4"}}};
 inline constexpr EnumNames<core::NoiseProfile, 2> kNoiseProfileNames{{{core::NoiseProfile::Square, "square"},
                                                                       {core::NoiseProfile::Sawtooth, "sawtooth"}}};
+inline constexpr EnumNames<Resample, 2> kResampleNames{{{Resample::Bicubic, "bicubic"}, {Resample::Bilinear, "bilinear"}}};
+inline constexpr EnumNames<NoiseInjectionMode, 2> kNoiseInjectionNames{{{NoiseInjectionMode::Swept, "swept"},
+                                                                         {NoiseInjectionMode::Point, "point"}}};
 // The methods, in the order the viewer cycles through them.
 inline constexpr std::array<std::string_view, 3> kMethodNames{"isa", "ibfvs", "hybrid"};
 

@@ -63,7 +63,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     t.noiseSize = noise_.size();
     t.camera = in.camera;
     t.viewport = viewport_;
-    t.stepPx = c.stepPx;
+    t.stepPx = params_.hybrid.stepPx;
     t.speedRef = speedRef;
     t.noiseScalePx = c.noise.scale;
     if (unsteady) {

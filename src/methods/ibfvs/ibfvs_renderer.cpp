@@ -5,6 +5,7 @@ namespace flowsurf::methods::ibfvs {
 IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
+      polygonAdvection_(viewport, params.common),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
@@ -19,9 +20,6 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, shade_);
         flowFbo_[i].attach(GL_DEPTH_ATTACHMENT, depth_);
         flowFbo_[i].finish(2);
-        noiseFbo_[i] = gl::Framebuffer::create();
-        noiseFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        noiseFbo_[i].finish(1);
         glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
     }
     compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
@@ -43,14 +41,12 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
-    // into a gray background [L eq. 13, §IV-D.2, §IV-F.2]
+    // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
+    // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G]
     timer_.begin("texture advection");
+    const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_[source_],
-                            flowFbo_[target], params_.ibfvs.flowBackground, c.cullBackFaces);
-
-    // (3) noise injection clipped to the surface [L eq. 9, §IV-G]
-    timer_.begin("noise blend");
-    if (plan.advect) noiseInjection_.apply(noiseFbo_[target], depth_, in.frame, c.alpha, c.noise);
+                            flowFbo_[target], params_.ibfvs.flowBackground, c.cullBackFaces, noise);
     current_ = target;
 
     // (4) overlay [L eq. 10]

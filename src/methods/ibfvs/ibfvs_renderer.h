@@ -25,14 +25,12 @@ private:
     MethodParams params_;
     core::Viewport viewport_;
     PolygonAdvection polygonAdvection_;
-    NoiseInjection noiseInjection_;
     Overlay overlay_;
     EdgeMask edgeMask_;
     CameraMotion motion_;
     gl::Texture2D flow_[2];        // F_a ping-pong, R32F
     gl::Texture2D shade_, depth_;  // written by the advection draw
     gl::Framebuffer flowFbo_[2];   // F_a + shade + depth: the advection draw
-    gl::Framebuffer noiseFbo_[2];  // F_a alone: noise injection samples depth, so it must not be attached
     gl::Texture2D composite_;      // RGBA8
     gl::Framebuffer compositeFbo_;
     int current_ = 0, source_ = 0;

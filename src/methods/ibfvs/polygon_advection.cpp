@@ -1,15 +1,21 @@
 #include "methods/ibfvs/polygon_advection.h"
 
+#include "methods/common/noise_injection.h"
+#include "methods/common/resample.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace flowsurf::methods::ibfvs {
 
-PolygonAdvection::PolygonAdvection()
-    : program_({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}}) {}
+PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common)
+    : noise_(common, viewport),
+      program_({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
+               resampleDefine(common.resample) + noise_.defines()) {}
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
-                             const gl::Framebuffer& target, float flowBackground, bool cullBackFaces) const {
+                             const gl::Framebuffer& target, float flowBackground, bool cullBackFaces,
+                             const NoiseStep& noise) const {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
@@ -32,6 +38,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glUniformMatrix4fv(program_.uniform("uPrevViewProj"), 1, GL_FALSE, glm::value_ptr(prevViewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform1f(program_.uniform("uDt"), dt);
+    noise_.bind(program_, noise);
     glBindTextureUnit(0, prevFlow.id());
     surface.draw();
     glDisable(GL_DEPTH_TEST);

@@ -10,7 +10,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
                      SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
-      textureAdvection_(params.isa.gridRes, params.isa.warp),
+      textureAdvection_(viewport, params.isa.gridRes, params.isa.warp, params.common),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
@@ -67,14 +67,12 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     }
     const SurfaceGBuffer& vel = velocityImage_[vi_];
 
-    // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1]
+    // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1] and
+    // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], flowFbo_[target], params_.isa.edgeBlending,
-                            0.5f);
-
-    // (4) noise injection and blending on the surface only [L eq. 9]
-    timer_.begin("noise blend");
-    if (plan.advect) noiseInjection_.apply(flowFbo_[target], vel.depth(), in.frame, c.alpha, c.noise);
+    const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], vel.depth(), flowFbo_[target],
+                            params_.isa.edgeBlending, 0.5f, noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]

@@ -33,7 +33,6 @@ private:
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
-    NoiseInjection noiseInjection_;
     Overlay overlay_;
     CameraMotion motion_;
     gl::Texture2D flow_[2];       // F_a ping-pong, R32F

@@ -1,22 +1,32 @@
 #include "methods/isa/texture_advection.h"
 
+#include "methods/common/noise_injection.h"
+#include "methods/common/resample.h"
+
 #include <vector>
 
 namespace flowsurf::methods::isa {
 
 namespace {
-gl::Program makeProgram(IsaWarp warp) {
+gl::Program makeProgram(IsaWarp warp, Resample resample, const NoiseInjection& noise) {
+    const std::string defines = resampleDefine(resample) + noise.defines();
     if (warp == IsaWarp::Pixel)
         return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
                             {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
-                           "#define PER_PIXEL 1\n");
+                           "#define PER_PIXEL 1\n" + defines);
     return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"},
-                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}});
+                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+                       defines);
 }
 }  // namespace
 
-TextureAdvection::TextureAdvection(int gridRes, IsaWarp warp)
-    : gridRes_(gridRes), warp_(warp), vao_(gl::VertexArray::create()), program_(makeProgram(warp)) {
+TextureAdvection::TextureAdvection(const core::Viewport& viewport, int gridRes, IsaWarp warp,
+                                   const CommonParams& common)
+    : gridRes_(gridRes),
+      warp_(warp),
+      noise_(common, viewport),
+      vao_(gl::VertexArray::create()),
+      program_(makeProgram(warp, common.resample, noise_)) {
     if (warp != IsaWarp::Mesh) return;
     // Two triangles per grid cell; vertices come from the mesh texture by gl_VertexID.
     std::vector<uint32_t> idx;
@@ -32,8 +42,8 @@ TextureAdvection::TextureAdvection(int gridRes, IsaWarp warp)
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
 }
 
-void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow,
-                             const gl::Framebuffer& nextFlow, bool edgeBlending, float gray) const {
+void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
+                             const gl::Framebuffer& nextFlow, bool edgeBlending, float gray, const NoiseStep& noise) const {
     glBindFramebuffer(GL_FRAMEBUFFER, nextFlow.id());
     glViewport(0, 0, prevFlow.width(), prevFlow.height());
     glDisable(GL_DEPTH_TEST);
@@ -42,8 +52,10 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
     glUniform1f(program_.uniform("uGray"), gray);
+    noise_.bind(program_, noise);
     glBindTextureUnit(0, prevFlow.id());
     glBindTextureUnit(1, mesh.id());
+    glBindTextureUnit(2, surfaceDepth.id());
     glBindVertexArray(vao_.id());
     if (warp_ == IsaWarp::Mesh)
         glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);

@@ -1,25 +1,31 @@
-// ISA stage 3 — texture advection [L §IV-D.1] with edge blending [L §IV-E.1]: the
-// previous F_a (R32F) resampled at the advection mesh's coordinates into the next F_a.
+// ISA stages 3-4 — texture advection [L §IV-D.1] with edge blending [L §IV-E.1]: the
+// previous F_a (R32F) resampled at the advection mesh's coordinates into the next F_a,
+// then noise injection on the surface (depth < 1) [L eq. 9] in the same pass.
 // Two variants of one stage: `Mesh` draws the R x R grid as in the paper (cost grows
 // with M = R^2 triangles); `Pixel` interpolates the same mesh per pixel with the
 // texture filter (cost grows with pixels only; equal up to bilinear-vs-triangle
 // interpolation inside a cell), the paper's "per-pixel advection" future work.
+// F_a itself is resampled bilinearly (as in [L]) or bicubically (common/resample.glsl).
 #pragma once
 
+#include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
 
 namespace flowsurf::methods::isa {
 
 class TextureAdvection {
 public:
-    TextureAdvection(int gridRes, IsaWarp warp);
-    void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Framebuffer& nextFlow,
-               bool edgeBlending, float gray) const;
+    // `common`: the resampling, and the noise injection mode, scale and step.
+    TextureAdvection(const core::Viewport& viewport, int gridRes, IsaWarp warp, const CommonParams& common);
+    void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
+               const gl::Framebuffer& nextFlow, bool edgeBlending, float gray, const NoiseStep& noise) const;
 
 private:
     int gridRes_;
     IsaWarp warp_;
+    NoiseInjection noise_;
     gl::Buffer indices_;
     gl::VertexArray vao_;
     gl::Program program_;
