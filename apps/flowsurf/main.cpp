@@ -13,6 +13,35 @@
 
 using namespace flowsurf;
 
+namespace {
+
+// Prints the error that is being handled and returns its exit code (exit_codes.h).
+int reportCurrentError() {
+    try {
+        throw;
+    } catch (const ConfigError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kUsage;
+    } catch (const IoError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kIo;
+    } catch (const FormatError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kFormat;
+    } catch (const FieldError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kField;
+    } catch (const GlError& e) {
+        std::fprintf(stderr, "flowsurf: %s\n", e.what());
+        return app::kGl;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "flowsurf: internal error: %s\n", e.what());
+        return app::kInternal;
+    }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA, IBFVS [L]; hybrid LIC [W])", "flowsurf"};
     app.require_subcommand(1);
@@ -79,15 +108,8 @@ int main(int argc, char** argv) {
             compare = render;
             view = render;
         }
-    } catch (const ConfigError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kUsage;
-    } catch (const IoError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kIo;
-    } catch (const FormatError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kFormat;
+    } catch (const std::exception&) {
+        return reportCurrentError();
     }
 
     try {
@@ -119,24 +141,8 @@ int main(int argc, char** argv) {
         }
         if (*compareCmd) return app::runCompare(compare, compareMethods);
         if (*benchCmd) return app::runBench(bench);
-    } catch (const ConfigError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kUsage;
-    } catch (const IoError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kIo;
-    } catch (const FormatError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kFormat;
-    } catch (const FieldError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kField;
-    } catch (const GlError& e) {
-        std::fprintf(stderr, "flowsurf: %s\n", e.what());
-        return app::kGl;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "flowsurf: internal error: %s\n", e.what());
-        return app::kInternal;
+    } catch (const std::exception&) {
+        return reportCurrentError();
     }
     return app::kOk;
 }

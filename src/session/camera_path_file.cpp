@@ -1,6 +1,7 @@
 #include "session/camera_path_file.h"
 
 #include "core/errors.h"
+#include "session/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,7 +14,7 @@ namespace flowsurf::session {
 
 namespace {
 
-glm::vec3 vec3At(const nlohmann::json& k, const char* key, const glm::vec3& fallback, const std::string& where) {
+glm::vec3 vec3At(const nlohmann::ordered_json& k, const char* key, const glm::vec3& fallback, const std::string& where) {
     if (!k.contains(key)) return fallback;
     const auto& v = k.at(key);
     if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
@@ -27,14 +28,7 @@ glm::vec3 vec3At(const nlohmann::json& k, const char* key, const glm::vec3& fall
 }  // namespace
 
 core::CameraPath readCameraPath(const std::string& path, const core::Camera& defaults) {
-    std::ifstream f(path);
-    if (!f) throw IoError(path + ": cannot open (" + std::strerror(errno) + ")");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw FormatError(path + ": not valid JSON (" + e.what() + ")");
-    }
+    const nlohmann::ordered_json doc = readJsonFile(path);
     if (!doc.is_object() || !doc.contains("keyframes") || !doc["keyframes"].is_array() || doc["keyframes"].empty())
         throw FormatError(path + ": expected {\"keyframes\": [ ... ]} with at least one keyframe");
     std::vector<core::CameraKeyframe> keys;

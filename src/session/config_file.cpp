@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "io/text_writer.h"
+#include "session/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +15,7 @@ namespace flowsurf::session {
 namespace {
 
 // A JSON value as the option's command-line text.
-std::string valueText(const OptionSpec& spec, const nlohmann::json& v, const std::string& where) {
+std::string valueText(const OptionSpec& spec, const nlohmann::ordered_json& v, const std::string& where) {
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean()) {
         if (spec.kind == OptionKind::Choice && spec.choices == std::vector<std::string>{"on", "off"})
@@ -40,14 +41,7 @@ std::string valueText(const OptionSpec& spec, const nlohmann::json& v, const std
 }  // namespace
 
 void applyConfigFile(const std::string& path, RenderOptions& o) {
-    std::ifstream f(path);
-    if (!f) throw IoError(path + ": cannot open (" + std::strerror(errno) + ")");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw FormatError(path + ": not valid JSON (" + e.what() + ")");
-    }
+    const nlohmann::ordered_json doc = readJsonFile(path);
     if (!doc.is_object()) throw FormatError(path + ": expected a JSON object of option names and values");
     for (const auto& [key, value] : doc.items()) {
         if (key == "flowsurf-config") {

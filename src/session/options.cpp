@@ -11,16 +11,26 @@
 
 namespace flowsurf::session {
 
-float parseFloat(const std::string& s, const std::string& what) {
+namespace {
+
+// A whole string as a finite number of type T (float: rounded once, as strtof does).
+template <typename T>
+T parseFinite(const std::string& s, const std::string& what) {
     try {
         size_t used = 0;
-        float v = std::stof(s, &used);
+        T v;
+        if constexpr (std::is_same_v<T, float>) v = std::stof(s, &used);
+        else v = std::stod(s, &used);
         if (used != s.size() || !std::isfinite(v)) throw std::invalid_argument(s);
         return v;
     } catch (const std::exception&) {
         throw ConfigError(what + ": '" + s + "' is not a finite number");
     }
 }
+
+}  // namespace
+
+float parseFloat(const std::string& s, const std::string& what) { return parseFinite<float>(s, what); }
 
 namespace {
 
@@ -99,16 +109,7 @@ namespace {
 
 std::string dashed(const std::string& name) { return "--" + name; }
 
-double parseNumber(const std::string& s, const std::string& what) {
-    try {
-        size_t used = 0;
-        double v = std::stod(s, &used);
-        if (used != s.size() || !std::isfinite(v)) throw std::invalid_argument(s);
-        return v;
-    } catch (const std::exception&) {
-        throw ConfigError(what + ": '" + s + "' is not a finite number");
-    }
-}
+double parseNumber(const std::string& s, const std::string& what) { return parseFinite<double>(s, what); }
 
 template <typename T>
 std::string numberText(T v) {

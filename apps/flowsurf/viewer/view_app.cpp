@@ -7,6 +7,7 @@
 
 #include "session/camera_path_file.h"
 #include "session/config_file.h"
+#include "session/json_file.h"
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
@@ -44,12 +45,8 @@ std::vector<std::string> splitList(const std::string& list) {
 // Appends the camera as a keyframe to a --camera-path file (created if missing).
 void appendKeyframe(const std::string& path, const core::Camera& c, uint32_t frame) {
     nlohmann::ordered_json doc = {{"keyframes", nlohmann::json::array()}};
-    if (std::ifstream f(path); f) {
-        try {
-            doc = nlohmann::ordered_json::parse(f);
-        } catch (const nlohmann::json::parse_error& e) {
-            throw FormatError(path + ": not valid JSON (" + e.what() + "); not appending to it");
-        }
+    if (std::ifstream(path).good()) {
+        doc = readJsonFile(path);
         if (!doc.is_object() || !doc.contains("keyframes") || !doc["keyframes"].is_array())
             throw FormatError(path + ": expected {\"keyframes\": [...]}; not appending to it");
     }

@@ -1,0 +1,21 @@
+#include "session/json_file.h"
+
+#include "core/errors.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+namespace flowsurf::session {
+
+nlohmann::ordered_json readJsonFile(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw IoError(path + ": cannot open (" + std::strerror(errno) + ")");
+    try {
+        return nlohmann::ordered_json::parse(f);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw FormatError(path + ": not valid JSON (" + e.what() + ")");
+    }
+}
+
+}  // namespace flowsurf::session
