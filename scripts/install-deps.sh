@@ -15,7 +15,7 @@ PACKAGES=(
   libgtest-dev                                  # tests
   ffmpeg                                        # MP4 (H.264) output
   libglfw3-dev libimgui-dev                     # the viewer: window (GLFW 3.3) and panel (Dear ImGui)
-  xvfb xauth                                    # viewer tests: a real X window without a display
+  xvfb xauth xdotool                            # viewer tests: a real X window and real input without a display
   pybind11-dev python3-dev python3-numpy        # the Python module
   python3-pytest python3-vedo                   # Python tests (vedo: a real client mesh library)
 )

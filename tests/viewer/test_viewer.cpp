@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -357,4 +358,28 @@ TEST_F(Viewer, RealWindowUnderXvfb) {
     // The panel sits at the left: the window differs there, and matches on the right.
     EXPECT_GT(meanAbsDiff(full, w, 0, 60), 0.05);
     EXPECT_LE(meanAbsDiff(full, w, 440, 480), 1.0 / 255.0);
+}
+
+// Real mouse and keyboard events (xdotool) into the real window: GLFW's callbacks turn
+// them into the same events a log holds; the recorded session replays to the same image.
+TEST_F(Viewer, LiveInputInTheRealWindowReplaysExactly) {
+    if (std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") != 0)
+        GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    const std::string script = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/live_input.sh";
+    ASSERT_EQ(std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + script + "' '" + exe_ + "' '" + dir_ + "'")
+                              .c_str()),
+              0);
+    std::ifstream in(path("live.log"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string log = ss.str();
+    EXPECT_NE(log.find("mouse-down left"), std::string::npos) << log;
+    EXPECT_NE(log.find("mouse-up left"), std::string::npos) << log;
+    EXPECT_NE(log.find("key m"), std::string::npos) << log;
+    EXPECT_NE(log.find("key p"), std::string::npos) << log;
+    EXPECT_GT(std::count(log.begin(), log.end(), '\n'), 8);  // mouse moves were recorded
+    fs::rename(path("live.png"), path("live_window.png"));
+    ASSERT_EQ(run("view builtin:tori --size 640x480 --headless -q -o '" + path("live.png") + "' --play '" +
+                  path("live.log") + "'"), 0) << err_;
+    EXPECT_LE(meanAbsDiff(png(path("live_window.png")), png(path("live.png"))), 0.0);
 }
