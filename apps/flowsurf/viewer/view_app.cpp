@@ -94,7 +94,8 @@ public:
         for (long frame = 0;; ++frame) {
             const auto t0 = Clock::now();
             // (1) input
-            std::vector<Event> input = window_ ? window_->poll(frame) : std::vector<Event>{};
+            const bool idle = !lastRendered_ && next_ >= replay_.size();
+            std::vector<Event> input = window_ ? window_->poll(frame, idle) : std::vector<Event>{};
             while (next_ < replay_.size() && replay_[next_].frame <= frame) input.push_back(replay_[next_++]);
             for (const Event& e : input) {
                 state_.handle(e);
@@ -109,6 +110,7 @@ public:
             applyRequests(req);
             // (3) render
             const bool rendered = renderIfNeeded();
+            lastRendered_ = rendered;
             if (recorder_ && rendered) recordFrame();
             // (4) show, then outputs
             for (const Event& out : req.outputs)
@@ -332,6 +334,7 @@ private:
     core::Camera lastCamera_;
     double lastTime_ = 0.0;
     bool mustRender_ = true;
+    bool lastRendered_ = true;
     int timerFrames_ = 0;
     std::unique_ptr<io::VideoWriter> recorder_;
     std::vector<double> frameMs_;

@@ -120,9 +120,10 @@ Window::~Window() {
     glfwTerminate();
 }
 
-std::vector<Event> Window::poll(long frame) {
+std::vector<Event> Window::poll(long frame, bool idle) {
     frame_ = frame;
-    glfwPollEvents();
+    if (idle && queue_.empty()) glfwWaitEventsTimeout(0.05);
+    else glfwPollEvents();
     std::vector<Event> out;
     out.swap(queue_);
     for (Event& e : out) e.frame = frame;  // panel edits were queued during the last frame

@@ -28,8 +28,9 @@ public:
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
 
-    // Polls input: returns the events since the last call (stamped `frame`).
-    std::vector<Event> poll(long frame);
+    // Polls input: returns the events since the last call (stamped `frame`). `idle`:
+    // nothing animates, so wait up to 50 ms for input instead of spinning.
+    std::vector<Event> poll(long frame, bool idle = false);
     bool closeRequested() const;
     // Render area size in pixels.
     void framebufferSize(int* width, int* height) const;
