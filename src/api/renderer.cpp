@@ -165,7 +165,9 @@ void Renderer::render(const Surface& surface, int frames) {
     if (frames < 0) throw ConfigError("render: frames must not be negative");
     Impl::Scope scope(*impl_);
     impl_->start(surface.data_shared());
-    for (int k = 0; k <= frames; ++k) impl_->step();
+    // A history-free method (the hybrid) renders frame N alone: the same image.
+    if (impl_->method->historyFree()) impl_->frame = frames;
+    for (int k = impl_->frame; k <= frames; ++k) impl_->step();
 }
 
 void Renderer::begin(const Surface& surface) {

@@ -40,6 +40,9 @@ public:
     // True if the method reads FrameInput::levels (the hybrid's pathlines through
     // unsteady data); ISA and IBFVS integrate through time frame by frame instead.
     virtual bool usesTimeLevels() const { return false; }
+    // True if frame k depends only on this frame's input (the hybrid's LIC [W]): a single
+    // image of frame k needs no frames before it. ISA and IBFVS carry F_a from frame to frame.
+    virtual bool historyFree() const { return false; }
     gl::StageTimer& timer() { return timer_; }
 
 protected:

@@ -23,6 +23,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
     bool usesTimeLevels() const override { return true; }
+    bool historyFree() const override { return true; }
     // For tests: the solid noise volume.
     GLuint noiseTexture() const { return noise_.texture(); }
 
