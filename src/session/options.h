@@ -75,6 +75,7 @@ void validateRenderOptions(const RenderOptions& opt);
 
 // Value syntaxes (throw ConfigError naming `what`):
 float parseFloat(const std::string& text, const std::string& what);
+double parseNumber(const std::string& text, const std::string& what);
 core::Viewport parseSize(const std::string& text, const std::string& what = "--size");
 glm::vec3 parseVec3(const std::string& text, const std::string& what);
 glm::vec3 parseColor(const std::string& text, const std::string& what = "--background");
