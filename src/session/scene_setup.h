@@ -19,6 +19,15 @@ std::unique_ptr<core::StepProvider> openInput(const std::string& input);
 // The mesh of the requested step with its field selected; throws ConfigError/FieldError.
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.
+// The data's axes for --up-axis 0/1/2 (x/y/z): up, right, and front (toward the
+// default camera).
+struct ViewFrame {
+    glm::vec3 up, right, front;
+};
+ViewFrame viewFrame(int upAxis);
+// From the target toward the eye for a --view preset ("" = the default view).
+glm::vec3 viewDirection(const std::string& view, int upAxis);
+
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds);
 
 // The camera of every frame: fixed, orbiting (--orbit), or keyframed (--camera-path).
