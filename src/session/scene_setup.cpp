@@ -15,9 +15,9 @@ core::Dataset loadInput(const std::string& input) {
     return io::readDataset(input);
 }
 
-std::unique_ptr<core::StepProvider> openInput(const std::string& input) {
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches) {
     if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
-    return io::openSeries(input);
+    return io::openSeries(input, patches);
 }
 
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {

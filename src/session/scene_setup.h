@@ -15,7 +15,7 @@ namespace flowsurf::session {
 core::Dataset loadInput(const std::string& input);
 // The input as time steps loaded on demand: builtin:NAME, a file, or a file series
 // pattern (surf_%04d.vtp, surf_*.vtp).
-std::unique_ptr<core::StepProvider> openInput(const std::string& input);
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches = "");
 // The mesh of the requested step with its field selected; throws ConfigError/FieldError.
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.

@@ -5,6 +5,7 @@
 #include "core/derived_fields.h"
 #include "core/errors.h"
 #include "io/dataset_reader.h"
+#include "io/series_reader.h"
 #include "session/colormap_file.h"
 #include "session/scene_setup.h"
 #include "test_io_common.h"
@@ -128,6 +129,12 @@ TEST(Scalars, OpenFoamFieldOnOnePatchIsKept) {
     EXPECT_GT(two, 0u);
     EXPECT_GT(nan, 0u);
     EXPECT_NE(m.findField("U"), nullptr);
+    // --patches selects boundary patches by name: the four wall faces only, T everywhere.
+    core::SurfaceMesh walls = io::openSeries(dir.file("case.foam"), "wal.*")->load(0);
+    EXPECT_EQ(walls.triangleCount(), 8u);
+    ASSERT_NE(walls.findScalar("T"), nullptr);
+    for (float v : walls.findScalar("T")->values) EXPECT_EQ(v, 2.0f);
+    EXPECT_THROW(io::openSeries(dir.file("case.foam"), "nope"), ConfigError);
 }
 
 TEST(Colormaps, ParaViewJsonPresetIsSampled) {
