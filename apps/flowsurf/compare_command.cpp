@@ -4,7 +4,7 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "io/image_writer.h"
-#include "label_text.h"
+#include "methods/common/text.h"
 #include "methods/common/frame.h"
 #include "session/animated_surface.h"
 #include "progress.h"
@@ -36,13 +36,13 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
     const std::vector<std::string> names = splitMethods(methodList);
 
-    std::unique_ptr<core::StepProvider> steps = openInput(o.input);
+    std::unique_ptr<core::StepProvider> steps = openInput(o.input, o.patches);
     const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
 
     // Same camera path, frame count and seed for every method ([L] Fig. 1).
     const int label = std::max(24, o.size.height / 16), gap = 4;
-    RgbImage sheet;
+    methods::RgbImage sheet;
     sheet.width = int(names.size()) * o.size.width + int(names.size() - 1) * gap;
     sheet.height = o.size.height + label;
     sheet.pixels.assign(size_t(sheet.width) * sheet.height * 3, 255);
@@ -71,7 +71,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
         for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
         std::snprintf(text, sizeof text, "%s  %.1f ms/frame (%.0f fps)", upper.c_str(), ms, 1000.0 / ms);
         const uint8_t black[3] = {20, 20, 20};
-        drawText(sheet, text, x0 + 8, label * 3 / 4, label * 3 / 5, black);
+        methods::drawText(sheet, text, x0 + 8, label * 3 / 4, label * 3 / 5, black);
         if (!o.quiet) std::fprintf(stderr, "\nflowsurf: %s %.2f ms/frame\n", names[m].c_str(), ms);
     }
     progress.finish();

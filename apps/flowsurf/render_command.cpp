@@ -41,7 +41,7 @@ int runRender(const RenderOptions& o) {
     const OutputKind kind = outputKind(o.output);
 
     // Data: load and check the field before any GL work.
-    std::unique_ptr<core::StepProvider> steps = openInput(o.input);
+    std::unique_ptr<core::StepProvider> steps = openInput(o.input, o.patches);
     const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
     AnimatedSurface surface(o, *steps);
@@ -55,21 +55,30 @@ int runRender(const RenderOptions& o) {
                      surface.field().c_str(), surface.at(0).triangleCount(), method->name(),
                      surface.unsteady() ? ", time series" : "");
 
+    // Movies start converged: --warmup frames of frame 0's data and camera are advected
+    // before the first written frame (the clock, which drives the noise, keeps counting).
+    const int warmup = kind == OutputKind::Png ? 0 : warmupFrames(o);
     // --frames advection frames, then the output frame.
     const int total = o.frames + 1;
-    ProgressBar progress("render", total, !o.quiet);
+    ProgressBar progress("render", warmup + total, !o.quiet);
     const auto start = std::chrono::steady_clock::now();
+    for (int w = 0; w < warmup; ++w) {
+        const methods::SurfaceGpu& frameSurface = surface.at(0);
+        method->renderFrame({&frameSurface, cameras.at(0), uint32_t(w),
+                             method->usesTimeLevels() ? surface.levelsAt(0) : nullptr});
+        progress.update(w + 1, "warm-up");
+    }
     // One PNG of a history-free method (the hybrid) needs only its last frame.
     const int first = kind == OutputKind::Png && method->historyFree() ? total - 1 : 0;
     for (int k = first; k < total; ++k) {
         const methods::SurfaceGpu& frameSurface = surface.at(k);
-        method->renderFrame({&frameSurface, cameras.at(k), uint32_t(k),
+        method->renderFrame({&frameSurface, cameras.at(k), uint32_t(warmup + k),
                              method->usesTimeLevels() ? surface.levelsAt(k) : nullptr});
         if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
         if (kind == OutputKind::PngSequence)
             io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3,
                              gl::readRgb8TopDown(method->composite()));
-        progress.update(k + 1, surface.unsteady() ? "t = " + std::to_string(surface.timeAt(k)) : "");
+        progress.update(warmup + k + 1, surface.unsteady() ? "t = " + std::to_string(surface.timeAt(k)) : "");
     }
     progress.finish();
     if (o.verbose) {

@@ -1,19 +1,22 @@
 // Overlay, [L] eq. 10: F = beta F_a + (1 - beta) F_s with F_s = colour map x lighting;
 // or one of the colour schemes of [W Fig. 6]. Plus texture clipping ([L] Fig. 10:
-// opacity 1 over the background) and the optional velocity mask (texture contrast follows
-// speed). Display only: never fed back.
+// opacity 1 over the background), the optional texture mask (contrast follows speed or
+// any scalar, [L] Fig. 13) and the colour legend on top. Display only: never fed back.
 layout(binding = 0) uniform sampler2D uFlow;       // F_a or the LIC result I, channel r
 layout(binding = 1) uniform sampler2D uDepth;      // 1 = background
-layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: speed
+layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: colour value 0..1 (NaN: none)
 layout(binding = 3) uniform sampler2D uColormap;   // 256 x 1 RGBA8
+layout(binding = 4) uniform sampler2D uMaskValue;  // texture mask value 0..1
+layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
 uniform int uScheme;          // 0 blend (eq. 10), 1 gray, 2 gray-lit, 3 hue-lit, 4 cool/warm
 uniform float uBeta;          // texture strength
 uniform float uContrast;      // display gain of the texture about its mean
 uniform float uFlowMean;      // mean of the texture (the noise mean)
-uniform float uSpeedMax;      // speed mapped to the top of the colour map
 uniform int uUseColormap;     // 0: white surface
 uniform int uLighting;
-uniform int uVelocityMask;
+uniform int uMask;            // texture contrast x sqrt(mask value)
+uniform int uLegend;
+uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 uniform vec3 uBackground;
 out vec4 outColor;
 
@@ -21,17 +24,11 @@ out vec4 outColor;
 const vec3 kLight = vec3(-0.35, 0.5, 0.8);
 float diffuse(vec3 n) { return abs(dot(n, normalize(kLight))); }
 
-void main() {
-    ivec2 px = ivec2(gl_FragCoord.xy);
-    if (texelFetch(uDepth, px, 0).r >= 1.0) {  // texture clipping
-        outColor = vec4(uBackground, 1.0);
-        return;
-    }
+vec3 surfaceColor(ivec2 px) {
     vec4 shade = texelFetch(uShade, px, 0);
     vec3 n = normalize(shade.xyz);
-    float speed01 = clamp(shade.w / max(uSpeedMax, 1e-30), 0.0, 1.0);
     float fa = texelFetch(uFlow, px, 0).r;
-    float gain = uContrast * (uVelocityMask != 0 ? sqrt(speed01) : 1.0);
+    float gain = uContrast * (uMask != 0 ? sqrt(clamp(texelFetch(uMaskValue, px, 0).r, 0.0, 1.0)) : 1.0);
     fa = clamp(uFlowMean + (fa - uFlowMean) * gain, 0.0, 1.0);
     float lit = uLighting != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
     vec3 color;
@@ -47,11 +44,26 @@ void main() {
         vec3 gooch = mix(vec3(0.25, 0.35, 0.85), vec3(0.95, 0.75, 0.35), k);
         color = vec3(fa) * gooch * 1.2;
     } else {
-        vec3 fs = uUseColormap != 0
-                      ? texture(uColormap, vec2(speed01 * (255.0 / 256.0) + 0.5 / 256.0, 0.5)).rgb
-                      : vec3(1.0);
+        float value01 = clamp(shade.w, 0.0, 1.0);
+        vec3 fs = uUseColormap == 0 ? vec3(1.0)
+                  : isnan(shade.w)  ? vec3(0.5)  // no value here (array missing on this patch)
+                                    : texture(uColormap, vec2(value01 * (255.0 / 256.0) + 0.5 / 256.0, 0.5)).rgb;
         color = uBeta * vec3(fa) + (1.0 - uBeta) * fs * lit;
         if (uLighting != 0) color = mix(color, color * lit, 0.5);  // the shape reads through the texture
     }
-    outColor = vec4(clamp(color, 0.0, 1.0), 1.0);
+    return clamp(color, 0.0, 1.0);
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec3 color = texelFetch(uDepth, px, 0).r >= 1.0 ? uBackground  // texture clipping
+                                                   : surfaceColor(px);
+    if (uLegend != 0) {
+        ivec2 q = px - uLegendOrigin;
+        if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uLegendImage, 0)))) {
+            vec4 l = texelFetch(uLegendImage, q, 0);
+            color = mix(color, l.rgb, l.a);
+        }
+    }
+    outColor = vec4(color, 1.0);
 }

@@ -5,16 +5,19 @@
 in vec3 vPosObj;
 in vec3 vVelObj;
 in vec3 vNormalEye;
-in float vSpeed;
+in float vColor;
+in float vMask;
 in float vLayerDepth;
 layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity, w: layer depth
-layout(location = 1) out vec4 outShade;   // xyz: eye-space normal, w: true speed (overlay)
+layout(location = 1) out vec4 outShade;   // xyz: eye-space normal, w: colour value (overlay)
+layout(location = 2) out float outMask;   // texture mask value (overlay)
 #ifdef WITH_POSITION
-layout(location = 2) out vec4 outPosObj;  // xyz: P-space position
+layout(location = 3) out vec4 outPosObj;  // xyz: P-space position
 #endif
 void main() {
     outVelObj = vec4(vVelObj, vLayerDepth);
-    outShade = vec4(normalize(vNormalEye), vSpeed);
+    outShade = vec4(normalize(vNormalEye), vColor);
+    outMask = vMask;
 #ifdef WITH_POSITION
     outPosObj = vec4(vPosObj, 1.0);
 #endif

@@ -4,20 +4,23 @@
 layout(location = 0) in vec3 aPosObj;
 layout(location = 1) in vec3 aNormalObj;
 layout(location = 2) in vec3 aVelObj;
-layout(location = 3) in float aSpeed;  // true speed, for the colour map
+layout(location = 3) in float aColor;  // colour value, 0..1 over the colour range (NaN: none)
+layout(location = 4) in float aMask;   // texture mask value, 0..1
 uniform mat4 uViewProj;
 uniform mat4 uView;
 uniform vec4 uLayerDepthRow;  // methods::layerDepthRow
 out vec3 vPosObj;
 out vec3 vVelObj;
 out vec3 vNormalEye;
-out float vSpeed;
+out float vColor;
+out float vMask;
 out float vLayerDepth;  // 1 + eye depth as a fraction of the depth range
 void main() {
     vPosObj = aPosObj;
     vVelObj = aVelObj;
     vNormalEye = mat3(uView) * aNormalObj;
-    vSpeed = aSpeed;
+    vColor = aColor;
+    vMask = aMask;
     vLayerDepth = dot(uLayerDepthRow, vec4(aPosObj, 1.0));
     gl_Position = uViewProj * vec4(aPosObj, 1.0);
 }

@@ -63,24 +63,29 @@ vec4 velocityImage(vec2 s, float t) {
 // Velocity at the projection of p; false where p is off the visible surface: its depth
 // differs from the visible layer's there (the image's w; 0 on the background, and a blend
 // of both sides within a pixel of an edge).
-bool velocityAt(vec3 p, float t, out vec3 v) {
+// A line field (principal directions: no sign): each sample is turned to agree with the
+// particle's previous step `ref`, so a streamline never folds back at a sign flip.
+uniform int uLineField;
+bool velocityAt(vec3 p, float t, vec3 ref, out vec3 v) {
     vec2 s = project(p);
     if (any(lessThan(s, vec2(0.0))) || any(greaterThan(s, vec2(1.0)))) return false;
     vec4 vel = velocityImage(s, t);
     if (abs(dot(uLayerDepthRow, vec4(p, 1.0)) - vel.w) > uDepthTolerance) return false;
     v = vel.xyz;
+    if (uLineField != 0 && dot(v, ref) < 0.0) v = -v;
     return true;
 }
 // One step of length h from data time t to t + dt (a pathline through unsteady data;
 // dt = 0 for steady flow).
-bool stepParticle(inout vec3 p, float h, float t, float dt) {
+bool stepParticle(inout vec3 p, float h, float t, float dt, inout vec3 ref) {
     vec3 k1, k2, k3, k4;
-    if (!velocityAt(p, t, k1)) return false;
+    if (!velocityAt(p, t, ref, k1)) return false;
+    ref = k1;
     if (uIntegrator == 0) { p += h * k1; return true; }
-    if (!velocityAt(p + 0.5 * h * k1, t + 0.5 * dt, k2)) return false;
+    if (!velocityAt(p + 0.5 * h * k1, t + 0.5 * dt, ref, k2)) return false;
     if (uIntegrator == 1) { p += h * k2; return true; }
-    if (!velocityAt(p + 0.5 * h * k2, t + 0.5 * dt, k3)) return false;
-    if (!velocityAt(p + h * k3, t + dt, k4)) return false;
+    if (!velocityAt(p + 0.5 * h * k2, t + 0.5 * dt, ref, k3)) return false;
+    if (!velocityAt(p + h * k3, t + dt, ref, k4)) return false;
     p += h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
     return true;
 }
@@ -121,9 +126,10 @@ void main() {
 #endif
     for (int dir = -1; dir <= 1; dir += 2) {  // backward and forward halves
         vec3 p = seed.xyz;
+        vec3 ref = velocityImage(project(p), 0.0).xyz;  // both halves start along the seed's vector
         for (int i = 1; i <= uHalfLength; ++i) {
             // Step i runs from data time (i - 1) dt to i dt, backward in time for dir < 0.
-            if (!stepParticle(p, float(dir) * h, float(dir * (i - 1)) * dt, float(dir) * dt)) break;
+            if (!stepParticle(p, float(dir) * h, float(dir * (i - 1)) * dt, float(dir) * dt, ref)) break;
             float k = kernelWeight(uKernel, float(i) / float(uHalfLength + 1));
             lic += k * noiseAt(p, scales, f);
             weight += k;

@@ -6,17 +6,20 @@
 layout(location = 0) in vec3 aPosObj;
 layout(location = 1) in vec3 aNormalObj;
 layout(location = 2) in vec3 aVelObj;
-layout(location = 3) in float aSpeed;
+layout(location = 3) in float aColor;
+layout(location = 4) in float aMask;
 uniform mat4 uViewProj;
 uniform mat4 uPrevViewProj;
 uniform mat4 uView;
 uniform float uDt;
 noperspective out vec2 vTexcoord;
 out vec3 vNormalEye;
-out float vSpeed;
+out float vColor;
+out float vMask;
 void main() {
     vTexcoord = pathlineTexcoord(aPosObj, aVelObj, uDt, uPrevViewProj);
     vNormalEye = mat3(uView) * aNormalObj;
-    vSpeed = aSpeed;
+    vColor = aColor;
+    vMask = aMask;
     gl_Position = uViewProj * vec4(aPosObj, 1.0);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace flowsurf::detail {
@@ -28,6 +29,55 @@ const VectorField* SurfaceMesh::defaultField() const {
         for (const auto& v : f.values)
             if (v != glm::vec3(0.0f)) return &f;
     return fields.empty() ? nullptr : &fields.front();
+}
+
+const ScalarField* SurfaceMesh::findScalar(const std::string& name) const {
+    for (const auto& f : scalars)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+
+ScalarSpec ScalarSpec::parse(const std::string& text) {
+    ScalarSpec s;
+    const auto colon = text.rfind(':');
+    s.array = text;
+    if (colon != std::string::npos) {
+        const std::string c = text.substr(colon + 1);
+        static const char* kNames[] = {"x", "y", "z", "mag"};
+        int found = -2;
+        for (int i = 0; i < 4; ++i)
+            if (c == kNames[i]) found = i == 3 ? -1 : i;
+        if (found == -2) throw ConfigError("'" + text + "': the component after ':' must be x, y, z or mag");
+        s.array = text.substr(0, colon);
+        s.component = found;
+    }
+    if (s.array.empty()) throw ConfigError("'" + text + "': no array name");
+    return s;
+}
+
+std::string ScalarSpec::text() const {
+    static const char* kNames[] = {"x", "y", "z"};
+    return component < 0 ? array : array + ":" + kNames[component];
+}
+
+bool evalScalar(const SurfaceMesh& mesh, const ScalarSpec& spec, std::vector<float>& out) {
+    if (const ScalarField* s = spec.component < 0 ? mesh.findScalar(spec.array) : nullptr) {
+        out = s->values;
+        return true;
+    }
+    const VectorField* v = mesh.findField(spec.array);
+    if (!v) return false;
+    out.resize(v->values.size());
+    for (size_t i = 0; i < out.size(); ++i)
+        out[i] = spec.component < 0 ? glm::length(v->values[i]) : v->values[i][spec.component];
+    return true;
+}
+
+std::pair<float, float> finiteRange(const std::vector<float>& values) {
+    float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
+    for (float v : values)
+        if (std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
+    return {lo, hi};
 }
 
 Bounds SurfaceMesh::bounds() const {
@@ -101,6 +151,12 @@ size_t validateMesh(SurfaceMesh& mesh, const std::string& where) {
                 throw FormatError(s.str());
             }
     }
+    for (const auto& f : mesh.scalars)
+        if (f.values.size() != n) {
+            std::ostringstream s;
+            s << where << ": scalar '" << f.name << "' has " << f.values.size() << " values for " << n << " points";
+            throw FormatError(s.str());
+        }
     std::vector<glm::uvec3> kept;
     kept.reserve(mesh.triangles.size());
     size_t degenerate = 0;

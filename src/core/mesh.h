@@ -27,6 +27,13 @@ struct VectorField {
     std::vector<glm::vec3> values;  // one per vertex, object (P-) space units
 };
 
+// One named per-vertex scalar (pressure, a converted cell array...). NaN marks "no value
+// here" (a field missing on some patches): shown in the NaN colour, never advected.
+struct ScalarField {
+    std::string name;
+    std::vector<float> values;  // one per vertex
+};
+
 // The surface at one time step. Positions and triangles may differ between steps
 // (dynamic meshes, changing topology [L Fig. 11]).
 struct SurfaceMesh {
@@ -34,6 +41,7 @@ struct SurfaceMesh {
     std::vector<glm::vec3> normals;     // unit, one per vertex
     std::vector<glm::uvec3> triangles;  // indices into positions
     std::vector<VectorField> fields;    // per-vertex vectors, same count as positions
+    std::vector<ScalarField> scalars;   // per-vertex scalars, same count as positions
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return triangles.size(); }
@@ -42,6 +50,7 @@ struct SurfaceMesh {
     // wall result's velocity U is zero on the wall; its wall shear stress is not), else the
     // first; null without fields.
     const VectorField* defaultField() const;
+    const ScalarField* findScalar(const std::string& name) const;
     Bounds bounds() const;
 };
 
@@ -56,6 +65,19 @@ struct Dataset {
     std::vector<TimeStep> steps;     // sorted by time, at least one
     Bounds bounds() const;           // over all steps
 };
+
+// A scalar to colour or mask by: "ARRAY" (a scalar, or a vector's magnitude) or
+// "ARRAY:x|y|z|mag" (one component of a vector, or its magnitude).
+struct ScalarSpec {
+    std::string array;
+    int component = -1;  // 0..2, or -1: the scalar itself / the vector's magnitude
+    static ScalarSpec parse(const std::string& text);  // throws ConfigError
+    std::string text() const;
+};
+// Per-vertex values of `spec` on `mesh`; false (out untouched) when the array is absent.
+bool evalScalar(const SurfaceMesh& mesh, const ScalarSpec& spec, std::vector<float>& out);
+// Finite minimum and maximum of `values` (lo > hi when none is finite).
+std::pair<float, float> finiteRange(const std::vector<float>& values);
 
 // Computes area-weighted vertex normals (used when a file carries none).
 std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,

@@ -54,6 +54,12 @@ SurfaceMesh interpolate(const SurfaceMesh& a, const SurfaceMesh& b, double w) {
             for (size_t i = 0; i < fa.values.size(); ++i) f.values[i] = glm::mix(fa.values[i], fb->values[i], wf);
             m.fields.push_back(std::move(f));
         }
+    for (const auto& sa : a.scalars)
+        if (const ScalarField* sb = b.findScalar(sa.name)) {
+            ScalarField f{sa.name, std::vector<float>(sa.values.size())};
+            for (size_t i = 0; i < sa.values.size(); ++i) f.values[i] = sa.values[i] + wf * (sb->values[i] - sa.values[i]);
+            m.scalars.push_back(std::move(f));
+        }
     return m;
 }
 

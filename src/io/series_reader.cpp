@@ -20,7 +20,8 @@ namespace {
 // One file with one or more steps, each read when asked for.
 class FileSteps final : public core::StepProvider {
 public:
-    explicit FileSteps(const std::string& path) : path_(path), source_(detail::openSource(path, trap_)) {}
+    FileSteps(const std::string& path, const std::string& patches)
+        : path_(path), source_(detail::openSource(path, trap_, patches)) {}
     size_t count() const override { return source_->stepCount(); }
     double time(size_t i) const override { return source_->times().empty() ? 0.0 : source_->times()[i]; }
     core::SurfaceMesh load(size_t i) override {
@@ -79,8 +80,8 @@ bool numberAt(const std::string& globPattern, const std::string& file, double& v
 
 bool isSeriesPattern(const std::string& input) { return input.find_first_of("%*?") != std::string::npos; }
 
-std::unique_ptr<core::StepProvider> openSeries(const std::string& input) {
-    if (!isSeriesPattern(input)) return std::make_unique<FileSteps>(input);
+std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const std::string& patches) {
+    if (!isSeriesPattern(input)) return std::make_unique<FileSteps>(input, patches);
     const std::string pattern = toGlob(input);
     glob_t g{};
     int rc = glob(pattern.c_str(), 0, nullptr, &g);

@@ -17,6 +17,7 @@ bool isSeriesPattern(const std::string& input);
 // Opens the metadata (file list or time values) now; steps load on demand. A series
 // file's time is the number in its name where the pattern varies (else its index).
 // Throws IoError (no file matches, unreadable) or FormatError.
-std::unique_ptr<core::StepProvider> openSeries(const std::string& input);
+// `patches`: OpenFOAM boundary patches to read (regular expression; empty: all).
+std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const std::string& patches = "");
 
 }  // namespace flowsurf::io

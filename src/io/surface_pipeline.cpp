@@ -13,11 +13,17 @@
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkInformation.h>
+#include <vtkInformationStringKey.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
 
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <set>
 #include <limits>
 #include <vector>
 
@@ -26,8 +32,12 @@ namespace flowsurf::io::detail {
 // --- leaves -------------------------------------------------------------------
 
 void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit) {
+    forEachNamedLeaf(data, [&](vtkDataSet* ds, const std::string&) { visit(ds); });
+}
+
+void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*, const std::string&)>& visit) {
     if (auto* ds = vtkDataSet::SafeDownCast(data)) {
-        if (ds->GetNumberOfPoints() > 0) visit(ds);
+        if (ds->GetNumberOfPoints() > 0) visit(ds, "");
         return;
     }
     auto* composite = vtkCompositeDataSet::SafeDownCast(data);
@@ -36,7 +46,10 @@ void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& vi
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
         auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
-        if (ds && ds->GetNumberOfPoints() > 0) visit(ds);
+        std::string name;
+        if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+            name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
+        if (ds && ds->GetNumberOfPoints() > 0) visit(ds, name.empty() ? "block " + std::to_string(it->GetCurrentFlatIndex()) : name);
     }
 }
 
@@ -55,10 +68,58 @@ vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, VtkMessageTrap& trap,
     return filter->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> mergeBlocks(const std::vector<vtkSmartPointer<vtkPolyData>>& parts,
-                                         VtkMessageTrap& trap, const std::string& where) {
+// One warning per message and process: a series would repeat it for every step.
+void warnOnce(const std::string& message) {
+    static std::mutex lock;
+    static std::set<std::string> said;
+    std::lock_guard<std::mutex> guard(lock);
+    if (said.insert(message).second) std::fprintf(stderr, "flowsurf: warning: %s\n", message.c_str());
+}
+
+// VTK's append keeps only arrays present in every block; a CFD field written on some
+// patches only would vanish. Pads each block lacking an array that another block has
+// (same point/cell association, components and type): scalars with NaN (drawn in the
+// NaN colour), vectors with zero (no advection there), and names the patches.
+void padPartialArrays(std::vector<vtkSmartPointer<vtkPolyData>>& parts, const std::vector<std::string>& names,
+                      const std::string& where) {
+    for (int assoc = 0; assoc < 2; ++assoc) {
+        auto dataOf = [assoc](vtkPolyData* p) -> vtkFieldData* {
+            return assoc == 0 ? static_cast<vtkFieldData*>(p->GetPointData()) : p->GetCellData();
+        };
+        std::map<std::string, vtkDataArray*> models;
+        for (auto& p : parts)
+            for (int i = 0; i < dataOf(p)->GetNumberOfArrays(); ++i)
+                if (vtkDataArray* a = dataOf(p)->GetArray(i); a && a->GetName()) models.try_emplace(a->GetName(), a);
+        for (const auto& [name, model] : models) {
+            std::string missing;
+            for (size_t b = 0; b < parts.size(); ++b) {
+                vtkFieldData* fd = dataOf(parts[b]);
+                vtkDataArray* have = fd->GetArray(name.c_str());
+                if (have && have->GetNumberOfComponents() == model->GetNumberOfComponents()) continue;
+                if (have) fd->RemoveArray(name.c_str());
+                const vtkIdType n = assoc == 0 ? parts[b]->GetNumberOfPoints() : parts[b]->GetNumberOfCells();
+                auto pad = vtkSmartPointer<vtkDataArray>::Take(model->NewInstance());
+                pad->SetName(name.c_str());
+                pad->SetNumberOfComponents(model->GetNumberOfComponents());
+                pad->SetNumberOfTuples(n);
+                pad->Fill(model->GetNumberOfComponents() == 1 ? std::numeric_limits<double>::quiet_NaN() : 0.0);
+                fd->AddArray(pad);
+                missing += (missing.empty() ? "" : ", ") + names[b];
+            }
+            if (!missing.empty())
+                warnOnce(where + ": " + (assoc == 0 ? "point" : "cell") + " array '" + name + "' is missing on " +
+                         missing + "; kept, with " +
+                         (model->GetNumberOfComponents() == 1 ? "NaN (no colour)" : "zero vectors") + " there");
+        }
+    }
+}
+
+vtkSmartPointer<vtkPolyData> mergeBlocks(std::vector<vtkSmartPointer<vtkPolyData>>& parts,
+                                         const std::vector<std::string>& names, VtkMessageTrap& trap,
+                                         const std::string& where) {
     if (parts.empty()) return vtkSmartPointer<vtkPolyData>::New();
     if (parts.size() == 1) return parts[0];
+    padPartialArrays(parts, names, where);
     // Only arrays present in every block survive the append (VTK's rule).
     auto append = vtkSmartPointer<vtkAppendPolyData>::New();
     trap.watch(append);
@@ -116,12 +177,17 @@ vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap&
     trap.clear();
     // (1) check, (2) surface per block
     std::vector<vtkSmartPointer<vtkPolyData>> parts;
-    forEachLeaf(data, [&](vtkDataSet* ds) {
+    std::vector<std::string> names;
+    forEachNamedLeaf(data, [&](vtkDataSet* ds, const std::string& name) {
         checkDataSet(ds, where);
-        parts.push_back(surfaceOf(ds, trap, where));
+        // A shallow copy: padding partial arrays must not touch the reader's output.
+        auto part = vtkSmartPointer<vtkPolyData>::New();
+        part->ShallowCopy(surfaceOf(ds, trap, where));
+        parts.push_back(part);
+        names.push_back(name);
     });
-    // (3) merge
-    vtkSmartPointer<vtkPolyData> merged = mergeBlocks(parts, trap, where);
+    // (3) merge, arrays missing on some blocks padded
+    vtkSmartPointer<vtkPolyData> merged = mergeBlocks(parts, names, trap, where);
     const std::string normals = normalsName(merged);
     // (4) cell data → point data, (5) triangles only
     vtkSmartPointer<vtkPolyData> surface = triangulate(cellToPoint(merged, trap, where), trap, where);
@@ -185,9 +251,15 @@ core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where) 
     if (normals && normals->GetNumberOfComponents() == 3) mesh.normals = usableNormals(normals);
     for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
         vtkDataArray* a = pd->GetArray(i);
-        if (!a || a == normals || a->GetNumberOfComponents() != 3) continue;
+        if (!a || a == normals) continue;
         std::string name = a->GetName() ? a->GetName() : "array" + std::to_string(i);
-        mesh.fields.push_back({name, copyVectors(a)});
+        if (a->GetNumberOfComponents() == 3) {
+            mesh.fields.push_back({name, copyVectors(a)});
+        } else if (a->GetNumberOfComponents() == 1) {
+            core::ScalarField f{name, std::vector<float>(static_cast<size_t>(a->GetNumberOfTuples()))};
+            for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k) f.values[size_t(k)] = float(a->GetComponent(k, 0));
+            mesh.scalars.push_back(std::move(f));
+        }
     }
     return mesh;
 }

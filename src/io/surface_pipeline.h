@@ -1,6 +1,6 @@
 // flowsurf — from a reader's output to a triangle surface with point vector fields
 // (private to src/io). Stages, in order:
-//   check data sets → surface per block → merge blocks → cell data to point data →
+//   check data sets → surface per block → merge blocks (arrays on some blocks padded) → cell data to point data →
 //   triangulate → copy into core::SurfaceMesh → core::validateMesh.
 #pragma once
 
@@ -20,13 +20,16 @@ namespace flowsurf::io::detail {
 
 // Calls `visit` for every non-empty data set: `data` itself or the leaves of a composite.
 void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit);
+// The same with each block's name (an OpenFOAM patch name; "block N" when unnamed).
+void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*, const std::string&)>& visit);
 
 // Stages 1–5. Point arrays win over converted cell arrays of the same name.
 vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
                                             const std::string& where);
 
 // Stage 6: positions, triangles, normals ("Normals" or the active normals, dropped if
-// any is zero or non-finite), and every other 3-component point array as a field.
+// any is zero or non-finite), every other 3-component point array as a field and every
+// 1-component point array (converted cell arrays included) as a scalar.
 core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where);
 
 // All stages, validation included.

@@ -32,7 +32,9 @@ public:
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
 // empty file, header the reader refuses). Every reader is watched by `trap`.
-std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap);
+// `patches`: OpenFOAM boundary patches to read, a regular expression on the patch name
+// (empty: all).
+std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const std::string& patches = "");
 
 // "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
 // just the path for a single step.

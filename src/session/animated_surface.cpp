@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace flowsurf::session {
 
@@ -23,21 +24,45 @@ core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<doub
     return m;
 }
 
-AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& steps) : options_(o), provider_(steps) {
+AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& steps)
+    : options_(o),
+      common_(o.params.common),
+      field_(selectSeriesField(steps, o.field)),
+      prepared_(steps, field_, core::DerivedFieldOptions{o.curvatureRadius}),
+      provider_(prepared_) {
     const bool series = steps.count() > 1 && !o.timeStepGiven;
     if (!series) {
         if (o.timeStep >= steps.count())
             throw ConfigError("--time-step " + std::to_string(o.timeStep) + ": " + steps.label(0) + " has " +
                               std::to_string(steps.count()) + " time step(s)");
-        core::SurfaceMesh mesh = steps.load(o.timeStep);
-        field_ = methods::selectField(mesh, o.field, steps.label(o.timeStep));
+        core::SurfaceMesh mesh = provider_.load(o.timeStep);
         upload(mesh, steps.label(o.timeStep));
+        common_.colorRange = surface_->colorRange();
         return;
     }
-    stream_ = std::make_unique<core::StepStream>(steps, 3, true);
+    resolveColorRange();
+    stream_ = std::make_unique<core::StepStream>(provider_, 3, true);
     mapping_ = makeTimeMapping(o, stream_->times());
-    field_ = methods::selectField(stream_->meshAt(mapping_.at(0)), o.field, steps.label(0));
     levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
+}
+
+void AnimatedSurface::resolveColorRange() {
+    if (common_.colorRangeAuto || common_.colorRange.x <= common_.colorRange.y) return;
+    // One pass over the series, a step at a time (memory stays at one step), so a movie's
+    // colours do not pump.
+    glm::vec2 range(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max());
+    // A step that cannot be read is skipped here: the frame that needs it reports it, after
+    // the frames before it were written.
+    for (size_t i = 0; i < provider_.count(); ++i) {
+        glm::vec2 r(1.0f, 0.0f);
+        try {
+            r = methods::dataColorRange(provider_.load(i), field_, common_);
+        } catch (const IoError&) {
+        } catch (const FormatError&) {
+        }
+        if (r.x <= r.y) range = glm::vec2(std::min(range.x, r.x), std::max(range.y, r.y));
+    }
+    if (range.x <= range.y) common_.colorRange = range;
 }
 
 const std::vector<double>& AnimatedSurface::times() const {
@@ -56,7 +81,7 @@ const methods::TimeLevels* AnimatedSurface::levelsAtTime(double t, double perFra
 void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& where) {
     if (!mesh.findField(field_))
         throw FieldError(where + ": no vector field '" + field_ + "' in this step");
-    surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, options_.params.common,
+    surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, common_,
                                                      options_.params.ibfvs.edgeMask);
 }
 
@@ -69,7 +94,7 @@ const methods::SurfaceGpu& AnimatedSurface::atTime(double t) {
         const std::string where = provider_.label(topology);
         // Same topology as the last upload: rewrite the vertices in place.
         if (surface_ && topology == uploadedTopology_ && mesh.findField(field_) &&
-            surface_->updateVertices(mesh, field_, options_.params.common))
+            surface_->updateVertices(mesh, field_, common_))
             return *surface_;
         upload(mesh, where);
         uploadedTopology_ = topology;

@@ -7,6 +7,7 @@
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
 #include "session/options.h"
+#include "session/prepared_steps.h"
 
 #include <memory>
 
@@ -31,6 +32,8 @@ public:
     bool unsteady() const { return stream_ != nullptr; }
     double timeAt(int frame) const { return mapping_.at(frame); }
     const core::TimeMapping& mapping() const { return mapping_; }
+    // The values at the ends of the colour map (fixed over the animation unless auto).
+    glm::vec2 colorRange() const { return common_.colorRange; }
     // The data times of the steps (empty for steady data).
     const std::vector<double>& times() const;
     const std::string& field() const { return field_; }
@@ -39,8 +42,13 @@ public:
 private:
     void upload(const core::SurfaceMesh& mesh, const std::string& where);
 
+    // The colour range the options leave to the data: over every step of a series.
+    void resolveColorRange();
+
     const RenderOptions& options_;
+    methods::CommonParams common_;  // the options' with the colour range resolved
     std::string field_;
+    PreparedSteps prepared_;
     core::StepProvider& provider_;
     std::unique_ptr<core::StepStream> stream_;
     core::TimeMapping mapping_;

@@ -3,6 +3,7 @@
 #include "session/options.h"
 
 #include "core/errors.h"
+#include "session/colormap_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -137,6 +138,22 @@ OptionSpec vec3(std::string name, std::string help, std::optional<glm::vec3> Ren
     return s;
 }
 
+// MIN:MAX with MIN < MAX.
+glm::vec2 parseRange(const std::string& v, const std::string& what) {
+    auto colon = v.find(':', v[0] == '-' ? 1 : 0);
+    while (colon != std::string::npos && colon > 0 && (v[colon - 1] == 'e' || v[colon - 1] == 'E'))
+        colon = v.find(':', colon + 1);
+    if (colon == std::string::npos) throw ConfigError(what + ": '" + v + "' is not MIN:MAX");
+    const glm::vec2 r(parseFloat(v.substr(0, colon), what), parseFloat(v.substr(colon + 1), what));
+    if (!(r.x < r.y)) throw ConfigError(what + ": '" + v + "': MIN must be less than MAX");
+    return r;
+}
+
+std::string rangeText(glm::vec2 r, bool automatic) {
+    if (automatic) return "auto";
+    return r.x <= r.y ? formatFloat(r.x) + ":" + formatFloat(r.y) : std::string();
+}
+
 #define FS_REF(expr) [](RenderOptions& o) -> auto& { return o.expr; }
 
 std::vector<OptionSpec> buildTable() {
@@ -163,6 +180,9 @@ std::vector<OptionSpec> buildTable() {
     add(text("flow-texture", gOut, "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture),
              OptionKind::Path));
     t.back().saved = false;
+    add(number("warmup", gOut, "Frames advected before the first written frame of an MP4 or PNG sequence and the "
+               "viewer's start (-1: enough to look converged, 3/alpha for ISA and IBFVS, 0 for the hybrid)",
+               &RenderOptions::warmup, -1, 100000));
     add(number("fps", gOut, "MP4 frame rate", &RenderOptions::fps, 1, 240));
     add(number("crf", gOut, "MP4 H.264 quality, 0 = lossless", &RenderOptions::crf, 0, 51));
     add(flag("quiet", gOut, "No progress bar or messages", FS_REF(quiet), false), "q");
@@ -171,7 +191,12 @@ std::vector<OptionSpec> buildTable() {
     // Data
     const std::string gData = "Data";
     add(text("field", gData, "Vector array to show (default: the first 3-component point array that is not zero "
-                             "everywhere)", FS_REF(field)));
+                             "everywhere in the series), or a derived field: curvature-max, curvature-min, "
+                             "gradient:ARRAY, down:x,y,z", FS_REF(field)));
+    add(number("curvature-radius", gData, "Derived curvature fields: average the curvature tensor over this "
+               "radius (object units; 0: one-ring estimate only)", &RenderOptions::curvatureRadius, 0, 1e30));
+    add(text("patches", gData, "OpenFOAM: read the boundary patches whose names match this regular expression "
+                               "(default: all)", FS_REF(patches)));
     {
         OptionSpec s{"time-step", "", gData, "Render only this time step (index), as steady data", OptionKind::Int, 0,
                      1e9, {}, true, nullptr, nullptr};
@@ -284,7 +309,62 @@ std::vector<OptionSpec> buildTable() {
     const std::string gLook = "Overlay";
     add(choice("overlay", gLook, "blend (eq. 10: texture + colour map x lighting); or [W Fig. 6]: gray, gray-lit, "
                "hue-lit, coolwarm", methods::kOverlayNames, FS_REF(params.common.overlay)));
-    add(choice("colormap", gLook, "Colour map of speed", methods::kColormapNames, FS_REF(params.common.colormap)));
+    add(choice("colormap", gLook, "Colour map (viridis, coolwarm, gray, turbo, jet, plasma, none)",
+               methods::kColormapNames, FS_REF(params.common.colormap)));
+    {
+        OptionSpec s{"colormap-file", "", gLook, "Colour map from a ParaView JSON preset file (RGBPoints); replaces "
+                     "--colormap", OptionKind::Path, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            o.params.common.colormapFile = v;
+            o.params.common.colormapTable = v.empty() ? std::vector<glm::vec3>{} : readParaViewColormap(v);
+        };
+        s.get = [](const RenderOptions& o) { return o.params.common.colormapFile; };
+        add(s);
+    }
+    {
+        OptionSpec s{"color-by", "", gLook, "Colour by ARRAY (a point or cell scalar, or a vector's magnitude) or "
+                     "ARRAY:x|y|z|mag (default: the shown field's speed)", OptionKind::Text, 0, 0, {}, true, nullptr,
+                     nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (!v.empty()) core::ScalarSpec::parse(v);
+            o.params.common.colorBy = v;
+        };
+        s.get = [](const RenderOptions& o) { return o.params.common.colorBy; };
+        add(s);
+    }
+    {
+        OptionSpec s{"color-range", "", gLook, "Values at the ends of the colour map: MIN:MAX, or auto (each frame's "
+                     "range) (default: the data range over all time steps)", OptionKind::Text, 0, 0, {}, true, nullptr,
+                     nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            o.params.common.colorRangeAuto = v == "auto";
+            o.params.common.colorRange = v.empty() || v == "auto" ? glm::vec2(1, 0) : parseRange(v, "--color-range");
+        };
+        s.get = [](const RenderOptions& o) { return rangeText(o.params.common.colorRange, o.params.common.colorRangeAuto); };
+        add(s);
+    }
+    add(flag("legend", gLook, "Draw a colour legend (scalar bar with title and ticks) into the image",
+             FS_REF(params.common.legend)));
+    add(text("title", gLook, "Legend title (default: the colour array's name)", FS_REF(params.common.title)));
+    {
+        OptionSpec s{"mask-by", "", gLook, "Texture contrast follows this scalar (ARRAY or ARRAY:x|y|z|mag), as "
+                     "--velocity-mask does speed ([L] Fig. 13)", OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (!v.empty()) core::ScalarSpec::parse(v);
+            o.params.common.maskBy = v;
+        };
+        s.get = [](const RenderOptions& o) { return o.params.common.maskBy; };
+        add(s);
+    }
+    {
+        OptionSpec s{"mask-range", "", gLook, "Values of --mask-by at zero and full contrast, MIN:MAX (default: each "
+                     "frame's range)", OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            o.params.common.maskRange = v.empty() ? glm::vec2(1, 0) : parseRange(v, "--mask-range");
+        };
+        s.get = [](const RenderOptions& o) { return rangeText(o.params.common.maskRange, false); };
+        add(s);
+    }
     add(onOff("lighting", gLook, "Diffuse lighting", FS_REF(params.common.lighting)));
     add(flag("velocity-mask", gLook, "Texture contrast follows speed [L ref 14]", FS_REF(params.common.velocityMask)));
     add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean", FS_REF(params.common.contrast), 0, 20));
@@ -306,6 +386,29 @@ std::vector<OptionSpec> buildTable() {
                &RenderOptions::ortho, 0, 1e30));
     add(number("orbit", gCam, "Camera turns this many degrees per frame about the up axis (dynamic case)",
                &RenderOptions::orbit, -180, 180));
+    {
+        OptionSpec s{"view", "", gCam, "View preset as ParaView's camera buttons: +x, -x, +y, -y, +z, -z (look along "
+                     "that direction) or iso (default: front, a little above and to the right)", OptionKind::Choice, 0,
+                     0, {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            static const char* kViews[] = {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"};
+            if (std::find(std::begin(kViews), std::end(kViews), v) == std::end(kViews))
+                throw ConfigError("--view: '" + v + "' is not one of +x, -x, +y, -y, +z, -z, iso");
+            o.view = v;
+        };
+        s.get = [](const RenderOptions& o) { return o.view; };
+        add(s);
+    }
+    {
+        OptionSpec s{"up-axis", "", gCam, "The data's up axis (many CFD cases are z-up): orients --view and the "
+                     "default view", OptionKind::Choice, 0, 0, {"x", "y", "z"}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (v != "x" && v != "y" && v != "z") throw ConfigError("--up-axis: '" + v + "' is not one of x, y, z");
+            o.upAxis = v[0] - 'x';
+        };
+        s.get = [](const RenderOptions& o) { return std::string(1, char('x' + o.upAxis)); };
+        add(s);
+    }
     add(text("camera-path", gCam, "Keyframed camera path (JSON); see README", FS_REF(cameraPath), OptionKind::Path));
     return t;
 }
@@ -334,6 +437,12 @@ void setOption(RenderOptions& o, const std::string& name, const std::string& val
 std::string defaultText(const OptionSpec& spec) {
     static const RenderOptions defaults;
     return spec.get(defaults);
+}
+
+int warmupFrames(const RenderOptions& o) {
+    if (o.warmup >= 0) return o.warmup;
+    if (o.method == "hybrid") return 0;  // each frame is a fresh LIC: nothing builds up
+    return int(std::ceil(3.0f / std::max(o.params.common.alpha, 1e-3f)));
 }
 
 void validateRenderOptions(const RenderOptions& o) {

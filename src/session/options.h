@@ -39,6 +39,13 @@ struct RenderOptions {
     bool quiet = false;
     bool verbose = false;
     bool listBuiltins = false;
+    // Frames advected before the first written frame of an MP4 or PNG sequence (and the
+    // viewer's start); -1: enough to look converged (3 / alpha for ISA/IBFVS, 0 hybrid).
+    int warmup = -1;
+    std::string view;                   // --view +x|-x|+y|-y|+z|-z|iso (empty: the default view)
+    int upAxis = 1;                     // --up-axis x|y|z: 0, 1, 2
+    float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
+    std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     methods::MethodParams params;
 };
 
@@ -69,6 +76,9 @@ const OptionSpec* findOption(const std::string& name);
 void setOption(RenderOptions& o, const std::string& name, const std::string& value);
 // The default of an option as text (from RenderOptions{}): empty when it has none.
 std::string defaultText(const OptionSpec& spec);
+
+// Warm-up frames for `o` (resolves -1 by method).
+int warmupFrames(const RenderOptions& o);
 
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.
 void validateRenderOptions(const RenderOptions& opt);

@@ -15,9 +15,9 @@ core::Dataset loadInput(const std::string& input) {
     return io::readDataset(input);
 }
 
-std::unique_ptr<core::StepProvider> openInput(const std::string& input) {
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches) {
     if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
-    return io::openSeries(input);
+    return io::openSeries(input, patches);
 }
 
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
@@ -27,19 +27,46 @@ const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
     return data.steps[step].mesh;
 }
 
+ViewFrame viewFrame(int upAxis) {
+    ViewFrame f;
+    f.up = glm::vec3(0.0f);
+    f.up[upAxis] = 1.0f;
+    f.right = glm::vec3(0.0f);
+    f.right[upAxis == 0 ? 1 : 0] = 1.0f;  // y-up: x; z-up: x; x-up: y
+    f.front = glm::cross(f.right, f.up);   // y-up: +z; z-up: -y; x-up: -z
+    return f;
+}
+
+glm::vec3 viewDirection(const std::string& view, int upAxis) {
+    const ViewFrame f = viewFrame(upAxis);
+    if (view.empty()) return glm::normalize(0.45f * f.right + 0.35f * f.up + f.front);
+    if (view == "iso") return glm::normalize(f.right + f.up + f.front);
+    glm::vec3 look(0.0f);  // the direction the camera looks along
+    look[view[1] - 'x'] = view[0] == '+' ? 1.0f : -1.0f;
+    return -look;
+}
+
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
-    // Default view: from the front, a little above and to the right; a flat data set (a
-    // slice) is seen straight along its thin axis.
-    glm::vec3 dir = glm::normalize(glm::vec3(0.45f, 0.35f, 1.0f));
+    // Default view: from the front, a little above and to the right (for the --up-axis);
+    // a flat data set (a slice) is seen straight along its thin axis; --view presets as
+    // ParaView's camera buttons.
+    glm::vec3 dir = viewDirection(o.view, o.upAxis);
     const glm::vec3 extent = bounds.hi - bounds.lo;
     const float largest = std::max({extent.x, extent.y, extent.z});
-    for (int a = 0; a < 3; ++a)
-        if (extent[a] <= 0.02f * largest) {
-            dir = glm::vec3(0.0f);
-            dir[a] = 1.0f;
-        }
+    if (o.view.empty())
+        for (int a = 0; a < 3; ++a)
+            if (extent[a] <= 0.02f * largest) {
+                dir = glm::vec3(0.0f);
+                dir[a] = 1.0f;
+            }
     if (o.eye) dir = *o.eye - (o.target ? *o.target : bounds.center());
     core::Camera cam = core::fitCamera(bounds, o.size, dir, o.fov);
+    if (!o.view.empty() || o.upAxis != 1) {
+        // Up is the data's up axis; seen along it, the front of the data faces down.
+        const ViewFrame f = viewFrame(o.upAxis);
+        const float along = glm::dot(glm::normalize(dir), f.up);
+        cam.up = std::abs(along) > 0.95f ? (along > 0 ? -f.front : f.front) : f.up;
+    }
     if (o.eye) cam.eye = *o.eye;
     if (o.target) cam.target = *o.target;
     if (o.up) cam.up = glm::normalize(*o.up);

@@ -15,10 +15,19 @@ namespace flowsurf::session {
 core::Dataset loadInput(const std::string& input);
 // The input as time steps loaded on demand: builtin:NAME, a file, or a file series
 // pattern (surf_%04d.vtp, surf_*.vtp).
-std::unique_ptr<core::StepProvider> openInput(const std::string& input);
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches = "");
 // The mesh of the requested step with its field selected; throws ConfigError/FieldError.
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.
+// The data's axes for --up-axis 0/1/2 (x/y/z): up, right, and front (toward the
+// default camera).
+struct ViewFrame {
+    glm::vec3 up, right, front;
+};
+ViewFrame viewFrame(int upAxis);
+// From the target toward the eye for a --view preset ("" = the default view).
+glm::vec3 viewDirection(const std::string& view, int upAxis);
+
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds);
 
 // The camera of every frame: fixed, orbiting (--orbit), or keyframed (--camera-path).

@@ -1,17 +1,37 @@
 #include "methods/common/overlay.h"
 
 #include "methods/common/colormap.h"
+#include "methods/common/legend.h"
+
+#include <algorithm>
 
 namespace flowsurf::methods {
 
 Overlay::Overlay(const CommonParams& params)
     : params_(params),
       program_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}}),
-      colormap_(makeColormapTexture(params.colormap)),
+      colormap_(makeColormapTexture(params)),
       emptyVao_(gl::VertexArray::create()) {}
 
+void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) const {
+    const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
+    if (legend_.id() && surface.colorRange() == legendRange_ && title == legendTitle_) return;
+    RgbImage img = makeLegendImage(params_, surface.colorRange(), title, height);
+    // GL rows run bottom to top.
+    std::vector<uint8_t> flipped(img.pixels.size());
+    const size_t row = size_t(img.width) * 4;
+    for (int y = 0; y < img.height; ++y)
+        std::copy_n(&img.pixels[size_t(img.height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+    legend_ = gl::Texture2D(GL_RGBA8, img.width, img.height, GL_NEAREST);
+    glTextureSubImage2D(legend_.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    legendOrigin_ = legendOrigin(img, width, height);
+    legendRange_ = surface.colorRange();
+    legendTitle_ = title;
+}
+
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-                    const gl::Framebuffer& target, float speedMax) const {
+                    const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const {
+    if (params_.legend) updateLegend(surface, flow.width(), flow.height());
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, flow.width(), flow.height());
     glDisable(GL_DEPTH_TEST);
@@ -21,15 +41,18 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glUniform1f(program_.uniform("uBeta"), params_.beta);
     glUniform1f(program_.uniform("uContrast"), params_.contrast);
     glUniform1f(program_.uniform("uFlowMean"), 0.5f);  // mean of both noise profiles
-    glUniform1f(program_.uniform("uSpeedMax"), speedMax);
-    glUniform1i(program_.uniform("uUseColormap"), params_.colormap != Colormap::None);
+    glUniform1i(program_.uniform("uUseColormap"), params_.colormap != Colormap::None || !params_.colormapTable.empty());
     glUniform1i(program_.uniform("uLighting"), params_.lighting);
-    glUniform1i(program_.uniform("uVelocityMask"), params_.velocityMask);
+    glUniform1i(program_.uniform("uMask"), params_.velocityMask || !params_.maskBy.empty());
     glUniform3fv(program_.uniform("uBackground"), 1, &params_.background.x);
+    glUniform1i(program_.uniform("uLegend"), params_.legend);
+    glUniform2i(program_.uniform("uLegendOrigin"), legendOrigin_.x, legendOrigin_.y);
     glBindTextureUnit(0, flow.id());
     glBindTextureUnit(1, depth.id());
     glBindTextureUnit(2, shade.id());
     glBindTextureUnit(3, colormap_.id());
+    glBindTextureUnit(4, mask.id());
+    glBindTextureUnit(5, params_.legend ? legend_.id() : colormap_.id());
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

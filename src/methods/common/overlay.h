@@ -1,24 +1,36 @@
-// flowsurf — overlay, [L] eq. 10, with texture clipping ([L] Fig. 10) and the velocity
-// mask. Inputs: F_a (R32F), depth, shade (RGBA16F: eye normal, speed). Output: RGBA8.
-// Applied after advection every frame and never fed back.
+// flowsurf — overlay, [L] eq. 10, with texture clipping ([L] Fig. 10), the texture mask
+// (velocity or any scalar) and the colour legend. Inputs: F_a (R32F), depth, shade
+// (RGBA16F: eye normal, colour value), mask (R16F). Output: RGBA8. Applied after
+// advection every frame and never fed back.
 #pragma once
 
 #include "gl/objects.h"
 #include "methods/common/params.h"
+#include "methods/common/surface_gpu.h"
+
+#include <string>
 
 namespace flowsurf::methods {
 
 class Overlay {
 public:
     explicit Overlay(const CommonParams& params);
+    // `surface` gives the colour range and name the legend shows.
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-               const gl::Framebuffer& target, float speedMax) const;
+               const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const;
 
 private:
+    // Re-rasterises the legend when its range or title changed (auto ranges move).
+    void updateLegend(const SurfaceGpu& surface, int width, int height) const;
+
     CommonParams params_;
     gl::Program program_;
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
+    mutable gl::Texture2D legend_;
+    mutable glm::ivec2 legendOrigin_{0};
+    mutable glm::vec2 legendRange_{0.0f, -1.0f};
+    mutable std::string legendTitle_;
 };
 
 }  // namespace flowsurf::methods

@@ -10,10 +10,11 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace flowsurf::methods {
 
-enum class Colormap { None, Viridis, CoolWarm, Gray };
+enum class Colormap { None, Viridis, CoolWarm, Gray, Turbo, Jet, Plasma };
 
 // How the flow texture meets the surface in the displayed image. Blend: eq. 10 of [L]
 // with the colour map and lighting; the others are the colour schemes of [W Fig. 6]:
@@ -61,6 +62,23 @@ struct CommonParams {
     Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s
     bool lighting = true;        // diffuse head light in F_s
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
+    // Colour by: "" = the shown field's speed; else ARRAY or ARRAY:x|y|z|mag (core::ScalarSpec).
+    std::string colorBy;
+    // Values at the ends of the colour map. lo > hi (unset): the session fills in the data
+    // range over all time steps (speed: 0 .. its 98th percentile); colorRangeAuto: each
+    // frame's own range.
+    glm::vec2 colorRange{1.0f, 0.0f};
+    bool colorRangeAuto = false;
+    // Texture contrast follows this scalar (as velocityMask does speed) over maskRange
+    // (lo > hi: each frame's range). Empty: off, or speed with velocityMask.
+    std::string maskBy;
+    glm::vec2 maskRange{1.0f, 0.0f};
+    // A colour map read from a ParaView JSON file (RGBPoints), 256 sRGB entries; replaces
+    // `colormap` when not empty.
+    std::string colormapFile;
+    std::vector<glm::vec3> colormapTable;
+    bool legend = false;         // scalar bar with title and ticks, drawn into the composite
+    std::string title;           // legend title (default: the colour array's name)
     glm::vec3 background{0.11f, 0.11f, 0.13f};  // linear RGB 0..1
     CameraMoveRemedy onCameraMove = CameraMoveRemedy::Translate;
     Resample resample = Resample::Bicubic;  // F_a resampling in ISA and IBFVS ([L]: bilinear)
@@ -116,8 +134,13 @@ struct MethodParams {
 template <typename E, size_t N>
 using EnumNames = std::array<std::pair<E, std::string_view>, N>;
 
-inline constexpr EnumNames<Colormap, 4> kColormapNames{{
-    {Colormap::Viridis, "viridis"}, {Colormap::CoolWarm, "coolwarm"}, {Colormap::Gray, "gray"}, {Colormap::None, "none"}}};
+inline constexpr EnumNames<Colormap, 7> kColormapNames{{{Colormap::Viridis, "viridis"},
+                                                        {Colormap::CoolWarm, "coolwarm"},
+                                                        {Colormap::Gray, "gray"},
+                                                        {Colormap::Turbo, "turbo"},
+                                                        {Colormap::Jet, "jet"},
+                                                        {Colormap::Plasma, "plasma"},
+                                                        {Colormap::None, "none"}}};
 inline constexpr EnumNames<OverlayScheme, 5> kOverlayNames{{{OverlayScheme::Blend, "blend"},
                                                             {OverlayScheme::Gray, "gray"},
                                                             {OverlayScheme::GrayLit, "gray-lit"},

@@ -10,17 +10,19 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
     : viewport_(viewport),
       velocity_(GL_RGBA32F, viewport.width, viewport.height, GL_LINEAR),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
+      mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       fbo_(gl::Framebuffer::create()),
       program_({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : ""),
-      targets_(withPosition ? 3 : 2),
+      targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces) {
     fbo_.attach(GL_COLOR_ATTACHMENT0, velocity_);
     fbo_.attach(GL_COLOR_ATTACHMENT1, shade_);
+    fbo_.attach(GL_COLOR_ATTACHMENT2, mask_);
     if (withPosition) {
         position_ = gl::Texture2D(GL_RGBA32F, viewport.width, viewport.height, GL_NEAREST);
-        fbo_.attach(GL_COLOR_ATTACHMENT2, position_);
+        fbo_.attach(GL_COLOR_ATTACHMENT3, position_);
     }
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     fbo_.finish(targets_);

@@ -1,7 +1,8 @@
 // flowsurf — one render of the surface into per-pixel float buffers, shared by two paper
 // stages: ISA's velocity image [L §IV-C.1] and the hybrid method's seed textures [W §4].
 // Outputs: velocity RGBA32F (P-space, w = 1 on the surface; linear filtering, the D-space
-// velocity texture of [W eq. 3]), shade RGBA16F (eye normal, true speed), depth DEPTH32F,
+// velocity texture of [W eq. 3]), shade RGBA16F (eye normal, colour value), mask R16F
+// (texture mask value), depth DEPTH32F,
 // and with `withPosition` the P-space position RGBA32F. Cost grows with the triangles N.
 #pragma once
 
@@ -25,12 +26,13 @@ public:
 
     const gl::Texture2D& velocity() const { return velocity_; }
     const gl::Texture2D& shade() const { return shade_; }
+    const gl::Texture2D& mask() const { return mask_; }
     const gl::Texture2D& depth() const { return depth_; }
     const gl::Texture2D& position() const { return position_; }  // withPosition only
 
 private:
     core::Viewport viewport_;
-    gl::Texture2D velocity_, shade_, depth_, position_;
+    gl::Texture2D velocity_, shade_, mask_, depth_, position_;
     gl::Framebuffer fbo_;
     gl::Program program_;
     int targets_;

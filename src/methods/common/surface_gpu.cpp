@@ -1,9 +1,12 @@
 #include "methods/common/surface_gpu.h"
 
+#include "core/derived_fields.h"
 #include "core/errors.h"
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -49,21 +52,71 @@ float percentile(std::vector<float> values, float p) {
     std::nth_element(values.begin(), values.begin() + long(k), values.end());
     return values[k];
 }
+
+// Values of a colour/mask scalar; absent arrays (a step lacking them) give NaN.
+std::vector<float> scalarValues(const core::SurfaceMesh& mesh, const std::string& spec) {
+    std::vector<float> v;
+    if (!core::evalScalar(mesh, core::ScalarSpec::parse(spec), v))
+        v.assign(mesh.vertexCount(), std::numeric_limits<float>::quiet_NaN());
+    return v;
+}
+
+// (v - lo) / (hi - lo), NaN kept; a flat range maps to 0 (as a zero speed did).
+void normalizeInPlace(std::vector<float>& v, glm::vec2 range) {
+    const float span = range.y - range.x;
+    for (float& x : v) x = span > 0.0f ? (x - range.x) / span : (std::isnan(x) ? x : 0.0f);
+}
+
+std::vector<float> tangentialSpeed(const core::SurfaceMesh& mesh, const core::VectorField& field,
+                                   std::vector<glm::vec3>* velOut = nullptr) {
+    std::vector<glm::vec3> vel = field.values;
+    core::makeTangential(vel, mesh.normals);
+    std::vector<float> speed(vel.size());
+    for (size_t i = 0; i < vel.size(); ++i) speed[i] = glm::length(vel[i]);
+    if (velOut) *velOut = std::move(vel);
+    return speed;
+}
 }  // namespace
+
+glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
+    if (params.colorBy.empty()) {
+        const core::VectorField* field = mesh.findField(fieldName);
+        return {0.0f, field ? percentile(tangentialSpeed(mesh, *field), 98.0f) : 0.0f};
+    }
+    auto [lo, hi] = core::finiteRange(scalarValues(mesh, params.colorBy));
+    return {lo, hi};
+}
 
 std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,
                                           const CommonParams& params) {
     const core::VectorField* field = mesh.findField(fieldName);
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
-    std::vector<glm::vec3> vel = field->values;
-    core::makeTangential(vel, mesh.normals);
-    std::vector<float> speed(vel.size());
-    for (size_t i = 0; i < vel.size(); ++i) speed[i] = glm::length(vel[i]);
+    std::vector<glm::vec3> vel;
+    std::vector<float> speed = tangentialSpeed(mesh, *field, &vel);
     colorSpeedMax_ = percentile(speed, 98.0f);
+    lineField_ = core::isLineField(fieldName);
+    // Colour value: speed (0 .. p98 as before) or the --color-by scalar, over the given
+    // range or this frame's.
+    std::vector<float> color = params.colorBy.empty() ? speed : scalarValues(mesh, params.colorBy);
+    colorName_ = params.colorBy.empty() ? "|" + fieldName + "|" : params.colorBy;
+    const bool given = params.colorRange.x <= params.colorRange.y && !params.colorRangeAuto;
+    colorRange_ = given ? params.colorRange : dataColorRange(mesh, fieldName, params);
+    normalizeInPlace(color, colorRange_);
+    // Mask value: the --mask-by scalar, else speed / p98 (the velocity mask).
+    std::vector<float> mask;
+    if (!params.maskBy.empty()) {
+        mask = scalarValues(mesh, params.maskBy);
+        auto [lo, hi] = core::finiteRange(mask);
+        normalizeInPlace(mask, params.maskRange.x <= params.maskRange.y ? params.maskRange : glm::vec2(lo, hi));
+        for (float& m : mask) m = std::isfinite(m) ? std::clamp(m, 0.0f, 1.0f) : 0.0f;
+    } else {
+        mask = speed;
+        normalizeInPlace(mask, {0.0f, colorSpeedMax_});
+    }
     const float clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(speed, params.speedPercentile);
     clampSpeed_ = params.normalize ? 0.0f : clampSpeed;
     std::vector<float> interleaved;
-    interleaved.reserve(mesh.vertexCount() * 10);
+    interleaved.reserve(mesh.vertexCount() * 11);
     maxSpeed_ = 0.0f;
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         glm::vec3 v = vel[i];
@@ -71,7 +124,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
         else if (clampSpeed > 0.0f && speed[i] > clampSpeed) v *= clampSpeed / speed[i];
         const glm::vec3& p = mesh.positions[i];
         const glm::vec3& n = mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, speed[i]});
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, color[i], mask[i]});
         maxSpeed_ = std::max(maxSpeed_, glm::length(v));
     }
     bounds_ = mesh.bounds();
@@ -80,7 +133,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
 
 bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName,
                                 const CommonParams& params) {
-    if (GLsizeiptr(mesh.vertexCount() * 10 * sizeof(float)) != vertices_.size() ||
+    if (GLsizeiptr(mesh.vertexCount() * 11 * sizeof(float)) != vertices_.size() ||
         mesh.triangleCount() != triangles_)
         return false;
     std::vector<float> interleaved = interleave(mesh, fieldName, params);
@@ -97,12 +150,12 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     indices_ = gl::Buffer(GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)), mesh.triangles.data(), 0);
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();
-    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, 10 * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, kVertexStride);
     glVertexArrayElementBuffer(vao, indices_.id());
-    // 0: position, 1: normal, 2: advection velocity (P-space), 3: true speed.
-    for (GLuint a = 0; a < 4; ++a) {
+    // 0: position, 1: normal, 2: advection velocity (P-space), 3: colour value, 4: mask value.
+    for (GLuint a = 0; a < 5; ++a) {
         glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, a < 3 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+        glVertexArrayAttribFormat(vao, a, a < 3 ? 3 : 1, GL_FLOAT, GL_FALSE, (a < 4 ? a * 3 : 10) * sizeof(float));
         glVertexArrayAttribBinding(vao, a, 0);
     }
     if (withEdges) {
@@ -110,7 +163,7 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
         edgeCount_ = edges.size() / 4;
         edgeIndices_ = gl::Buffer(GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), 0);
         edgeVao_ = gl::VertexArray::create();
-        glVertexArrayVertexBuffer(edgeVao_.id(), 0, vertices_.id(), 0, 10 * sizeof(float));
+        glVertexArrayVertexBuffer(edgeVao_.id(), 0, vertices_.id(), 0, kVertexStride);
         glVertexArrayElementBuffer(edgeVao_.id(), edgeIndices_.id());
         glEnableVertexArrayAttrib(edgeVao_.id(), 0);
         glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);

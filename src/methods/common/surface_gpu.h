@@ -31,11 +31,12 @@ public:
     void drawEdgesAdjacency() const;
     bool hasEdges() const { return edgeCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
-    // The interleaved vertices (10 floats: position, normal, velocity, speed) and the
+    // The interleaved vertices (11 floats: position, normal, velocity, colour value and
+    // mask value, both mapped to 0..1 by their ranges, NaN where undefined) and the
     // triangle indices, for passes that pair the geometry with other per-vertex data.
     GLuint vertexBuffer() const { return vertices_.id(); }
     GLuint indexBuffer() const { return indices_.id(); }
-    static constexpr GLsizei kVertexStride = 10 * sizeof(float);
+    static constexpr GLsizei kVertexStride = 11 * sizeof(float);
     size_t triangleCount() const { return triangles_; }
     // Largest speed of the advection velocity (after clamping/normalising): sets dt.
     float maxSpeed() const { return maxSpeed_; }
@@ -43,6 +44,11 @@ public:
     float clampSpeed() const { return clampSpeed_; }
     // Top of the colour map's speed range (98th percentile of the true speed).
     float colorSpeedMax() const { return colorSpeedMax_; }
+    // The values at the ends of the colour map in this upload, and what they are.
+    glm::vec2 colorRange() const { return colorRange_; }
+    const std::string& colorName() const { return colorName_; }
+    // The field is a line field (principal directions): its sign carries no meaning.
+    bool lineField() const { return lineField_; }
     const core::Bounds& bounds() const { return bounds_; }
     // Increments with every upload: methods compare it to see the dynamic case.
     uint64_t generation() const { return generation_; }
@@ -61,9 +67,16 @@ private:
     float maxSpeed_ = 0.0f;
     float clampSpeed_ = 0.0f;
     float colorSpeedMax_ = 0.0f;
+    glm::vec2 colorRange_{0.0f, 1.0f};
+    std::string colorName_;
+    bool lineField_ = false;
     core::Bounds bounds_;
     uint64_t generation_ = 0;
 };
+
+// The colour range CommonParams asks for on `mesh` when it leaves it to the data: the
+// scalar's finite range, or 0 .. the 98th percentile of the field's tangential speed.
+glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params);
 
 // Picks the field to show: `requested` if given (FieldError if absent), else the mesh's
 // defaultField() (the first that is not zero everywhere).

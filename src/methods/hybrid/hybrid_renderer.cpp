@@ -64,6 +64,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     t.camera = in.camera;
     t.viewport = viewport_;
     t.stepPx = params_.hybrid.stepPx;
+    t.lineField = in.surface->lineField();
     t.speedRef = speedRef;
     t.noiseScalePx = c.noise.scale;
     if (unsteady) {
@@ -76,7 +77,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(lic_, seeds_.depth(), seeds_.shade(), compositeFbo_, in.surface->colorSpeedMax());
+    overlay_.apply(lic_, seeds_.depth(), seeds_.shade(), seeds_.mask(), compositeFbo_, *in.surface);
     timer_.endFrame();
 }
 

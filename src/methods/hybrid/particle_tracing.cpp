@@ -33,6 +33,7 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(cam.eye));
     glUniform1i(program.uniform("uOrtho"), cam.orthographic());
     glUniform4fv(program.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(cam)));
+    glUniform1i(program.uniform("uLineField"), in.lineField);
     glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
     // Size of a pixel in P-space: at distance d (perspective) it is d * pixelPerDist.
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(in.viewport.height);

@@ -29,6 +29,7 @@ struct TracingInput {
     GLuint velocityLevels = 0;
     std::vector<float> levelTimes;  // increasing, at most TimeLevelSource::kMaxLevels
     float timePerStep = 0.0f;       // data time a forward step advances
+    bool lineField = false;         // vectors without sign: orient each step to the previous
 };
 
 class ParticleTracing {

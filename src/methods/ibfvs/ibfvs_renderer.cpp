@@ -9,6 +9,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       overlay_(params.common),
       motion_(params.common.onCameraMove),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
+      mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
       compositeFbo_(gl::Framebuffer::create()) {
@@ -18,8 +19,9 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
         flowFbo_[i] = gl::Framebuffer::create();
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
         flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, shade_);
+        flowFbo_[i].attach(GL_COLOR_ATTACHMENT2, mask_);
         flowFbo_[i].attach(GL_DEPTH_ATTACHMENT, depth_);
-        flowFbo_[i].finish(2);
+        flowFbo_[i].finish(3);
         glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
     }
     compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
@@ -51,7 +53,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_[current_], depth_, shade_, compositeFbo_, in.surface->colorSpeedMax());
+    overlay_.apply(flow_[current_], depth_, shade_, mask_, compositeFbo_, *in.surface);
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {

@@ -29,7 +29,7 @@ private:
     EdgeMask edgeMask_;
     CameraMotion motion_;
     gl::Texture2D flow_[2];        // F_a ping-pong, R32F
-    gl::Texture2D shade_, depth_;  // written by the advection draw
+    gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     gl::Framebuffer flowFbo_[2];   // F_a + shade + depth: the advection draw
     gl::Texture2D composite_;      // RGBA8
     gl::Framebuffer compositeFbo_;

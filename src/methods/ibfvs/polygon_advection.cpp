@@ -22,6 +22,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     const float bg[4] = {flowBackground, 0, 0, 1}, zero[4] = {0, 0, 0, 0}, one = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, bg);
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, 2, zero);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

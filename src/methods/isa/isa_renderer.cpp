@@ -77,7 +77,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_[current_], vel.depth(), vel.shade(), compositeFbo_, in.surface->colorSpeedMax());
+    overlay_.apply(flow_[current_], vel.depth(), vel.shade(), vel.mask(), compositeFbo_, *in.surface);
     timer_.endFrame();
 }
 
