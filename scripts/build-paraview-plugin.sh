@@ -14,7 +14,8 @@
 #     targets and checks that their files exist under /usr/lib/python3/dist-packages.
 #  3. copies ParaView's CMake package next to that prefix with the Python module paths
 #     pointed into it and every other path pinned to /usr (the originals compute /usr from
-#     their own location), so find_package(ParaView) succeeds without touching /usr.
+#     their own location), so find_package(ParaView) succeeds without touching /usr; the
+#     wrapping hierarchy files (python3-paraview ships them) are taken from the prefix.
 #  4. configures and builds src/paraview (its own CMake project: ParaView's VTK 9.2 and
 #     Debian's VTK 9.1 cannot meet in one project) into build-paraview/.
 #
@@ -74,6 +75,7 @@ if [ ! -f "$STAMP" ] || [ "$(cat "$STAMP")" != "$(dpkg-query -W -f='${Version}' 
       -e "s#\"\${CMAKE_CURRENT_LIST_DIR}/../../../../../../\"#\"$orig/../../../../../../\"#" \
       -e "s#\${_IMPORT_PREFIX}/lib/python3/dist-packages#$SITE#g" \
       -e "s#\${_IMPORT_PREFIX}/bin/pvpython#$PREFIX/usr/bin/pvpython#g" \
+      -e "s#\"\${_vtk_module_import_prefix}/lib/x86_64-linux-gnu/vtk/hierarchy/#\"$PREFIX/usr/lib/x86_64-linux-gnu/vtk/hierarchy/#g" \
       "$PRIVATE_CMAKE/${f#./}"
   done
   dpkg-query -W -f='${Version}' paraview-dev | $SUDO tee "$STAMP" >/dev/null
