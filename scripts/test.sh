@@ -4,5 +4,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
+# FLOWSURF_PARAVIEW=1: also build the ParaView plugin (installs paraview, paraview-dev,
+# xvfb, openmpi-bin) and run its pvbatch test; otherwise that test is not registered.
+if [ "${FLOWSURF_PARAVIEW:-0}" = 1 ]; then
+  plugin="$(scripts/build-paraview-plugin.sh | tail -n1)"
+  cmake -S . -B build -DFLOWSURF_TEST_PARAVIEW_PLUGIN=ON -DFLOWSURF_PARAVIEW_PLUGIN="$plugin" >/dev/null
+fi
 cd build
 ctest --output-on-failure -j2 "$@"
