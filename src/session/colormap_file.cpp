@@ -1,24 +1,15 @@
 #include "session/colormap_file.h"
 
 #include "core/errors.h"
-
-#include <nlohmann/json.hpp>
+#include "session/json_file.h"
 
 #include <algorithm>
-#include <fstream>
 
 namespace flowsurf::session {
 
 std::vector<glm::vec3> readParaViewColormap(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw IoError(path + ": cannot open the colour map file");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw ConfigError(path + ": not JSON (" + e.what() + ")");
-    }
-    const nlohmann::json& preset = doc.is_array() && !doc.empty() ? doc[0] : doc;
+    const nlohmann::ordered_json doc = readJsonFile(path);
+    const nlohmann::ordered_json& preset = doc.is_array() && !doc.empty() ? doc[0] : doc;
     if (!preset.is_object() || !preset.contains("RGBPoints") || !preset["RGBPoints"].is_array())
         throw ConfigError(path + ": no \"RGBPoints\" list (expected a ParaView colour map preset)");
     const auto& pts = preset["RGBPoints"];

@@ -1,0 +1,271 @@
+// Index: Internals (state) · options · render: (1) surface (2) method (3) advection
+// frames (4) composite into ParaView's framebuffer.
+#include "vtkFlowSurfMapper.h"
+
+#include "gl_state_guard.h"
+#include "polydata_to_mesh.h"
+
+#include "core/errors.h"
+#include "gl/objects.h"
+#include "methods/common/frame.h"
+#include "methods/common/surface_gpu.h"
+#include "session/options.h"
+
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+#include <optional>
+
+namespace fs = flowsurf;
+
+struct vtkFlowSurfMapper::Internals
+{
+  fs::session::RenderOptions options;
+  std::string vectors;
+  int warmupFrames = 90;
+  double viewTime = 0.0;
+  bool optionsChanged = true;
+
+  vtkMTimeType dataTime = 0;
+  std::string dataVectors;
+  fs::core::SurfaceMesh mesh;
+  std::unique_ptr<fs::methods::SurfaceGpu> surface;
+  std::unique_ptr<fs::methods::FlowMethod> method;
+  fs::core::Viewport size{ 0, 0 };
+  uint32_t frame = 0;
+  std::optional<double> lastTime;
+  fs::core::Camera lastCamera;
+
+  fs::gl::Program composite;
+  fs::gl::VertexArray emptyVao;
+  bool glChecked = false;
+
+  void releaseGl()
+  {
+    surface.reset();
+    method.reset();
+    composite = {};
+    emptyVao = {};
+  }
+
+  // The method's parameters: with the blend overlay F_s is ParaView's colouring, so the
+  // method's own colour map and lighting are off and its image is beta F_a + (1 - beta).
+  fs::methods::MethodParams methodParams() const
+  {
+    fs::methods::MethodParams p = options.params;
+    if (p.common.overlay == fs::methods::OverlayScheme::Blend)
+    {
+      p.common.colormap = fs::methods::Colormap::None;
+      p.common.lighting = false;
+    }
+    return p;
+  }
+
+  void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+};
+
+vtkStandardNewMacro(vtkFlowSurfMapper);
+
+vtkFlowSurfMapper::vtkFlowSurfMapper()
+  : Impl(new Internals)
+{
+}
+
+vtkFlowSurfMapper::~vtkFlowSurfMapper() = default;
+
+void vtkFlowSurfMapper::SetVectorsName(const std::string& name)
+{
+  if (name != this->Impl->vectors)
+  {
+    this->Impl->vectors = name;
+    this->Modified();
+  }
+}
+
+void vtkFlowSurfMapper::SetWarmupFrames(int frames)
+{
+  this->Impl->warmupFrames = frames < 0 ? 0 : frames;
+  this->Impl->optionsChanged = true;
+  this->Modified();
+}
+
+std::string vtkFlowSurfMapper::SetOption(const std::string& name, const std::string& value)
+{
+  try
+  {
+    if (fs::session::findOption(name)->get(this->Impl->options) == value)
+    {
+      return {};
+    }
+    fs::session::setOption(this->Impl->options, name, value);
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  this->Impl->optionsChanged = true;
+  this->Modified();
+  return {};
+}
+
+void vtkFlowSurfMapper::SetViewTime(double time)
+{
+  this->Impl->viewTime = time;
+}
+
+void vtkFlowSurfMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Impl->releaseGl();
+  this->Impl->glChecked = false;
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+void vtkFlowSurfMapper::Render(vtkRenderer* ren, vtkActor* act)
+{
+  // ParaView's surface with its own colour mapping: colour and depth.
+  this->Superclass::Render(ren, act);
+  auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (ren->GetSelector() || !win)
+  {
+    return;  // picking passes draw ids, not colours
+  }
+  try
+  {
+    this->Impl->render(ren, this->GetInputDataObject(0, 0), win);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+  }
+}
+
+namespace {
+
+fs::core::Camera cameraOf(vtkCamera* c)
+{
+  fs::core::Camera cam;
+  double p[3], f[3], u[3], range[2];
+  c->GetPosition(p);
+  c->GetFocalPoint(f);
+  c->GetViewUp(u);
+  c->GetClippingRange(range);
+  cam.eye = glm::vec3(p[0], p[1], p[2]);
+  cam.target = glm::vec3(f[0], f[1], f[2]);
+  cam.up = glm::vec3(u[0], u[1], u[2]);
+  cam.fovDeg = float(c->GetViewAngle());
+  cam.orthoHeight = c->GetParallelProjection() ? float(2.0 * c->GetParallelScale()) : 0.0f;
+  cam.nearPlane = float(range[0]);
+  cam.farPlane = float(range[1]);
+  return cam;
+}
+
+}  // namespace
+
+void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
+{
+  if (!glChecked)
+  {
+    if (epoxy_gl_version() < 45)
+    {
+      throw fs::GlError("FlowSurf needs OpenGL 4.5; ParaView's context is " +
+        std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
+    }
+    glChecked = true;
+  }
+  if (!input)
+  {
+    return;
+  }
+  int w = 0, h = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  if (w < 1 || h < 1)
+  {
+    return;
+  }
+  const fs::core::Camera camera = cameraOf(ren->GetActiveCamera());
+  const bool hybrid = options.method == "hybrid";
+
+  fs::paraview::GlStateGuard guard(win->GetState());
+
+  // (1) the surface, converted and uploaded when the data, the array or the options change
+  const bool dataChanged = input->GetMTime() != dataTime || vectors != dataVectors;
+  if (dataChanged || optionsChanged || !surface)
+  {
+    if (dataChanged || mesh.positions.empty())
+    {
+      mesh = fs::paraview::toSurfaceMesh(input, vectors);
+      dataTime = input->GetMTime();
+      dataVectors = vectors;
+    }
+    surface.reset();
+    if (mesh.triangleCount() == 0)
+    {
+      return;
+    }
+    fs::core::SurfaceMesh checked = mesh;
+    fs::core::validateMesh(checked, "FlowSurf input");
+    surface = std::make_unique<fs::methods::SurfaceGpu>(
+      checked, vectors, methodParams().common, options.params.ibfvs.edgeMask);
+  }
+
+  // (2) the method, made anew when options or the view size change
+  bool warmup = dataChanged && !(lastTime && *lastTime != viewTime);
+  if (optionsChanged || !method || w != size.width || h != size.height)
+  {
+    size = { w, h };
+    method = fs::methods::makeMethod(options.method, methodParams(), size);
+    optionsChanged = false;
+    warmup = true;
+  }
+
+  // (3) advection frames: a still render of something new converges; a new view time
+  // or camera advances one frame (with the camera-move remedy); otherwise the last image.
+  const bool timeChanged = lastTime && *lastTime != viewTime;
+  const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
+  if (warmup)
+  {
+    const uint32_t frames = hybrid ? 0u : uint32_t(warmupFrames);
+    for (uint32_t k = 0; k <= frames; ++k)
+    {
+      method->renderFrame({ surface.get(), camera, k, nullptr });
+    }
+    frame = frames;
+  }
+  else if (timeChanged || cameraChanged)
+  {
+    method->renderFrame({ surface.get(), camera, ++frame, nullptr });
+  }
+  lastTime = viewTime;
+  lastCamera = camera;
+
+  // (4) composite into ParaView's framebuffer by depth
+  if (!composite)
+  {
+    composite = fs::gl::Program(
+      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } });
+    emptyVao = fs::gl::VertexArray::create();
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, guard.drawFramebuffer());
+  glViewport(x0, y0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  if (options.params.common.overlay == fs::methods::OverlayScheme::Blend)
+  {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_COLOR, GL_ZERO);  // ParaView's colour x the method's image
+  }
+  composite.use();
+  glUniform2i(composite.uniform("uOrigin"), x0, y0);
+  glUniform1f(composite.uniform("uDepthBias"), 2e-5f);
+  glBindTextureUnit(0, method->composite().id());
+  glBindTextureUnit(1, method->surfaceDepth().id());
+  glBindVertexArray(emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}

@@ -1,0 +1,45 @@
+// flowsurf — a vtkCompositePolyDataMapper2 that draws ParaView's surface (with its own
+// colour mapping) and then runs a flowsurf method in the same OpenGL context and
+// composites the result into ParaView's framebuffer by depth:
+//   blend overlay: ParaView's colour x (beta F_a + (1 - beta)), [L eq. 10] with F_s =
+//   ParaView's colouring; gray, gray-lit, hue-lit, coolwarm: the method's image [W Fig. 6].
+// VTK's cached GL state is saved around the passes and restored after them.
+// ISA/IBFVS advance one frame per render when the view time or the camera changed and
+// run FlowSurfWarmupFrames frames when the method, data or view size are new; the hybrid
+// computes each changed render afresh.
+#ifndef vtkFlowSurfMapper_h
+#define vtkFlowSurfMapper_h
+
+#include "vtkCompositePolyDataMapper2.h"
+
+#include <memory>
+#include <string>
+
+class vtkFlowSurfMapper : public vtkCompositePolyDataMapper2
+{
+public:
+  static vtkFlowSurfMapper* New();
+  vtkTypeMacro(vtkFlowSurfMapper, vtkCompositePolyDataMapper2);
+
+  void Render(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+
+  void SetVectorsName(const std::string& name);
+  void SetWarmupFrames(int frames);
+  // Sets an option of the table by name; returns the error message, empty if none.
+  std::string SetOption(const std::string& name, const std::string& value);
+  void SetViewTime(double time);
+
+protected:
+  vtkFlowSurfMapper();
+  ~vtkFlowSurfMapper() override;
+
+private:
+  vtkFlowSurfMapper(const vtkFlowSurfMapper&) = delete;
+  void operator=(const vtkFlowSurfMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

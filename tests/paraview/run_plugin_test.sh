@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# ctest wrapper of plugin_test.py: pvbatch under xvfb-run with the private python3-paraview
+# prefix; passes when the script passes and the missing-array case left ParaView's error
+# (the mapper's message through vtkErrorMacro) and pvbatch ran on.
+# Usage: run_plugin_test.sh PLUGIN.so OUTDIR
+set -uo pipefail
+PLUGIN="$1"
+OUT="$2"
+PREFIX="${PVPYTHON_PREFIX:-/opt/pvpython}"
+if [ ! -f "$PLUGIN" ]; then
+  echo "FlowSurf plugin not found: $PLUGIN (build it with scripts/build-paraview-plugin.sh)"
+  exit 1
+fi
+mkdir -p "$OUT"
+log="$OUT/plugin_test.log"
+PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a pvbatch \
+  "$(dirname "$0")/plugin_test.py" "$PLUGIN" "$OUT" >"$log" 2>&1
+rc=$?
+cat "$log"
+[ $rc -eq 0 ] || { echo "pvbatch exited with $rc"; exit 1; }
+grep -q "no 3-component point array 'NoSuchArray'" "$log" || { echo "missing array: no ParaView error"; exit 1; }
+grep -q MISSING_ARRAY_SURVIVED "$log" || { echo "missing array: pvbatch did not run on"; exit 1; }
+grep -q '^PASSED' "$log"
