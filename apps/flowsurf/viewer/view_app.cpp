@@ -21,6 +21,7 @@
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -148,10 +149,23 @@ private:
         if (window_) window_->setTitle("flowsurf view — " + o.input);
     }
 
+    // New renderers; ISA and IBFVS then advect --warmup frames (default 3/alpha) out of
+    // sight, so the first frame shown looks converged, as a batch movie's does.
     void build() {
         pipeline_.build(state_.options, state_.shownMethods(), state_.viewSize());
         state_.restartClock();
         mustRender_ = true;
+        int warmup = 0;
+        for (const std::string& m : state_.shownMethods()) {
+            RenderOptions o = state_.options;
+            o.method = m;
+            warmup = std::max(warmup, warmupFrames(o));
+        }
+        const core::Camera camera = state_.camera();
+        for (int k = 0; k < warmup; ++k)
+            pipeline_.render(camera, uint32_t(k), state_.time, state_.timePerFrame);
+        state_.advanceClock(uint32_t(warmup));
+        warmedUp_ = uint32_t(warmup);
     }
 
     void applyRequests(const Requests& req) {
@@ -290,7 +304,8 @@ private:
                 break;
             }
             case EventType::SaveConfig: writeConfigFile(e.value, state_.batchOptions()); break;
-            case EventType::SaveKeyframe: appendKeyframe(e.value, state_.camera(), state_.clock()); break;
+            // Keyframes count the frames shown (a movie's warm-up comes before its frame 0).
+            case EventType::SaveKeyframe: appendKeyframe(e.value, state_.camera(), state_.clock() - warmedUp_); break;
             default: return;
             }
             state_.status = "wrote " + e.value;
@@ -335,6 +350,7 @@ private:
     double lastTime_ = 0.0;
     bool mustRender_ = true;
     bool lastRendered_ = true;
+    uint32_t warmedUp_ = 0;  // warm-up frames on the clock since the last build
     int timerFrames_ = 0;
     std::unique_ptr<io::VideoWriter> recorder_;
     std::vector<double> frameMs_;

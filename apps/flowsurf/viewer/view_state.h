@@ -76,6 +76,8 @@ public:
     // Advection frames since the renderers were (re)built: the noise clock k.
     uint32_t clock() const { return clock_; }
     void restartClock() { clock_ = 0; }
+    // Frames advected out of sight (the warm-up after a rebuild) still count on the clock.
+    void advanceClock(uint32_t frames) { clock_ += frames; }
     // Called after each displayed frame: advances the clock and the data time unless paused.
     void frameDone();
     // True if the next frame advects (not paused, or a single step asked for).
