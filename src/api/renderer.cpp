@@ -8,6 +8,7 @@
 #include "session/animated_surface.h"
 #include "session/options.h"
 #include "session/scene_setup.h"
+#include "methods/make_renderer.h"
 
 #include <epoxy/gl.h>
 
