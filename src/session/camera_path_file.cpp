@@ -32,7 +32,7 @@ core::CameraPath readCameraPath(const std::string& path, const core::Camera& def
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
         throw FormatError(path + ": not valid JSON (" + e.what() + ")");
     }
     if (!doc.is_object() || !doc.contains("keyframes") || !doc["keyframes"].is_array() || doc["keyframes"].empty())

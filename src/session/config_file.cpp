@@ -45,7 +45,7 @@ void applyConfigFile(const std::string& path, RenderOptions& o) {
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
         throw FormatError(path + ": not valid JSON (" + e.what() + ")");
     }
     if (!doc.is_object()) throw FormatError(path + ": expected a JSON object of option names and values");
