@@ -2,6 +2,7 @@
 
 #include "core/builtin_scenes.h"
 #include "methods/common/frame.h"
+#include "methods/make_renderer.h"
 
 #include <epoxy/gl.h>
 

@@ -18,6 +18,7 @@ PACKAGES=(
   xvfb xauth xdotool                            # viewer tests: a real X window and real input without a display
   pybind11-dev python3-dev python3-numpy        # the Python module
   python3-pytest python3-vedo                   # Python tests (vedo: a real client mesh library)
+  clang                                         # fuzz targets (libFuzzer, scripts/fuzz.sh)
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -1,8 +1,24 @@
 #!/usr/bin/env bash
 # The README's second command: install what is missing, build, run the whole suite.
+#   scripts/test.sh [CTEST ARGS]        Release build in build/
+#   scripts/test.sh --sanitize [ARGS]   ASan + UBSan build in build-sanitize/; every test
+#                                       but the Python module's (python3 itself is not
+#                                       instrumented) and the install consumer's
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+if [ "${1:-}" = "--sanitize" ]; then
+    shift
+    cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWSURF_SANITIZE=ON \
+        -DFLOWSURF_BUILD_PYTHON=OFF >/dev/null
+    cmake --build build-sanitize -j"$(nproc)"
+    cd build-sanitize
+    # Leaks: Mesa, EGL and VTK keep process-lifetime allocations; errors and UB halt.
+    export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:strict_string_checks=1
+    export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+    ctest --output-on-failure -j2 -LE install "$@"
+    exit
+fi
 scripts/build.sh
 # The ParaView plugin too (installs paraview, paraview-dev, xvfb, openmpi-bin; ~4 min the
 # first time) and its pvbatch test; FLOWSURF_PARAVIEW=0 skips both.

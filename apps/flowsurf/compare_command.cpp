@@ -9,6 +9,7 @@
 #include "session/animated_surface.h"
 #include "progress.h"
 #include "session/scene_setup.h"
+#include "methods/make_renderer.h"
 
 #include <epoxy/gl.h>
 

@@ -9,10 +9,10 @@ uint hashCell(int ix, int iy, uint seed) {
 }
 float hashToUnit(uint h) { return float(h >> 8u) * (1.0 / 16777216.0); }
 
-// Periodic profile w: 0 = square wave, 1 = saw tooth.
+// Periodic profile w: NOISE_PROFILE_SQUARE or NOISE_PROFILE_SAWTOOTH.
 float noiseProfile(int profile, float t) {
     t = fract(t);
-    return profile == 0 ? (t < 0.5 ? 1.0 : 0.0) : t;
+    return profile == NOISE_PROFILE_SQUARE ? (t < 0.5 ? 1.0 : 0.0) : t;
 }
 float noiseCell(int ix, int iy, uint frame, float period, int profile, uint seed) {
     float phase = hashToUnit(hashCell(ix, iy, seed));

@@ -8,10 +8,9 @@ layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: 
 layout(binding = 3) uniform sampler2D uColormap;   // 256 x 1 RGBA8
 layout(binding = 4) uniform sampler2D uMaskValue;  // texture mask value 0..1
 layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
-uniform int uScheme;          // 0 blend (eq. 10), 1 gray, 2 gray-lit, 3 hue-lit, 4 cool/warm
+uniform int uScheme;          // OVERLAY_BLEND (eq. 10), OVERLAY_GRAY, ..._GRAY_LIT, ..._HUE_LIT, ..._COOLWARM
 uniform float uBeta;          // texture strength
 uniform float uContrast;      // display gain of the texture about its mean
-uniform float uFlowMean;      // mean of the texture (the noise mean)
 uniform int uUseColormap;     // 0: white surface
 uniform int uLighting;
 uniform int uMask;            // texture contrast x sqrt(mask value)
@@ -29,17 +28,17 @@ vec3 surfaceColor(ivec2 px) {
     vec3 n = normalize(shade.xyz);
     float fa = texelFetch(uFlow, px, 0).r;
     float gain = uContrast * (uMask != 0 ? sqrt(clamp(texelFetch(uMaskValue, px, 0).r, 0.0, 1.0)) : 1.0);
-    fa = clamp(uFlowMean + (fa - uFlowMean) * gain, 0.0, 1.0);
+    fa = clamp(NOISE_MEAN + (fa - NOISE_MEAN) * gain, 0.0, 1.0);
     float lit = uLighting != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
     vec3 color;
-    if (uScheme == 1) {
+    if (uScheme == OVERLAY_GRAY) {
         color = vec3(fa);
-    } else if (uScheme == 2) {
+    } else if (uScheme == OVERLAY_GRAY_LIT) {
         color = vec3(fa) * (0.3 + 0.7 * diffuse(n));
-    } else if (uScheme == 3) {
+    } else if (uScheme == OVERLAY_HUE_LIT) {
         vec3 blue = vec3(0.15, 0.3, 0.95), yellow = vec3(1.0, 0.9, 0.2);
         color = mix(blue, yellow, fa) * (0.3 + 0.7 * diffuse(n));
-    } else if (uScheme == 4) {
+    } else if (uScheme == OVERLAY_COOLWARM) {
         float k = 0.5 * (1.0 + dot(n, normalize(kLight)));  // Gooch: cool facing away, warm towards
         vec3 gooch = mix(vec3(0.25, 0.35, 0.85), vec3(0.95, 0.75, 0.35), k);
         color = vec3(fa) * gooch * 1.2;

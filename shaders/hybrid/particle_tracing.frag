@@ -13,9 +13,8 @@ layout(binding = 0) uniform sampler2D uPosObj;    // RGBA32F seed positions, w =
 // uLevelTime[j] after the frame's (divided by the reference speed); the trilinear lookup
 // is linear in time between levels.
 layout(binding = 1) uniform sampler3D uVelLevels;
-const int kMaxLevels = 9;  // methods::TimeLevelSource::kMaxLevels
 uniform int uLevelCount;
-uniform float uLevelTime[kMaxLevels];  // increasing
+uniform float uLevelTime[MAX_LEVELS];  // increasing
 uniform float uTimePerStep;
 uniform float uVelocityScale;
 // Level coordinate (j + fraction) of data time t after the frame's, held at the ends.
@@ -35,8 +34,8 @@ uniform vec3 uEye;
 uniform int uOrtho;
 uniform int uHalfLength;     // steps per half: L = 2 * half + 1 samples
 // Compile-time choices (program variants; a uniform branch per step halves the speed on
-// llvmpipe): KERNEL 0 box, 1 exponential, 2 Gaussian, 3 Hann; INTEGRATOR 0 Euler, 1 RK2
-// (midpoint), 2 RK4.
+// llvmpipe): KERNEL one of KERNEL_BOX .. KERNEL_HANN; INTEGRATOR one of INTEGRATOR_EULER,
+// INTEGRATOR_RK2 (midpoint), INTEGRATOR_RK4.
 const int uKernel = KERNEL;
 const int uIntegrator = INTEGRATOR;
 uniform float uStepPerDist;  // P-space step per unit of distance to the eye (dt ~ d)
@@ -81,9 +80,9 @@ bool stepParticle(inout vec3 p, float h, float t, float dt, inout vec3 ref) {
     vec3 k1, k2, k3, k4;
     if (!velocityAt(p, t, ref, k1)) return false;
     ref = k1;
-    if (uIntegrator == 0) { p += h * k1; return true; }
+    if (uIntegrator == INTEGRATOR_EULER) { p += h * k1; return true; }
     if (!velocityAt(p + 0.5 * h * k1, t + 0.5 * dt, ref, k2)) return false;
-    if (uIntegrator == 1) { p += h * k2; return true; }
+    if (uIntegrator == INTEGRATOR_RK2) { p += h * k2; return true; }
     if (!velocityAt(p + 0.5 * h * k2, t + 0.5 * dt, ref, k3)) return false;
     if (!velocityAt(p + h * k3, t + dt, ref, k4)) return false;
     p += h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;

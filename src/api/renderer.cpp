@@ -5,6 +5,7 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "methods/common/frame.h"
+#include "methods/make_renderer.h"
 #include "session/animated_surface.h"
 #include "session/options.h"
 #include "session/scene_setup.h"

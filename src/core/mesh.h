@@ -1,5 +1,5 @@
 // flowsurf — the data model: a triangle surface with per-vertex vector fields over
-// a list of time steps ([W]/[L] §0 of ALGORITHMS.md). No GL here.
+// a list of time steps ([W]/[L] §0 of doc/algorithms.md). No GL here.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -9,6 +9,10 @@ namespace flowsurf::core {
 
 enum class NoiseProfile { Square, Sawtooth };
 
+// Mean of G for both profiles: F_a's value where no texture is (background, gray edge
+// fill, the initial texture). The one name for it, also in GLSL (NOISE_MEAN).
+inline constexpr float kNoiseMean = 0.5f;
+
 struct NoiseParams {
     float scale = 2.0f;        // s: noise cell size in pixels, [L] 1..10
     float period = 64.0f;      // f_rate: frames per cycle of the profile w

@@ -132,6 +132,33 @@ Program::Program(std::initializer_list<std::pair<GLenum, std::string>> stages, c
         glGetProgramInfoLog(prog, len, nullptr, log.data());
         throw ShaderError("program " + names + " failed to link: " + log.data());
     }
+    names_ = names;
+    GLint count = 0, maxLength = 0;
+    glGetProgramiv(prog, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(prog, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
+    std::vector<char> name(size_t(std::max(maxLength, 1)));
+    for (GLint i = 0; i < count; ++i) {
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(prog, GLuint(i), maxLength, nullptr, &size, &type, name.data());
+        std::string n = name.data();
+        if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);  // arrays
+        GLint location = glGetUniformLocation(prog, name.data());
+        if (location >= 0) uniforms_.emplace_back(std::move(n), location);  // -1: block members
+    }
+    std::sort(uniforms_.begin(), uniforms_.end());
+}
+
+GLint Program::uniformIfActive(const char* name) const {
+    auto it = std::lower_bound(uniforms_.begin(), uniforms_.end(), name,
+                               [](const auto& u, const char* n) { return u.first < n; });
+    return it != uniforms_.end() && it->first == name ? it->second : -1;
+}
+
+GLint Program::uniform(const char* name) const {
+    GLint location = uniformIfActive(name);
+    if (location < 0) throw ShaderError("program " + names_ + " has no active uniform '" + std::string(name) + "'");
+    return location;
 }
 
 }  // namespace flowsurf::gl

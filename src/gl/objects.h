@@ -6,6 +6,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace flowsurf::gl {
 
@@ -101,12 +102,18 @@ public:
     // `defines` are prepended after #version to make variants. Throws ShaderError.
     Program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines = "");
     GLuint id() const { return h_.id(); }
-    GLint uniform(const char* name) const { return glGetUniformLocation(h_.id(), name); }
+    // The location of an active uniform, looked up once at link time. A name the linked
+    // program does not use throws ShaderError (never a silent -1).
+    GLint uniform(const char* name) const;
+    // The same, -1 where a program variant compiled the uniform out.
+    GLint uniformIfActive(const char* name) const;
     void use() const { glUseProgram(h_.id()); }
     explicit operator bool() const { return bool(h_); }
 
 private:
     Handle<detail::deleteProgram> h_;
+    std::string names_;                                // "isa/x.vert+isa/x.frag", for messages
+    std::vector<std::pair<std::string, GLint>> uniforms_;  // sorted by name
 };
 
 // Looks up an embedded shader source by name; throws ShaderError if unknown.

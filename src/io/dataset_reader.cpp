@@ -1,32 +1,13 @@
-// readDataset: pick the reader (vtk_sources), then run each time step through the
-// surface pipeline (surface_pipeline). Errors VTK only prints become FormatErrors.
+// readDataset: every step read in the reader process (reader_process.h), where the reader
+// is picked (vtk_sources) and each step runs through the surface pipeline.
 #include "io/dataset_reader.h"
 
-#include "io/surface_pipeline.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
-
-#include <algorithm>
+#include "io/reader_process.h"
 
 namespace flowsurf::io {
 
 core::Dataset readDataset(const std::string& path, const ReadOptions& options) {
-    detail::VtkMessageTrap trap;
-    auto source = detail::openSource(path, trap);
-    size_t count = source->stepCount();
-    if (options.maxSteps > 0) count = std::min(count, options.maxSteps);
-
-    core::Dataset dataset;
-    dataset.source = path;
-    dataset.steps.reserve(count);
-    for (size_t i = 0; i < count; ++i) {
-        vtkSmartPointer<vtkDataObject> raw = source->readStep(i);
-        core::TimeStep step;
-        step.time = source->times().empty() ? 0.0 : source->times()[i];
-        step.mesh = detail::readSurfaceMesh(raw, trap, detail::stepLabel(path, *source, i));
-        dataset.steps.push_back(std::move(step));
-    }
-    return dataset;
+    return detail::ReaderProcess().readDataset(path, options.maxSteps);
 }
 
 }  // namespace flowsurf::io

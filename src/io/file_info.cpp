@@ -1,16 +1,8 @@
-// inspectFile / formatFileInfo: what `flowsurf info FILE` prints. The arrays are
-// listed as the file stores them (point and cell data); the counts and bounds are of
-// the surface readDataset would produce for the first time step.
+// inspectFile / formatFileInfo: what `flowsurf info FILE` prints. The file is read in
+// the reader process (reader_process.h, file_inspect.cpp).
 #include "io/dataset_reader.h"
 
-#include "io/surface_pipeline.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
-
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkDataSet.h>
-#include <vtkPointData.h>
+#include "io/reader_process.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -19,25 +11,6 @@
 namespace flowsurf::io {
 
 namespace {
-
-// Adds the numeric arrays of one block, merging ranges with earlier blocks.
-void collectArrays(vtkFieldData* data, bool pointData, std::vector<ArrayInfo>& arrays) {
-    for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
-        vtkDataArray* a = data->GetArray(i);
-        if (!a || !a->GetName()) continue;
-        double range[2] = {0, 0};
-        if (a->GetNumberOfTuples() > 0)
-            a->GetRange(range, a->GetNumberOfComponents() == 1 ? 0 : -1);  // -1: magnitude
-        auto same = [&](const ArrayInfo& x) { return x.name == a->GetName() && x.pointData == pointData; };
-        auto it = std::find_if(arrays.begin(), arrays.end(), same);
-        if (it == arrays.end()) {
-            arrays.push_back({a->GetName(), a->GetNumberOfComponents(), pointData, range[0], range[1]});
-        } else {
-            it->rangeMin = std::min(it->rangeMin, range[0]);
-            it->rangeMax = std::max(it->rangeMax, range[1]);
-        }
-    }
-}
 
 std::string number(double v) {
     std::ostringstream s;
@@ -59,25 +32,7 @@ std::string timesText(const std::vector<double>& times) {
 
 }  // namespace
 
-FileInfo inspectFile(const std::string& path) {
-    detail::VtkMessageTrap trap;
-    auto source = detail::openSource(path, trap);
-    FileInfo info;
-    info.path = path;
-    info.format = source->format();
-    info.times = source->times();
-
-    vtkSmartPointer<vtkDataObject> raw = source->readStep(0);
-    detail::forEachLeaf(raw, [&](vtkDataSet* ds) {
-        collectArrays(ds->GetPointData(), true, info.arrays);
-        collectArrays(ds->GetCellData(), false, info.arrays);
-    });
-    core::SurfaceMesh mesh = detail::readSurfaceMesh(raw, trap, detail::stepLabel(path, *source, 0));
-    info.points = mesh.vertexCount();
-    info.triangles = mesh.triangleCount();
-    info.bounds = mesh.bounds();
-    return info;
-}
+FileInfo inspectFile(const std::string& path) { return detail::ReaderProcess().inspect(path); }
 
 std::string formatFileInfo(const FileInfo& info) {
     std::ostringstream s;

@@ -1,10 +1,7 @@
 #include "io/series_reader.h"
 
 #include "core/errors.h"
-#include "io/dataset_reader.h"
-#include "io/surface_pipeline.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
+#include "io/reader_process.h"
 
 #include <glob.h>
 
@@ -17,26 +14,28 @@ namespace flowsurf::io {
 
 namespace {
 
-// One file with one or more steps, each read when asked for.
+// One file with one or more steps, each read when asked for by one reader process.
 class FileSteps final : public core::StepProvider {
 public:
     FileSteps(const std::string& path, const std::string& patches)
-        : path_(path), source_(detail::openSource(path, trap_, patches)) {}
-    size_t count() const override { return source_->stepCount(); }
-    double time(size_t i) const override { return source_->times().empty() ? 0.0 : source_->times()[i]; }
-    core::SurfaceMesh load(size_t i) override {
-        const std::string where = label(i);
-        return detail::readSurfaceMesh(source_->readStep(i), trap_, where);
+        : path_(path), info_(reader_.open(path, patches)) {}
+    size_t count() const override { return info_.times.empty() ? 1 : info_.times.size(); }
+    double time(size_t i) const override { return info_.times.empty() ? 0.0 : info_.times[i]; }
+    core::SurfaceMesh load(size_t i) override { return reader_.readStep(i, label(i)); }
+    std::string label(size_t i) const override {
+        if (count() <= 1) return path_;
+        std::ostringstream s;
+        s << path_ << " (time step " << i + 1 << " of " << count() << ", t = " << info_.times[i] << ")";
+        return s.str();
     }
-    std::string label(size_t i) const override { return detail::stepLabel(path_, *source_, i); }
 
 private:
     std::string path_;
-    detail::VtkMessageTrap trap_;
-    std::unique_ptr<detail::StepSource> source_;
+    detail::ReaderProcess reader_;
+    detail::ReaderProcess::SourceInfo info_;
 };
 
-// Numbered files, one step each.
+// Numbered files, one step each, read by one reader process.
 class PatternSteps final : public core::StepProvider {
 public:
     PatternSteps(std::vector<std::string> files, std::vector<double> times)
@@ -44,7 +43,7 @@ public:
     size_t count() const override { return files_.size(); }
     double time(size_t i) const override { return times_[i]; }
     core::SurfaceMesh load(size_t i) override {
-        core::Dataset d = readDataset(files_[i]);  // errors name the file
+        core::Dataset d = reader_.readDataset(files_[i], 1);  // errors name the file
         return std::move(d.steps.front().mesh);
     }
     std::string label(size_t i) const override {
@@ -56,6 +55,7 @@ public:
 private:
     std::vector<std::string> files_;
     std::vector<double> times_;
+    detail::ReaderProcess reader_;
 };
 
 // "surf_%04d.vtp" -> glob "surf_*.vtp"; globs pass through.

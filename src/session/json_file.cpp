@@ -13,7 +13,7 @@ nlohmann::ordered_json readJsonFile(const std::string& path) {
     if (!f) throw IoError(path + ": cannot open (" + std::strerror(errno) + ")");
     try {
         return nlohmann::ordered_json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
         throw FormatError(path + ": not valid JSON (" + e.what() + ")");
     }
 }

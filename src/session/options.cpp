@@ -304,6 +304,8 @@ std::vector<OptionSpec> buildTable() {
     add(param<float>("edge-epsilon", gMethod, "ISA edge detection eps [L eq. 14], depth range per pixel",
                      FS_REF(params.isa.edgeEpsilon), 0, 10));
     add(onOff("edge-blending", gMethod, "ISA edge blending [L §IV-E.1]", FS_REF(params.isa.edgeBlending)));
+    add(choice("edge-fill", gMethod, "ISA edge blending puts at edge points: noise (eq. 9's history, streaks start "
+               "at full contrast) or gray ([L])", methods::kEdgeFillNames, FS_REF(params.isa.edgeFill)));
 
     // Overlay
     const std::string gLook = "Overlay";

@@ -1,6 +1,7 @@
 #include "gl_test_util.h"
 
 #include "gl/readback.h"
+#include "methods/make_renderer.h"
 
 #include <glm/gtc/constants.hpp>
 

@@ -11,6 +11,15 @@
 
 namespace flowsurf::test {
 
+// While one lives, GL errors and high-severity debug messages do not fail the test (for
+// tests that provoke them on purpose, e.g. an impossible allocation).
+struct AllowGlErrors {
+    AllowGlErrors();
+    ~AllowGlErrors();
+    AllowGlErrors(const AllowGlErrors&) = delete;
+    AllowGlErrors& operator=(const AllowGlErrors&) = delete;
+};
+
 struct Rendered {
     int width = 0, height = 0;
     std::vector<float> flow;      // F_a, rows bottom to top

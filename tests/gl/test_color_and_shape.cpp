@@ -3,6 +3,7 @@
 #include "core/builtin_scenes.h"
 #include "core/derived_fields.h"
 #include "gl_test_util.h"
+#include "methods/make_renderer.h"
 #include "methods/common/legend.h"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 #include "gl/readback.h"
 #include "gl_test_util.h"
 #include "methods/hybrid/hybrid_renderer.h"
+#include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

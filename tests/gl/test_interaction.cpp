@@ -2,6 +2,7 @@
 #include "core/builtin_scenes.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
+#include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>
 
@@ -148,6 +149,7 @@ TEST_P(CameraMoveRemedy, TranslateFollowsTheSurface) {
         auto m = methods::makeMethod(GetParam(), p, vp);
         for (int k = 0; k < 60; ++k) m->renderFrame({&surface, cam0, uint32_t(k)});
         std::vector<float> before = gl::readChannel(m->flowTexture());
+        std::vector<float> depthBefore = gl::readDepth(m->surfaceDepth());
         m->renderFrame({&surface, cam1, 60});
         std::vector<float> after = gl::readChannel(m->flowTexture());
         std::vector<float> depth = gl::readDepth(m->surfaceDepth());
@@ -161,6 +163,8 @@ TEST_P(CameraMoveRemedy, TranslateFollowsTheSurface) {
                 glm::vec3 p0 = core::projectToPixels(cam0, vp, glm::vec3(h) / h.w);
                 int px = int(p0.x), py = int(p0.y);
                 if (px < 0 || py < 0 || px >= vp.width || py >= vp.height) continue;
+                // Only points visible in both views: newly uncovered ones have no history.
+                if (std::abs(depthBefore[size_t(py) * vp.width + px] - p0.z) > 2e-3f) continue;
                 now.push_back(after[size_t(y) * vp.width + x]);
                 then.push_back(before[size_t(py) * vp.width + px]);
             }

@@ -1,6 +1,7 @@
 // ISA property tests [L §IV]: each asserts what a user sees, not just that it ran.
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
+#include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
@@ -206,8 +207,8 @@ TEST_P(MethodProperties, DeterministicForSameSeed) {
 
 // Occluding edge: the back plane flows along +x out from under the front plane's edge.
 // Render twice with the front plane's flow reversed: downstream of the edge the back
-// plane must not change (no front texture carried across) with edge blending on, and
-// must change with it off.
+// plane must not change (no front texture carried across) with edge blending on, with
+// either edge fill, and must change with it off.
 TEST(IsaProperties, EdgeBlendingStopsTextureAtOccludingEdge) {
     core::Dataset d = core::makeBuiltin("builtin:overlap-planes");
     core::Dataset reversed = d;
@@ -224,20 +225,70 @@ TEST(IsaProperties, EdgeBlendingStopsTextureAtOccludingEdge) {
             for (int x = x0; x < x1; ++x, ++n) sum += std::abs(a.f(x, y) - b.f(x, y));
         return sum / n;
     };
-    for (bool blending : {false, true}) {
+    for (int mode = 0; mode < 3; ++mode) {
         methods::MethodParams p = defaultParams();
-        p.isa.edgeBlending = blending;
+        p.isa.edgeBlending = mode > 0;
+        p.isa.edgeFill = mode == 2 ? methods::EdgeFill::Gray : methods::EdgeFill::Noise;
         test::Rendered a = test::renderScene(d, "isa", p, vp, cam, 60);
         test::Rendered b = test::renderScene(reversed, "isa", p, vp, cam, 60);
         double front = meanDiff(a, b, edge - 40, edge - 2);
         double downstream = meanDiff(a, b, edge + 2, edge + 8) / front;
-        std::printf("edge blending %s: downstream change %.3f of the front plane's\n", blending ? "on" : "off",
-                    downstream);
-        if (blending)
+        const char* name = mode == 0 ? "off" : mode == 1 ? "on, noise fill" : "on, gray fill";
+        std::printf("edge blending %s: downstream change %.3f of the front plane's\n", name, downstream);
+        if (mode > 0)
             EXPECT_LT(downstream, 0.05) << "with edge blending the texture must not cross the edge";
         else
             EXPECT_GT(downstream, 0.3) << "without edge blending the texture should cross the edge";
     }
+}
+
+namespace {
+// Standard deviation of F_a and its correlation with F_a `lag` pixels downstream (+x),
+// over columns [x0, x1) and rows [30, 226).
+struct BandStats {
+    double contrast, alongCorr;
+};
+BandStats bandStats(const test::Rendered& r, int x0, int x1, int lag) {
+    std::vector<double> a, b;
+    double sum = 0, sum2 = 0;
+    for (int y = 30; y < 226; ++y)
+        for (int x = x0; x < x1; ++x) {
+            sum += r.f(x, y);
+            sum2 += double(r.f(x, y)) * r.f(x, y);
+            a.push_back(r.f(x, y));
+            b.push_back(r.f(x + lag, y));
+        }
+    const double n = double(a.size()), mean = sum / n;
+    return {std::sqrt(std::max(sum2 / n - mean * mean, 0.0)), test::pearson(a, b)};
+}
+}  // namespace
+
+// Beyond [L]: just downstream of an occluding edge the far surface's texture has the
+// contrast and along-flow correlation of its interior (within 10 %) with the noise edge
+// fill; with the paper's gray fill it is faint there (streaks regain contrast over
+// ~1/alpha frames). The no-crossing half is EdgeBlendingStopsTextureAtOccludingEdge.
+TEST(IsaProperties, NoiseEdgeFillStartsStreaksAtFullContrast) {
+    core::Dataset d = core::makeBuiltin("builtin:overlap-planes");
+    const core::Viewport vp{256, 256};
+    core::Camera cam = test::orthoFront(2.2f);
+    const int edge = 128, lag = 4;
+    double nearContrast[2], nearCorr[2];
+    for (int fill = 0; fill < 2; ++fill) {
+        methods::MethodParams p = defaultParams();
+        p.isa.edgeFill = fill == 0 ? methods::EdgeFill::Gray : methods::EdgeFill::Noise;
+        test::Rendered r = test::renderScene(d, "isa", p, vp, cam, 120);
+        BandStats interior = bandStats(r, 180, 236, lag);
+        BandStats nearEdge = bandStats(r, edge + 1, edge + 11, lag);
+        nearContrast[fill] = nearEdge.contrast / interior.contrast;
+        nearCorr[fill] = nearEdge.alongCorr / interior.alongCorr;
+        std::printf("%s fill: next to the edge contrast %.2f, along-flow correlation %.2f of the interior's "
+                    "(interior: std %.3f, corr at %d px %.2f)\n",
+                    fill == 0 ? "gray" : "noise", nearContrast[fill], nearCorr[fill], interior.contrast, lag,
+                    interior.alongCorr);
+    }
+    EXPECT_NEAR(nearContrast[1], 1.0, 0.1);
+    EXPECT_NEAR(nearCorr[1], 1.0, 0.1);
+    EXPECT_LT(nearContrast[0], 0.8) << "the paper's gray fill should be faint next to the edge";
 }
 
 // The two variants of texture advection (the paper's grid drawing, and the per-pixel

@@ -4,6 +4,7 @@
 #include "core/step_stream.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
+#include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
@@ -106,6 +107,36 @@ TEST(Unsteady, TopologyChangesNeverShowStaleGeometry) {
     EXPECT_EQ(checked, 38);
     EXPECT_EQ(mismatched, 0);
     EXPECT_LE(stream.resident(), 3u);
+}
+
+// A surface that shrinks between frames (the piston's wall, in miniature: a plane that
+// loses its right half): wherever the current frame has no surface, the exported F_a
+// holds the noise mean, for every method; no texture stays where the surface was.
+class ShrinkingSurface : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(Methods, ShrinkingSurface, ::testing::Values("isa", "ibfvs", "hybrid"),
+                         [](const auto& info) { return info.param; });
+TEST_P(ShrinkingSurface, FlowTextureHoldsTheNoiseMeanOffTheSurface) {
+    core::SurfaceMesh big = core::makeRectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0f, 2.0f, 40, 40);
+    core::SurfaceMesh small = core::makeRectangle({-0.5f, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f, 2.0f, 20, 40);
+    for (core::SurfaceMesh* m : {&big, &small})
+        m->fields.push_back({"velocity", std::vector<glm::vec3>(m->positions.size(), glm::vec3(1, 0.3f, 0))});
+    const core::Viewport vp{128, 128};
+    const core::Camera cam = test::orthoFront(2.2f);
+    methods::MethodParams p;
+    auto m = methods::makeMethod(GetParam(), p, vp);
+    methods::SurfaceGpu before(big, "velocity", p.common), after(small, "velocity", p.common);
+    for (int k = 0; k < 30; ++k) m->renderFrame({k < 25 ? &before : &after, cam, uint32_t(k)});
+    test::Rendered r = test::readBack(*m, vp);
+    int background = 0, stale = 0;
+    for (int y = 0; y < vp.height; ++y)
+        for (int x = 0; x < vp.width; ++x)
+            if (!r.onSurface(x, y)) {
+                ++background;
+                stale += std::abs(r.f(x, y) - core::kNoiseMean) > 1e-3f;
+            }
+    std::printf("%s: %d of %d background pixels of F_a textured\n", GetParam().c_str(), stale, background);
+    EXPECT_GT(background, vp.width * vp.height / 2);
+    EXPECT_EQ(stale, 0);
 }
 
 // A 2000-frame run over a series keeps resident memory flat after warm-up.

@@ -8,6 +8,8 @@ SRC=${2:?usage: consumer_test.sh BUILD_DIR SOURCE_DIR}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 cmake --install "$BUILD" --prefix "$WORK/prefix" > "$WORK/install.log"
+# Files are read in flowsurf-reader, installed where the library looks for it.
+[ -x "$WORK/prefix/libexec/flowsurf/flowsurf-reader" ] || { echo "flowsurf-reader not installed in libexec/flowsurf"; exit 1; }
 cmake -S "$SRC/examples/cpp" -B "$WORK/consumer" -DCMAKE_PREFIX_PATH="$WORK/prefix" > "$WORK/configure.log"
 cmake --build "$WORK/consumer" > "$WORK/build.log"
 LD_LIBRARY_PATH="$WORK/prefix/lib" "$WORK/consumer/spinning_sphere" "$WORK/sphere.png" hybrid

@@ -1,5 +1,6 @@
 // Option parsing of `flowsurf render`: the names scripts depend on, and refusals.
 #include "core/errors.h"
+#include "session/camera_path_file.h"
 #include "session/config_file.h"
 #include "cli_options.h"
 
@@ -169,6 +170,10 @@ TEST(CliOptions, ConfigFileErrorsNameFileAndKey) {
     EXPECT_THROW(applyConfigFile(path, o), FormatError);
     write("[1, 2]");
     EXPECT_THROW(applyConfigFile(path, o), FormatError);
+    write("{\"alpha\": 1e99999}");  // nlohmann throws out_of_range, not parse_error (found by fuzz_config)
+    EXPECT_THROW(applyConfigFile(path, o), FormatError);
+    write("{\"keyframes\": [{\"frame\": 0, \"eye\": [0, 7e923384, 0]}]}");  // found by fuzz_camera_path
+    EXPECT_THROW(session::readCameraPath(path, core::Camera{}), FormatError);
     EXPECT_THROW(applyConfigFile(path + ".missing", o), IoError);
     std::remove(path.c_str());
     const char* argv[] = {"flowsurf", "render", "--config", "a.json", "-o", "x.png"};

@@ -1,4 +1,4 @@
-// Noise G of [L] §III-A / ALGORITHMS.md §1.4: statistics and the periodic profile.
+// Noise G of [L] §III-A / doc/algorithms.md §1: statistics and the periodic profile.
 #include "core/noise.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 #include "view_pipeline.h"
 
 #include "core/errors.h"
+#include "methods/make_renderer.h"
 #include "gl/readback.h"
 #include "session/scene_setup.h"
 

@@ -8,6 +8,7 @@
 #include "core/time_series.h"
 #include "methods/common/frame.h"
 #include "cli_options.h"
+#include "methods/make_renderer.h"
 
 #include <memory>
 #include <string>

@@ -1,4 +1,4 @@
-// flowsurf — the interaction remedies of [L §IV-I] (ALGORITHMS.md §5), shared by the
+// flowsurf — the interaction remedies of [L §IV-I] (doc/algorithms.md §5), shared by the
 // image-space methods: per frame, which camera maps the previous texture, and whether
 // this frame advects and injects noise or only re-maps a frozen texture.
 #pragma once

@@ -49,10 +49,6 @@ protected:
     gl::StageTimer timer_;
 };
 
-// "isa" (more to come). Throws ConfigError for an unknown name.
-std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
-                                       const core::Viewport& viewport);
-
 // Object-space time step so that the fastest vector moves at most stepPx pixels.
 float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx);
 

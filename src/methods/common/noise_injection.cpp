@@ -34,6 +34,10 @@ void NoiseInjection::bind(const gl::Program& program, const NoiseStep& step) con
                 phi[size_t(j) * w + i] = core::hashToUnit(core::hashCell(i - kMargin, j - kMargin, n.seed));
         phases_ = gl::Texture2D(GL_R32F, w, h, GL_NEAREST);
         glTextureSubImage2D(phases_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, phi.data());
+        // Beyond the margin (the noise history of ISA's edge fill reaches farther
+        // upstream) the cells repeat: still random, unlike a clamped constant border.
+        glTextureParameteri(phases_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(phases_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         phaseScale_ = n.scale;
         phaseSeed_ = n.seed;
     }
@@ -41,7 +45,7 @@ void NoiseInjection::bind(const gl::Program& program, const NoiseStep& step) con
     glUniform1f(program.uniform("uAlpha"), step.alpha);
     glUniform1f(program.uniform("uScale"), n.scale);
     glUniform1f(program.uniform("uPeriod"), n.period);
-    glUniform1i(program.uniform("uProfile"), n.profile == core::NoiseProfile::Square ? 0 : 1);
+    glUniform1i(program.uniform("uProfile"), int(n.profile));
     glUniform1f(program.uniform("uPhaseMargin"), float(kMargin));
     glBindTextureUnit(3, phases_.id());
 }

@@ -1,5 +1,6 @@
 #include "methods/common/overlay.h"
 
+#include "methods/common/shader_interface.h"
 #include "methods/common/colormap.h"
 #include "methods/common/legend.h"
 
@@ -9,7 +10,7 @@ namespace flowsurf::methods {
 
 Overlay::Overlay(const CommonParams& params)
     : params_(params),
-      program_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}}),
+      program_(program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}})),
       colormap_(makeColormapTexture(params)),
       emptyVao_(gl::VertexArray::create()) {}
 
@@ -40,7 +41,6 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glUniform1i(program_.uniform("uScheme"), int(params_.overlay));
     glUniform1f(program_.uniform("uBeta"), params_.beta);
     glUniform1f(program_.uniform("uContrast"), params_.contrast);
-    glUniform1f(program_.uniform("uFlowMean"), 0.5f);  // mean of both noise profiles
     glUniform1i(program_.uniform("uUseColormap"), params_.colormap != Colormap::None || !params_.colormapTable.empty());
     glUniform1i(program_.uniform("uLighting"), params_.lighting);
     glUniform1i(program_.uniform("uMask"), params_.velocityMask || !params_.maskBy.empty());

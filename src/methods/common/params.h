@@ -23,7 +23,7 @@ enum class Colormap { None, Viridis, CoolWarm, Gray, Turbo, Jet, Plasma };
 enum class OverlayScheme { Blend, Gray, GrayLit, HueLit, CoolWarm };
 
 // What happens to the image-space texture when the camera moves [L §IV-I, §5 of
-// ALGORITHMS.md]. None: the pattern slides over the surface. Translate: the previous
+// doc/algorithms.md]. None: the pattern slides over the surface. Translate: the previous
 // texture is reprojected with the surface's image motion (per pixel: good for pan,
 // rotate and zoom). Freeze: no advection while the camera moves; the last texture is
 // mapped onto the surface from the view where it was made; resumes when it stops.
@@ -93,17 +93,24 @@ struct CommonParams {
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
 enum class IsaWarp { Pixel, Mesh };
 
+// What ISA's edge blending puts at edge advection points [L §IV-E.1]. Gray: the noise
+// mean, as in [L]; streaks then need ~1/alpha frames to regain contrast. Noise: the
+// history eq. 9 would have left there (noise integrated along the pathline extended
+// upstream), so streaks start at the interior's contrast.
+enum class EdgeFill { Gray, Noise };
+
 // ISA only, [L §IV-C.1..IV-F.1].
 struct IsaParams {
     IsaWarp warp = IsaWarp::Pixel;  // Mesh: draw the R x R grid as in the paper
     int gridRes = 256;           // R: advection mesh cells per side, 64..1024
     float edgeEpsilon = 0.01f;   // eps of eq. 14: depth range fraction per pixel
-    bool edgeBlending = true;    // blend gray at edge advection points
+    bool edgeBlending = true;    // replace the advected texture at edge advection points
+    EdgeFill edgeFill = EdgeFill::Noise;  // with what ([L]: gray); measured in doc/README
 };
 
 // IBFVS only, [L §IV-C.2..IV-F.2].
 struct IbfvsParams {
-    float flowBackground = 0.5f;  // F_a outside the surface: the noise mean, so inflow is invisible
+    float flowBackground = core::kNoiseMean;  // F_a outside the surface: the noise mean, inflow invisible
     bool edgeMask = false;        // silhouette edge mask over the display [L §IV-E.2]
     float edgeMaskWidthPx = 2.0f; // line width of the mask
     float edgeMaskOpacity = 0.85f;
@@ -150,6 +157,7 @@ inline constexpr EnumNames<CameraMoveRemedy, 3> kCameraMoveNames{{{CameraMoveRem
                                                                   {CameraMoveRemedy::Freeze, "freeze"},
                                                                   {CameraMoveRemedy::None, "none"}}};
 inline constexpr EnumNames<IsaWarp, 2> kIsaWarpNames{{{IsaWarp::Pixel, "pixel"}, {IsaWarp::Mesh, "mesh"}}};
+inline constexpr EnumNames<EdgeFill, 2> kEdgeFillNames{{{EdgeFill::Noise, "noise"}, {EdgeFill::Gray, "gray"}}};
 inline constexpr EnumNames<LicKernel, 4> kKernelNames{{{LicKernel::Box, "box"},
                                                        {LicKernel::Exponential, "exponential"},
                                                        {LicKernel::Gaussian, "gaussian"},

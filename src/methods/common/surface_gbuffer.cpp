@@ -1,5 +1,7 @@
 #include "methods/common/surface_gbuffer.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -13,8 +15,8 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       fbo_(gl::Framebuffer::create()),
-      program_({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
-               withPosition ? "#define WITH_POSITION 1\n" : ""),
+      program_(program({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
+               withPosition ? "#define WITH_POSITION 1\n" : "")),
       targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces) {
     fbo_.attach(GL_COLOR_ATTACHMENT0, velocity_);

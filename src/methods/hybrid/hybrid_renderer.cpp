@@ -14,15 +14,8 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       noise_(params.hybrid.noiseSize),
       tracing_(params.hybrid),
       overlay_(params.common),
-      lic_(GL_R32F, viewport.width, viewport.height, GL_NEAREST),
-      licFbo_(gl::Framebuffer::create()),
-      composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
-      compositeFbo_(gl::Framebuffer::create()) {
-    licFbo_.attach(GL_COLOR_ATTACHMENT0, lic_);
-    licFbo_.finish(1);
-    compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
-    compositeFbo_.finish(1);
-}
+      lic_(GL_R32F, viewport),
+      composite_(GL_RGBA8, viewport) {}
 
 void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
@@ -73,11 +66,11 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
-    tracing_.apply(t, params_.hybrid, licFbo_);
+    tracing_.apply(t, params_.hybrid, lic_.fbo());
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(lic_, seeds_.depth(), seeds_.shade(), seeds_.mask(), compositeFbo_, *in.surface);
+    overlay_.apply(lic_.texture(), seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface);
     timer_.endFrame();
 }
 

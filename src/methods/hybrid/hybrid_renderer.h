@@ -1,11 +1,12 @@
 // flowsurf — hybrid physical/device-space advection with solid noise and LIC (Weiskopf
-// & Ertl [W], ALGORITHMS.md §7): the orchestrator. The texture is computed from 3D
+// & Ertl [W], doc/algorithms.md §7): the orchestrator. The texture is computed from 3D
 // particle paths and object-fixed noise each frame, so it sticks to the surface when the
 // camera moves and has no inflow at silhouettes.
 #pragma once
 
 #include "methods/common/frame.h"
 #include "methods/common/overlay.h"
+#include "methods/common/render_targets.h"
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/common/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
@@ -18,8 +19,8 @@ public:
     HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return "hybrid"; }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return lic_; }
-    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& flowTexture() const override { return lic_.texture(); }
+    const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
     bool usesTimeLevels() const override { return true; }
@@ -35,10 +36,8 @@ private:
     SolidNoise noise_;
     ParticleTracing tracing_;
     Overlay overlay_;
-    gl::Texture2D lic_;            // I, R32F
-    gl::Framebuffer licFbo_;
-    gl::Texture2D composite_;      // RGBA8
-    gl::Framebuffer compositeFbo_;
+    ColorTarget lic_;              // I, R32F
+    ColorTarget composite_;        // RGBA8
     bool haveSeeds_ = false, lastDynamic_ = false;
     uint64_t seedGeneration_ = 0;
     core::Camera seedCamera_;

@@ -1,5 +1,7 @@
 #include "methods/hybrid/particle_tracing.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -10,20 +12,20 @@ namespace flowsurf::methods::hybrid {
 ParticleTracing::ParticleTracing(const HybridParams& params)
     : defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n"),
-      steady_({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
-              defines_),
+      steady_(program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+              defines_)),
       emptyVao_(gl::VertexArray::create()) {}
 
 void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, in.viewport.width, in.viewport.height);
-    const float gray[4] = {0.5f, 0, 0, 1};
+    const float gray[4] = {core::kNoiseMean, 0, 0, 1};
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, gray);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
     if (unsteady && !unsteady_)
-        unsteady_ = gl::Program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+        unsteady_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
                                 defines_ + "#define UNSTEADY 1\n");
     const gl::Program& program = unsteady ? unsteady_ : steady_;
     program.use();

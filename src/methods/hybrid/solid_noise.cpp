@@ -1,8 +1,10 @@
 #include "methods/hybrid/solid_noise.h"
 
+#include "methods/common/shader_interface.h"
+
 namespace flowsurf::methods::hybrid {
 
-SolidNoise::SolidNoise(int size) : size_(size), program_({{GL_COMPUTE_SHADER, "hybrid/solid_noise.comp"}}) {
+SolidNoise::SolidNoise(int size) : size_(size), program_(program({{GL_COMPUTE_SHADER, "hybrid/solid_noise.comp"}})) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     texture_ = gl::Handle<gl::detail::deleteTexture>(id);
@@ -18,7 +20,7 @@ void SolidNoise::update(uint32_t frame, const core::NoiseParams& params) {
     glUniform1i(program_.uniform("uSize"), size_);
     glUniform1ui(program_.uniform("uFrame"), frame);
     glUniform1f(program_.uniform("uPeriod"), params.period);
-    glUniform1i(program_.uniform("uProfile"), params.profile == core::NoiseProfile::Square ? 0 : 1);
+    glUniform1i(program_.uniform("uProfile"), int(params.profile));
     glUniform1ui(program_.uniform("uSeed"), params.seed);
     glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     GLuint groups = GLuint((size_ + 7) / 8);  // one invocation per row along x (solid_noise.comp)

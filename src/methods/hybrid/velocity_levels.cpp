@@ -1,5 +1,7 @@
 #include "methods/hybrid/velocity_levels.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -12,7 +14,7 @@ VelocityLevels::VelocityLevels(const core::Viewport& viewport, bool cullBackFace
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       fbo_(gl::Framebuffer::create()),
       vao_(gl::VertexArray::create()),
-      program_({{GL_VERTEX_SHADER, "hybrid/velocity_levels.vert"}, {GL_FRAGMENT_SHADER, "hybrid/velocity_levels.frag"}}) {
+      program_(program({{GL_VERTEX_SHADER, "hybrid/velocity_levels.vert"}, {GL_FRAGMENT_SHADER, "hybrid/velocity_levels.frag"}})) {
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     const GLenum buffer = GL_COLOR_ATTACHMENT0;  // a layer of the 3D texture, per level
     glNamedFramebufferDrawBuffers(fbo_.id(), 1, &buffer);

@@ -1,13 +1,15 @@
 #include "methods/ibfvs/edge_mask.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace flowsurf::methods::ibfvs {
 
 EdgeMask::EdgeMask()
-    : program_({{GL_VERTEX_SHADER, "ibfvs/edge_mask.vert"},
+    : program_(program({{GL_VERTEX_SHADER, "ibfvs/edge_mask.vert"},
                 {GL_GEOMETRY_SHADER, "ibfvs/edge_mask.geom"},
-                {GL_FRAGMENT_SHADER, "ibfvs/edge_mask.frag"}}) {}
+                {GL_FRAGMENT_SHADER, "ibfvs/edge_mask.frag"}})) {}
 
 void EdgeMask::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Viewport& viewport,
                      const gl::Texture2D& depth, const gl::Framebuffer& target, const glm::vec3& color, float opacity, float widthPx) const {

@@ -11,22 +11,8 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
       mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
-      composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
-      compositeFbo_(gl::Framebuffer::create()) {
-    const float gray[4] = {params.ibfvs.flowBackground, 0, 0, 1};
-    for (int i = 0; i < 2; ++i) {
-        flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
-        flowFbo_[i] = gl::Framebuffer::create();
-        flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        flowFbo_[i].attach(GL_COLOR_ATTACHMENT1, shade_);
-        flowFbo_[i].attach(GL_COLOR_ATTACHMENT2, mask_);
-        flowFbo_[i].attach(GL_DEPTH_ATTACHMENT, depth_);
-        flowFbo_[i].finish(3);
-        glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
-    }
-    compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
-    compositeFbo_.finish(1);
-}
+      flow_(viewport, {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
+      composite_(GL_RGBA8, viewport) {}
 
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
@@ -47,18 +33,18 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G]
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_[source_],
-                            flowFbo_[target], params_.ibfvs.flowBackground, c.cullBackFaces, noise);
+    polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
+                            flow_.fbo(target), params_.ibfvs.flowBackground, c.cullBackFaces, noise);
     current_ = target;
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_[current_], depth_, shade_, mask_, compositeFbo_, *in.surface);
+    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface);
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {
         timer_.begin("edge mask");
-        edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, compositeFbo_, c.background,
+        edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, composite_.fbo(), c.background,
                         params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx);
     }
     timer_.endFrame();

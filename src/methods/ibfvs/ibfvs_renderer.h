@@ -1,11 +1,12 @@
 // flowsurf — IBFVS, Image Based Flow Visualization for curved Surfaces [L §IV,
-// ALGORITHMS.md §4]: the orchestrator.
+// doc/algorithms.md §4]: the orchestrator.
 #pragma once
 
 #include "methods/common/camera_motion.h"
 #include "methods/common/frame.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
+#include "methods/common/render_targets.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
 
@@ -16,8 +17,8 @@ public:
     IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return "ibfvs"; }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return flow_[current_]; }
-    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
+    const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
@@ -28,11 +29,9 @@ private:
     Overlay overlay_;
     EdgeMask edgeMask_;
     CameraMotion motion_;
-    gl::Texture2D flow_[2];        // F_a ping-pong, R32F
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
-    gl::Framebuffer flowFbo_[2];   // F_a + shade + depth: the advection draw
-    gl::Texture2D composite_;      // RGBA8
-    gl::Framebuffer compositeFbo_;
+    FlowPingPong flow_;            // F_a, R32F (+ shade + mask + depth: the advection draw)
+    ColorTarget composite_;        // RGBA8
     int current_ = 0, source_ = 0;
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;

@@ -1,5 +1,6 @@
 #include "methods/ibfvs/polygon_advection.h"
 
+#include "methods/common/shader_interface.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/resample.h"
 
@@ -9,8 +10,8 @@ namespace flowsurf::methods::ibfvs {
 
 PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common)
     : noise_(common, viewport),
-      program_({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
-               resampleDefine(common.resample) + noise_.defines()) {}
+      program_(program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
+               resampleDefine(common.resample) + noise_.defines())) {}
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,

@@ -1,5 +1,7 @@
 #include "methods/isa/advection_mesh.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace flowsurf::methods::isa {
@@ -8,7 +10,7 @@ AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes)
     : viewport_(viewport),
       gridRes_(gridRes),
       vertices_(GL_RGBA32F, gridRes + 1, gridRes + 1, GL_LINEAR),
-      program_({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}}) {}
+      program_(program({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}})) {}
 
 void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& depth,
                             const gl::Texture2D& sourceDepth, const core::Camera& camera,

@@ -10,22 +10,11 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
                      SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
-      textureAdvection_(viewport, params.isa.gridRes, params.isa.warp, params.common),
+      textureAdvection_(viewport, params.isa, params.common),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
-      composite_(GL_RGBA8, viewport.width, viewport.height, GL_NEAREST),
-      compositeFbo_(gl::Framebuffer::create()) {
-    const float gray[4] = {0.5f, 0.0f, 0.0f, 1.0f};  // start at the noise mean
-    for (int i = 0; i < 2; ++i) {
-        flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
-        flowFbo_[i] = gl::Framebuffer::create();
-        flowFbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
-        flowFbo_[i].finish(1);
-        glClearNamedFramebufferfv(flowFbo_[i].id(), GL_COLOR, 0, gray);
-    }
-    compositeFbo_.attach(GL_COLOR_ATTACHMENT0, composite_);
-    compositeFbo_.finish(1);
-}
+      flow_(viewport),
+      composite_(GL_RGBA8, viewport) {}
 
 bool IsaRenderer::isDynamic(const FrameInput& in) const {
     return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
@@ -71,13 +60,13 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_[source_], vel.depth(), flowFbo_[target],
-                            params_.isa.edgeBlending, 0.5f, noise);
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.fbo(target),
+                            params_.isa.edgeBlending, noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_[current_], vel.depth(), vel.shade(), vel.mask(), compositeFbo_, *in.surface);
+    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface);
     timer_.endFrame();
 }
 

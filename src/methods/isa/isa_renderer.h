@@ -1,10 +1,11 @@
-// flowsurf — ISA, Image Space Advection [L §IV, ALGORITHMS.md §3]: the orchestrator.
+// flowsurf — ISA, Image Space Advection [L §IV, doc/algorithms.md §3]: the orchestrator.
 #pragma once
 
 #include "methods/common/camera_motion.h"
 #include "methods/common/frame.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
+#include "methods/common/render_targets.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
 #include "methods/common/surface_gbuffer.h"
@@ -16,8 +17,8 @@ public:
     IsaRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return "isa"; }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return flow_[current_]; }
-    const gl::Texture2D& composite() const override { return composite_; }
+    const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
+    const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
@@ -35,10 +36,8 @@ private:
     TextureAdvection textureAdvection_;
     Overlay overlay_;
     CameraMotion motion_;
-    gl::Texture2D flow_[2];       // F_a ping-pong, R32F
-    gl::Framebuffer flowFbo_[2];
-    gl::Texture2D composite_;     // RGBA8
-    gl::Framebuffer compositeFbo_;
+    FlowPingPong flow_;           // F_a, R32F
+    ColorTarget composite_;       // RGBA8
     int current_ = 0, source_ = 0;
     // What the cached velocity image and advection mesh were made for (static case).
     bool haveCache_ = false;

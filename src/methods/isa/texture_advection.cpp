@@ -2,32 +2,35 @@
 
 #include "methods/common/noise_injection.h"
 #include "methods/common/resample.h"
+#include "methods/common/shader_interface.h"
 
 #include <vector>
 
 namespace flowsurf::methods::isa {
 
 namespace {
-gl::Program makeProgram(IsaWarp warp, Resample resample, const NoiseInjection& noise) {
-    const std::string defines = resampleDefine(resample) + noise.defines();
+gl::Program makeProgram(IsaWarp warp, EdgeFill fill, Resample resample, const NoiseInjection& noise) {
+    const std::string defines =
+        resampleDefine(resample) + noise.defines() + "#define EDGE_FILL " + std::to_string(int(fill)) + "\n";
     if (warp == IsaWarp::Pixel)
-        return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
+        return program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
                             {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
                            "#define PER_PIXEL 1\n" + defines);
-    return gl::Program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"},
-                        {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
-                       defines);
+    return program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+                   defines);
 }
 }  // namespace
 
-TextureAdvection::TextureAdvection(const core::Viewport& viewport, int gridRes, IsaWarp warp,
-                                   const CommonParams& common)
-    : gridRes_(gridRes),
-      warp_(warp),
+TextureAdvection::TextureAdvection(const core::Viewport& viewport, const IsaParams& isa, const CommonParams& common)
+    : gridRes_(isa.gridRes),
+      warp_(isa.warp),
+      fill_(isa.edgeFill),
+      fillAlpha_(common.alpha),
       noise_(common, viewport),
       vao_(gl::VertexArray::create()),
-      program_(makeProgram(warp, common.resample, noise_)) {
-    if (warp != IsaWarp::Mesh) return;
+      program_(makeProgram(isa.warp, isa.edgeFill, common.resample, noise_)) {
+    const int gridRes = isa.gridRes;
+    if (warp_ != IsaWarp::Mesh) return;
     // Two triangles per grid cell; vertices come from the mesh texture by gl_VertexID.
     std::vector<uint32_t> idx;
     idx.reserve(size_t(gridRes) * gridRes * 6);
@@ -43,7 +46,7 @@ TextureAdvection::TextureAdvection(const core::Viewport& viewport, int gridRes, 
 }
 
 void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
-                             const gl::Framebuffer& nextFlow, bool edgeBlending, float gray, const NoiseStep& noise) const {
+                             const gl::Framebuffer& nextFlow, bool edgeBlending, const NoiseStep& noise) const {
     glBindFramebuffer(GL_FRAMEBUFFER, nextFlow.id());
     glViewport(0, 0, prevFlow.width(), prevFlow.height());
     glDisable(GL_DEPTH_TEST);
@@ -51,7 +54,7 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     program_.use();
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
-    glUniform1f(program_.uniform("uGray"), gray);
+    if (fill_ == EdgeFill::Noise) glUniform1f(program_.uniform("uFillAlpha"), fillAlpha_);
     noise_.bind(program_, noise);
     glBindTextureUnit(0, prevFlow.id());
     glBindTextureUnit(1, mesh.id());

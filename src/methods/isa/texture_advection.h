@@ -18,13 +18,17 @@ namespace flowsurf::methods::isa {
 class TextureAdvection {
 public:
     // `common`: the resampling, and the noise injection mode, scale and step.
-    TextureAdvection(const core::Viewport& viewport, int gridRes, IsaWarp warp, const CommonParams& common);
+    // `isa`: grid, warp and edge fill; `common`: resampling, noise injection, alpha.
+    TextureAdvection(const core::Viewport& viewport, const IsaParams& isa, const CommonParams& common);
+    // Off the surface (depth 1) the next F_a is the noise mean.
     void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
-               const gl::Framebuffer& nextFlow, bool edgeBlending, float gray, const NoiseStep& noise) const;
+               const gl::Framebuffer& nextFlow, bool edgeBlending, const NoiseStep& noise) const;
 
 private:
     int gridRes_;
     IsaWarp warp_;
+    EdgeFill fill_;
+    float fillAlpha_;
     NoiseInjection noise_;
     gl::Buffer indices_;
     gl::VertexArray vao_;

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "gl/objects.h"
 #include "methods/common/frame.h"
+#include "methods/make_renderer.h"
 #include "methods/common/surface_gpu.h"
 #include "session/options.h"
 

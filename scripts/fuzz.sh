@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan), writes their seed
+# corpora (fuzz/make_seeds.py) and runs each target on one core.
+#   scripts/fuzz.sh                      every target for 60 s (what CI runs)
+#   scripts/fuzz.sh --runs 1000000       every target for 1M executions
+#   scripts/fuzz.sh --time 3600 fuzz_ply one target for an hour (a long run)
+# Corpora grow in build-fuzz/corpus/<target>/; crashes land in build-fuzz/crashes/.
+# Exit status: non-zero if a target found a crash, leak or undefined behaviour.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+budget=(-max_total_time=60)
+targets=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --runs) budget=(-runs="$2"); shift 2 ;;
+        --time) budget=(-max_total_time="$2"); shift 2 ;;
+        *) targets+=("$1"); shift ;;
+    esac
+done
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_ply fuzz_obj fuzz_camera_path fuzz_config fuzz_event_log fuzz_options)
+B=build-fuzz
+CXX=clang++ cmake -S fuzz -B $B -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+cmake --build $B -j"${JOBS:-2}" --target "${targets[@]}"
+python3 fuzz/make_seeds.py $B/seeds
+mkdir -p $B/crashes
+for t in "${targets[@]}"; do
+    mkdir -p $B/corpus/$t
+    echo "== $t ${budget[*]}"
+    rc=0
+    $B/$t "${budget[@]}" -max_len=65536 -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
+        -artifact_prefix=$B/crashes/$t- $B/corpus/$t $B/seeds/$t > $B/$t.log 2>&1 || rc=$?
+    grep -E "^(#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY)" $B/$t.log || true
+    [ $rc -eq 0 ] || { echo "$t: FAILED (log $B/$t.log, input in $B/crashes/)"; exit 1; }
+done

@@ -1,0 +1,162 @@
+// flowsurf-reader: the process every file is read in (see reader_process.h). Started by
+// the library with the socket on fd 3; applies its own limits (address space, CPU time
+// per request), then answers requests until Quit or end of stream. A crash, abort or
+// limit hit here ends this process only; the library reports it as a FormatError.
+#include "core/errors.h"
+#include "io/file_inspect.h"
+#include "io/reader_wire.h"
+#include "io/surface_pipeline.h"
+#include "io/vtk_messages.h"
+#include "io/vtk_sources.h"
+
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+using namespace flowsurf;
+namespace w = flowsurf::io::wire;
+
+namespace {
+
+constexpr int kSocketFd = 3;
+
+// Limits from the command line: --memory-mb N --cpu-s N (0: none).
+struct Limits {
+    unsigned long long memoryMb = 0, cpuSeconds = 0;
+};
+
+void limitMemory(const Limits& l) {
+    if (l.memoryMb == 0) return;
+    rlimit r{rlim_t(l.memoryMb) << 20, rlim_t(l.memoryMb) << 20};
+    setrlimit(RLIMIT_AS, &r);
+}
+
+// RLIMIT_CPU counts the process's whole life: give each request its own budget.
+void limitCpuForRequest(const Limits& l) {
+    if (l.cpuSeconds == 0) return;
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    rlimit r{};
+    getrlimit(RLIMIT_CPU, &r);
+    r.rlim_cur = rlim_t(u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1) + rlim_t(l.cpuSeconds);
+    if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
+    setrlimit(RLIMIT_CPU, &r);
+}
+
+// The open multi-step source of Open/Step requests.
+struct OpenSource {
+    std::string path;
+    io::detail::VtkMessageTrap trap;
+    std::unique_ptr<io::detail::StepSource> source;
+};
+
+core::Dataset readWholeDataset(const std::string& path, size_t maxSteps) {
+    io::detail::VtkMessageTrap trap;
+    auto source = io::detail::openSource(path, trap);
+    size_t count = source->stepCount();
+    if (maxSteps > 0) count = std::min(count, maxSteps);
+    core::Dataset dataset;
+    dataset.source = path;
+    for (size_t i = 0; i < count; ++i) {
+        vtkSmartPointer<vtkDataObject> raw = source->readStep(i);
+        core::TimeStep step;
+        step.time = source->times().empty() ? 0.0 : source->times()[i];
+        step.mesh = io::detail::readSurfaceMesh(raw, trap, io::detail::stepLabel(path, *source, i));
+        dataset.steps.push_back(std::move(step));
+    }
+    return dataset;
+}
+
+// Answers one request into `out` (status Ok and the payload). Throws what the reader throws.
+bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>& open) {
+    switch (op) {
+        case w::Op::Open: {
+            std::string path = in.str();
+            std::string patches = in.str();
+            auto s = std::make_unique<OpenSource>();
+            s->path = path;
+            s->source = io::detail::openSource(path, s->trap, patches);
+            out.u8(uint8_t(w::Status::Ok));
+            out.str(s->source->format());
+            out.u64(s->source->times().size());
+            for (double t : s->source->times()) out.f64(t);
+            open = std::move(s);
+            return true;
+        }
+        case w::Op::Step: {
+            uint64_t i = in.u64();
+            if (!open || i >= open->source->stepCount()) throw FormatError("reader: step request out of range");
+            core::SurfaceMesh m = io::detail::readSurfaceMesh(open->source->readStep(size_t(i)), open->trap,
+                                                              io::detail::stepLabel(open->path, *open->source, i));
+            out.u8(uint8_t(w::Status::Ok));
+            out.mesh(m);
+            return true;
+        }
+        case w::Op::Dataset: {
+            std::string path = in.str();
+            uint64_t maxSteps = in.u64();
+            core::Dataset d = readWholeDataset(path, size_t(maxSteps));
+            out.u8(uint8_t(w::Status::Ok));
+            w::writeDataset(out, d);
+            return true;
+        }
+        case w::Op::Inspect: {
+            std::string path = in.str();
+            io::FileInfo info = io::detail::inspectFileHere(path);
+            out.u8(uint8_t(w::Status::Ok));
+            w::writeFileInfo(out, info);
+            return true;
+        }
+        case w::Op::Quit: return false;
+    }
+    throw FormatError("reader: unknown request");
+}
+
+void error(w::Writer& out, w::Status status, const char* what) {
+    out.u8(uint8_t(status));
+    out.str(what);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Limits limits;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        std::string a = argv[i];
+        if (a == "--memory-mb") limits.memoryMb = std::strtoull(argv[i + 1], nullptr, 10);
+        if (a == "--cpu-s") limits.cpuSeconds = std::strtoull(argv[i + 1], nullptr, 10);
+    }
+    limitMemory(limits);
+    std::unique_ptr<OpenSource> open;
+    w::Writer out(kSocketFd);
+    for (;;) {
+        w::Reader in(kSocketFd);
+        w::Op op;
+        try {
+            op = w::Op(in.u8());
+        } catch (const w::Broken&) {
+            return 0;  // the library closed the socket
+        }
+        limitCpuForRequest(limits);
+        try {
+            if (!answer(op, in, out, open)) return 0;
+        } catch (const w::Broken&) {
+            return 0;
+        } catch (const IoError& e) {
+            error(out, w::Status::IoError, e.what());
+        } catch (const FormatError& e) {
+            error(out, w::Status::FormatError, e.what());
+        } catch (const FieldError& e) {
+            error(out, w::Status::FieldError, e.what());
+        } catch (const ConfigError& e) {
+            error(out, w::Status::ConfigError, e.what());
+        } catch (const std::bad_alloc&) {
+            error(out, w::Status::Other, "out of memory while reading (the reader's limit)");
+        } catch (const std::exception& e) {
+            error(out, w::Status::Other, e.what());
+        }
+        if (!out.flush()) return 0;
+    }
+}

@@ -1,0 +1,237 @@
+#include "io/reader_process.h"
+
+#include "core/errors.h"
+#include "io/reader_wire.h"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+extern char** environ;
+
+namespace flowsurf::io::detail {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+long envNumber(const char* name, long fallback) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) return fallback;
+    char* end = nullptr;
+    long n = std::strtol(v, &end, 10);
+    return end && *end == '\0' && n > 0 ? n : fallback;
+}
+
+unsigned long long defaultMemoryMb() {
+    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || size <= 0) return 8192;
+    return std::max<unsigned long long>(2048, (unsigned long long)pages * size / 4 * 3 >> 20);
+}
+
+bool sanitized() {
+#if defined(__SANITIZE_ADDRESS__)
+    return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return true;
+#endif
+#endif
+    return false;
+}
+
+std::string signalText(int sig) {
+    switch (sig) {
+        case SIGSEGV: return "crashed (SIGSEGV)";
+        case SIGBUS: return "crashed (SIGBUS)";
+        case SIGFPE: return "crashed (SIGFPE)";
+        case SIGILL: return "crashed (SIGILL)";
+        case SIGABRT: return "aborted (SIGABRT)";
+        case SIGXCPU: return "ran out of CPU time (SIGXCPU)";
+        default: return std::string("was killed by signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")";
+    }
+}
+
+}  // namespace
+
+std::string readerExecutable() {
+    if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
+    // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&readerExecutable), &info) && info.dli_fname) {
+        std::error_code ec;
+        fs::path self = fs::canonical(info.dli_fname, ec);
+        if (!ec) {
+            const fs::path dir = self.parent_path();
+            for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
+                if (access(p.c_str(), X_OK) == 0) return p.string();
+        }
+    }
+#ifdef FLOWSURF_READER_BUILD_PATH
+    if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
+#endif
+    throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
+}
+
+ReaderProcess::ReaderProcess()
+    : timeoutS_(int(envNumber("FLOWSURF_READER_TIMEOUT_S", 300))),
+      memoryMb_((unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", long(defaultMemoryMb()))) {
+    // An address-space limit breaks AddressSanitizer's shadow memory.
+    if (sanitized()) memoryMb_ = 0;
+    spawn();
+}
+
+ReaderProcess::~ReaderProcess() {
+    if (pid_ <= 0) return;
+    wire::Writer w(fd_);
+    w.u8(uint8_t(wire::Op::Quit));
+    w.flush();
+    reap(false);
+}
+
+void ReaderProcess::spawn() {
+    const std::string exe = readerExecutable();
+    int sv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
+        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, sv[1], 3);  // dup2 clears close-on-exec
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    // VTK's own printing is trapped in the child; what escapes (a crash's last words) is noise.
+    if (!std::getenv("FLOWSURF_READER_STDERR")) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    const std::string mem = std::to_string(memoryMb_), cpu = std::to_string(timeoutS_);
+    std::vector<char*> argv{const_cast<char*>(exe.c_str()), const_cast<char*>("--memory-mb"),
+                            const_cast<char*>(mem.c_str()), const_cast<char*>("--cpu-s"),
+                            const_cast<char*>(cpu.c_str()), nullptr};
+    pid_t pid = -1;
+    int rc = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(sv[1]);
+    if (rc != 0) {
+        close(sv[0]);
+        throw IoError("cannot start the reader process " + exe + ": " + std::strerror(rc));
+    }
+    pid_ = pid;
+    fd_ = sv[0];
+}
+
+std::string ReaderProcess::reap(bool kill) {
+    if (pid_ <= 0) return "is not running";
+    if (kill) ::kill(pid_, SIGKILL);
+    close(fd_);  // a child blocked on the socket sees the end of the stream
+    fd_ = -1;
+    int status = 0;
+    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1;
+    if (WIFSIGNALED(status)) return signalText(WTERMSIG(status));
+    if (WIFEXITED(status)) return "exited unexpectedly (status " + std::to_string(WEXITSTATUS(status)) + ")";
+    return "stopped";
+}
+
+template <typename Send, typename Parse>
+auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
+    if (pid_ <= 0) {
+        spawn();
+        if (!lastOpen_.empty()) {  // the previous child died: restore its open source
+            const std::string path = lastOpen_;
+            lastOpen_.clear();
+            openLocked(path, lastPatches_);
+        }
+    }
+    wire::Writer w(fd_);
+    send(w);
+    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(timeoutS_);
+    wire::Reader r(fd_, deadline);
+    try {
+        if (!w.flush()) throw wire::Broken{};
+        auto status = wire::Status(r.u8());
+        if (status != wire::Status::Ok) {
+            std::string what = r.str();
+            switch (status) {
+                case wire::Status::IoError: throw IoError(what);
+                case wire::Status::FormatError: throw FormatError(what);
+                case wire::Status::FieldError: throw FieldError(what);
+                case wire::Status::ConfigError: throw ConfigError(what);
+                default: throw FormatError(label + ": " + what);
+            }
+        }
+        return parse(r);
+    } catch (const wire::Broken& b) {
+        // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
+        std::string why = reap(true);
+        if (b.timedOut) why = "took longer than " + std::to_string(timeoutS_) + " s (FLOWSURF_READER_TIMEOUT_S)";
+        throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
+    }
+}
+
+core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
+    std::lock_guard lock(mutex_);
+    return call(
+        path,
+        [&](wire::Writer& w) {
+            w.u8(uint8_t(wire::Op::Dataset));
+            w.str(path);
+            w.u64(maxSteps);
+        },
+        [](wire::Reader& r) { return wire::readDataset(r); });
+}
+
+ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const std::string& patches) {
+    std::lock_guard lock(mutex_);
+    return openLocked(path, patches);
+}
+
+ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const std::string& patches) {
+    SourceInfo info = call(
+        path,
+        [&](wire::Writer& w) {
+            w.u8(uint8_t(wire::Op::Open));
+            w.str(path);
+            w.str(patches);
+        },
+        [](wire::Reader& r) {
+            SourceInfo s;
+            s.format = r.str();
+            s.times.resize(size_t(r.count(1 << 24)));
+            for (double& t : s.times) t = r.f64();
+            return s;
+        });
+    lastOpen_ = path;
+    lastPatches_ = patches;
+    return info;
+}
+
+core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
+    std::lock_guard lock(mutex_);
+    return call(
+        label,
+        [&](wire::Writer& w) {
+            w.u8(uint8_t(wire::Op::Step));
+            w.u64(index);
+        },
+        [](wire::Reader& r) { return r.mesh(); });
+}
+
+FileInfo ReaderProcess::inspect(const std::string& path) {
+    std::lock_guard lock(mutex_);
+    return call(
+        path,
+        [&](wire::Writer& w) {
+            w.u8(uint8_t(wire::Op::Inspect));
+            w.str(path);
+        },
+        [](wire::Reader& r) { return wire::readFileInfo(r); });
+}
+
+}  // namespace flowsurf::io::detail

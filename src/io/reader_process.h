@@ -1,0 +1,67 @@
+// flowsurf — files are read in a child process (private to src/io). VTK's readers (and
+// our PLY/OBJ parsers) run in `flowsurf-reader`, started with posix_spawn (never fork:
+// the step prefetch thread makes it unsafe) under RLIMIT_AS, a CPU-time limit per request
+// and a wall-clock timeout; the surface comes back over a socket. A crash, abort, hang or
+// allocation bomb ends the child and becomes a one-line FormatError naming the file.
+// One ReaderProcess serves many requests: a time series keeps its child alive.
+//
+// Environment: FLOWSURF_READER (the executable; default: next to the library, in
+// ../libexec/flowsurf/, else the build tree's), FLOWSURF_READER_MEMORY_MB (address space,
+// default 3/4 of physical memory), FLOWSURF_READER_TIMEOUT_S (wall clock per request,
+// default 300; CPU time gets the same budget).
+#pragma once
+
+#include "core/mesh.h"
+#include "io/dataset_reader.h"
+
+#include <sys/types.h>
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace flowsurf::io::detail {
+
+class ReaderProcess {
+public:
+    ReaderProcess();  // spawns the child; throws IoError if it cannot be started
+    ~ReaderProcess();
+    ReaderProcess(const ReaderProcess&) = delete;
+    ReaderProcess& operator=(const ReaderProcess&) = delete;
+
+    // Every time step of `path` (at most `maxSteps`, 0 = all).
+    core::Dataset readDataset(const std::string& path, size_t maxSteps);
+    // Opens `path` as the child's current multi-step source: its format and times.
+    // `patches`: OpenFOAM boundary patches to read (regular expression; empty: all).
+    struct SourceInfo {
+        std::string format;
+        std::vector<double> times;
+    };
+    SourceInfo open(const std::string& path, const std::string& patches = "");
+    // Step `index` of the source opened last; `label` names it in errors.
+    core::SurfaceMesh readStep(size_t index, const std::string& label);
+    FileInfo inspect(const std::string& path);
+
+private:
+    // Sends a request, then parses the reply with `parse` (called with a wire::Reader
+    // after an Ok status); a typed error from the child is rethrown, a dead or hung
+    // child becomes a FormatError naming `label`.
+    template <typename Send, typename Parse>
+    auto call(const std::string& label, Send send, Parse parse);
+    void spawn();
+    SourceInfo openLocked(const std::string& path, const std::string& patches);
+    // Ends the child (killing it if needed) and returns why it died, for messages.
+    std::string reap(bool kill);
+
+    std::mutex mutex_;  // the prefetch thread and the caller share a child
+    pid_t pid_ = -1;
+    int fd_ = -1;
+    int timeoutS_ = 300;
+    unsigned long long memoryMb_ = 0;
+    std::string lastOpen_, lastPatches_;  // re-opened after a restart
+};
+
+// Where flowsurf-reader is (see above); throws IoError if nowhere.
+std::string readerExecutable();
+
+}  // namespace flowsurf::io::detail

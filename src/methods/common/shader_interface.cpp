@@ -1,0 +1,44 @@
+#include "methods/common/shader_interface.h"
+
+#include "core/noise.h"
+#include "methods/common/params.h"
+#include "methods/common/time_levels.h"
+
+#include <cctype>
+
+namespace flowsurf::methods {
+
+namespace {
+// PREFIX_NAME value for each entry of a name table: "gray-lit" -> OVERLAY_GRAY_LIT.
+template <typename E, size_t N>
+std::string enumDefines(const char* prefix, const EnumNames<E, N>& names) {
+    std::string out;
+    for (const auto& [value, name] : names) {
+        std::string id = prefix;
+        id += '_';
+        for (char c : name) id += c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
+        out += "#define " + id + " " + std::to_string(int(value)) + "\n";
+    }
+    return out;
+}
+}  // namespace
+
+const std::string& shaderInterface() {
+    static const std::string defines = [] {
+        std::string s = "#define NOISE_MEAN " + std::to_string(core::kNoiseMean) + "\n";
+        s += "#define MAX_LEVELS " + std::to_string(TimeLevelSource::kMaxLevels) + "\n";
+        s += enumDefines("NOISE_PROFILE", kNoiseProfileNames);
+        s += enumDefines("OVERLAY", kOverlayNames);
+        s += enumDefines("KERNEL", kKernelNames);
+        s += enumDefines("INTEGRATOR", kIntegratorNames);
+        s += enumDefines("EDGE_FILL", kEdgeFillNames);
+        return s;
+    }();
+    return defines;
+}
+
+gl::Program program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines) {
+    return gl::Program(stages, shaderInterface() + defines);
+}
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,22 @@
+// flowsurf — the typed interface between C++ and GLSL: every enum value and limit a
+// shader compares against reaches it as a `#define` generated from the C++ definition
+// (the enum name tables of params.h, TimeLevelSource::kMaxLevels, core::kNoiseMean), so
+// no number is copied by hand. Every program of the methods is built by `program()`,
+// which prepends these definitions to its own variant defines.
+#pragma once
+
+#include "gl/objects.h"
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+namespace flowsurf::methods {
+
+// "#define NOISE_MEAN 0.5\n#define KERNEL_GAUSSIAN 2\n#define MAX_LEVELS 9\n..."
+const std::string& shaderInterface();
+
+// A linked program of the embedded `stages` with the interface and `defines` prepended.
+gl::Program program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines = "");
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,54 @@
+#include "methods/make_renderer.h"
+
+#include "core/errors.h"
+#include "methods/hybrid/hybrid_renderer.h"
+#include "methods/ibfvs/ibfvs_renderer.h"
+#include "methods/isa/isa_renderer.h"
+
+namespace flowsurf::methods {
+
+namespace {
+std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params, const core::Viewport& viewport) {
+    switch (method) {
+        case Method::Isa: return std::make_unique<isa::IsaRenderer>(params, viewport);
+        case Method::Ibfvs: return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);
+        case Method::Hybrid:
+            if (params.hybrid.noiseSize != 64 && params.hybrid.noiseSize != 128)
+                throw ConfigError("--noise-size must be 64 or 128");
+            return std::make_unique<hybrid::HybridRenderer>(params, viewport);
+    }
+    throw ConfigError("unknown method");
+}
+}  // namespace
+
+Method methodFromName(const std::string& name) {
+    for (size_t i = 0; i < kMethodNames.size(); ++i)
+        if (name == kMethodNames[i]) return Method(i);
+    throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs, hybrid)");
+}
+
+std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
+                                       const core::Viewport& viewport) {
+    return makeRenderer(methodFromName(name), params, viewport);
+}
+
+std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& params, const core::Viewport& viewport) {
+    const std::string name(kMethodNames[size_t(method)]);
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (viewport.width > maxSize || viewport.height > maxSize)
+        throw ConfigError("image size " + std::to_string(viewport.width) + "x" + std::to_string(viewport.height) +
+                          " exceeds this OpenGL's largest texture (" + std::to_string(maxSize) + ")");
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    std::unique_ptr<FlowMethod> renderer = construct(method, params, viewport);
+    // Render targets are allocated above: an absurd size shows up here, not as a crash.
+    if (GLenum err = glGetError(); err == GL_OUT_OF_MEMORY)
+        throw GlError("not enough graphics memory for " + std::to_string(viewport.width) + "x" +
+                      std::to_string(viewport.height) + " with method " + name);
+    else if (err != GL_NO_ERROR)
+        throw GlError("OpenGL error 0x" + std::to_string(err) + " while setting up method " + name);
+    return renderer;
+}
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,25 @@
+// flowsurf — the one place that knows every method: builds a renderer by kind. Kept out
+// of common/ so the shared stages do not depend on the methods built on them.
+#pragma once
+
+#include "methods/common/frame.h"
+
+#include <memory>
+#include <string>
+
+namespace flowsurf::methods {
+
+enum class Method { Isa, Ibfvs, Hybrid };
+
+// "isa", "ibfvs", "hybrid" (kMethodNames) -> Method. Throws ConfigError.
+Method methodFromName(const std::string& name);
+
+// A renderer of `method` for `viewport`. Throws ConfigError (bad parameters) or GlError
+// (out of graphics memory, or any GL error while setting it up).
+std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& params, const core::Viewport& viewport);
+
+// makeRenderer(methodFromName(name), ...).
+std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
+                                       const core::Viewport& viewport);
+
+}  // namespace flowsurf::methods
