@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "io/exodus_check.h"
+#include "io/legacy_check.h"
 #include "io/obj_reader.h"
 #include "io/ply_reader.h"
 #include "io/xml_check.h"
@@ -184,6 +185,7 @@ vtkSmartPointer<Reader> readerFor(const std::string& path) {
 }
 
 std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& trap) {
+    checkLegacyFile(path);  // old-layout cell lists crash VTK's reader when corrupt
     auto r = readerFor<vtkGenericDataObjectReader>(path);
     trap.watch(r);
     r->UpdateInformation();

@@ -1,9 +1,6 @@
 // flowsurf — one reader per file extension, seen as a list of time steps (private to
-// src/io, run in the reader process). VTK readers for most formats, behind pre-checks
-// that give a better message than the reader's crash or silence (xml_check: refused
-// before gigabytes are allocated; exodus_check: truncated data VTK reads as zeros);
-// our own parsers for PLY and OBJ. A crash of VTK's legacy reader on corrupt old-layout
-// cell lists is caught by the process isolation (reader_process.h).
+// src/io). VTK readers for most formats, behind pre-checks where VTK 9.1 crashes on
+// bad input (legacy_check, xml_check, exodus_check); our own parsers for PLY and OBJ.
 // A StepSource hands out the raw output per step; surface_pipeline.h turns that into
 // a triangle surface.
 #pragma once

@@ -203,7 +203,7 @@ std::vector<OptionSpec> buildTable() {
         s.set = [](RenderOptions& o, const std::string& v) {
             if (v.empty()) { o.timeStepGiven = false; o.timeStep = 0; return; }
             double d = parseNumber(v, "--time-step");
-            if (d < 0 || d != std::floor(d)) throw ConfigError("--time-step: '" + v + "' is not a step index");
+            if (d < 0 || d > 1e9 || d != std::floor(d)) throw ConfigError("--time-step: '" + v + "' is not a step index");
             o.timeStep = size_t(d);
             o.timeStepGiven = true;
         };

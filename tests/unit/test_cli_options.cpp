@@ -170,6 +170,8 @@ TEST(CliOptions, ConfigFileErrorsNameFileAndKey) {
     EXPECT_THROW(applyConfigFile(path, o), FormatError);
     write("[1, 2]");
     EXPECT_THROW(applyConfigFile(path, o), FormatError);
+    write("{\"time-step\": \"1e46\"}");  // beyond size_t: was undefined behaviour (found by fuzz_options)
+    EXPECT_THROW(applyConfigFile(path, o), ConfigError);
     write("{\"alpha\": 1e99999}");  // nlohmann throws out_of_range, not parse_error (found by fuzz_config)
     EXPECT_THROW(applyConfigFile(path, o), FormatError);
     write("{\"keyframes\": [{\"frame\": 0, \"eye\": [0, 7e923384, 0]}]}");  // found by fuzz_camera_path
