@@ -181,3 +181,11 @@ TEST(CliOptions, ConfigFileErrorsNameFileAndKey) {
     const char* argv[] = {"flowsurf", "render", "--config", "a.json", "-o", "x.png"};
     EXPECT_EQ(findConfigArgument(6, argv).value(), "a.json");
 }
+
+// A folder where a JSON file is expected is an IoError, not an uncaught stream failure
+// (found by fuzz_options: --colormap-file /).
+TEST(CliOptions, JsonFileThatIsAFolderIsAnIoError) {
+    RenderOptions o;
+    EXPECT_THROW(applyConfigFile(::testing::TempDir(), o), IoError);
+    EXPECT_THROW(setOption(o, "colormap-file", ::testing::TempDir()), IoError);
+}
