@@ -36,22 +36,8 @@ if [ "$(id -u)" != 0 ] && command -v sudo >/dev/null 2>&1; then SUDO="sudo"; fi
 
 # --- 1. Debian packages ------------------------------------------------------------------
 t0=$SECONDS
-need=()
-for p in paraview paraview-dev xvfb xauth openmpi-bin python3-numpy cmake g++ pkg-config \
-         libglm-dev libepoxy-dev libegl-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need+=("$p")
-done
-if [ "${#need[@]}" -gt 0 ]; then
-  log "installing: ${need[*]}"
-  $SUDO apt-get update -qq >&2
-  sim="$(DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -s --no-install-recommends "${need[@]}")"
-  if echo "$sim" | grep -q '^Remv '; then
-    log "ERROR: installing ${need[*]} would remove packages; refusing:"
-    echo "$sim" | grep '^Remv ' >&2
-    exit 1
-  fi
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
-fi
+"$ROOT/scripts/apt-install.sh" paraview paraview-dev xvfb xauth openmpi-bin python3-numpy cmake g++ pkg-config \
+    libglm-dev libepoxy-dev libegl-dev
 log "packages ready ($((SECONDS - t0)) s)"
 
 # --- 2. python3-paraview in a private prefix ---------------------------------------------

@@ -31,30 +31,7 @@ if [ "$(id -u)" != 0 ]; then
 fi
 
 # --- Debian packages -------------------------------------------------------
-need=()
-for p in paraview xvfb xauth python3-numpy; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    need+=("$p")
-  fi
-done
-if [ "${#need[@]}" -gt 0 ]; then
-  log "installing: ${need[*]}"
-  $SUDO apt-get update -qq >&2
-  # --no-install-recommends is essential: paraview *recommends* python3-paraview,
-  # which conflicts with python3-vtk9, so a plain install removes python3-vtk9
-  # and libvtk9-dev (flowsurf's build dependency).  Second guard: simulate
-  # first and refuse if apt would remove anything.
-  sim="$(DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -s --no-install-recommends "${need[@]}")"
-  if echo "$sim" | grep -q '^Remv '; then
-    log "ERROR: installing ${need[*]} would remove packages; refusing:"
-    echo "$sim" | grep '^Remv ' >&2
-    exit 1
-  fi
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
-    "${need[@]}" >&2
-else
-  log "packages already installed: paraview xvfb xauth python3-numpy"
-fi
+"$(dirname "$0")/../../scripts/apt-install.sh" paraview xvfb xauth python3-numpy
 
 PV_VERSION="$(dpkg-query -W -f='${Version}' paraview)"
 log "paraview package version: $PV_VERSION"

@@ -126,6 +126,17 @@ OptionSpec text(std::string name, std::string group, std::string help, Ref ref, 
     return s;
 }
 
+// ARRAY or ARRAY:x|y|z|mag, checked for its syntax when set (empty: none).
+template <typename Ref>
+OptionSpec scalarSpec(std::string name, std::string group, std::string help, Ref ref) {
+    OptionSpec s = text(std::move(name), std::move(group), std::move(help), ref);
+    s.set = [ref](RenderOptions& o, const std::string& v) {
+        if (!v.empty()) core::ScalarSpec::parse(v);
+        ref(o) = v;
+    };
+    return s;
+}
+
 // An optional x,y,z (unset: fitted to the bounds).
 OptionSpec vec3(std::string name, std::string help, std::optional<glm::vec3> RenderOptions::*field) {
     OptionSpec s{std::move(name), "", "Camera", std::move(help), OptionKind::Vec3, 0, 0, {}, true, nullptr, nullptr};
@@ -323,17 +334,8 @@ std::vector<OptionSpec> buildTable() {
         s.get = [](const RenderOptions& o) { return o.params.common.colormapFile; };
         add(s);
     }
-    {
-        OptionSpec s{"color-by", "", gLook, "Colour by ARRAY (a point or cell scalar, or a vector's magnitude) or "
-                     "ARRAY:x|y|z|mag (default: the shown field's speed)", OptionKind::Text, 0, 0, {}, true, nullptr,
-                     nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            if (!v.empty()) core::ScalarSpec::parse(v);
-            o.params.common.colorBy = v;
-        };
-        s.get = [](const RenderOptions& o) { return o.params.common.colorBy; };
-        add(s);
-    }
+    add(scalarSpec("color-by", gLook, "Colour by ARRAY (a point or cell scalar, or a vector's magnitude) or "
+                    "ARRAY:x|y|z|mag (default: the shown field's speed)", FS_REF(params.common.colorBy)));
     {
         OptionSpec s{"color-range", "", gLook, "Values at the ends of the colour map: MIN:MAX, or auto (each frame's "
                      "range) (default: the data range over all time steps)", OptionKind::Text, 0, 0, {}, true, nullptr,
@@ -348,16 +350,8 @@ std::vector<OptionSpec> buildTable() {
     add(flag("legend", gLook, "Draw a colour legend (scalar bar with title and ticks) into the image",
              FS_REF(params.common.legend)));
     add(text("title", gLook, "Legend title (default: the colour array's name)", FS_REF(params.common.title)));
-    {
-        OptionSpec s{"mask-by", "", gLook, "Texture contrast follows this scalar (ARRAY or ARRAY:x|y|z|mag), as "
-                     "--velocity-mask does speed ([L] Fig. 13)", OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            if (!v.empty()) core::ScalarSpec::parse(v);
-            o.params.common.maskBy = v;
-        };
-        s.get = [](const RenderOptions& o) { return o.params.common.maskBy; };
-        add(s);
-    }
+    add(scalarSpec("mask-by", gLook, "Texture contrast follows this scalar (ARRAY or ARRAY:x|y|z|mag), as "
+                    "--velocity-mask does speed ([L] Fig. 13)", FS_REF(params.common.maskBy)));
     {
         OptionSpec s{"mask-range", "", gLook, "Values of --mask-by at zero and full contrast, MIN:MAX (default: each "
                      "frame's range)", OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};

@@ -95,9 +95,11 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     }
     if (!state.showPanel) return;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    // At most the window's height: the panel scrolls rather than running off the bottom.
+    const float maxHeight = ImGui::GetIO().DisplaySize.y - 16.0f;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(1e6f, std::max(maxHeight, 100.0f)));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("flowsurf", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Begin("flowsurf", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_AlwaysVerticalScrollbar);
     ImGui::PushItemWidth(170);
 
     if (!state.error.empty()) {

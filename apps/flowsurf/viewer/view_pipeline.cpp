@@ -5,6 +5,8 @@
 #include "gl/readback.h"
 #include "session/scene_setup.h"
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
 
 namespace flowsurf::app::view {
@@ -83,6 +85,12 @@ void ViewPipeline::build(const RenderOptions& o, const std::vector<std::string>&
     }
     options_ = std::move(options);
     methods_ = std::move(made);
+    readFbos_.clear();
+    for (const auto& m : methods_) {
+        readFbos_.push_back(gl::Framebuffer::create());
+        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, m->composite());
+        glNamedFramebufferReadBuffer(readFbos_.back().id(), GL_COLOR_ATTACHMENT0);
+    }
     names_ = methodNames;
     size_ = size;
     field_ = surface_->field();

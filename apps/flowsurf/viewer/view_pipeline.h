@@ -30,6 +30,8 @@ public:
 
     size_t viewCount() const { return methods_.size(); }
     methods::FlowMethod& method(size_t i) { return *methods_[i]; }
+    // A read framebuffer on view i's composite (made once per build), for the window blit.
+    GLuint compositeReadFbo(size_t i) const { return readFbos_[i].id(); }
     const std::string& methodName(size_t i) const { return names_[i]; }
     core::Viewport viewSize() const { return size_; }
 
@@ -51,6 +53,7 @@ private:
     std::unique_ptr<AnimatedSurface> surface_;
     std::vector<std::unique_ptr<methods::FlowMethod>> methods_;
     std::vector<std::string> names_;
+    std::vector<gl::Framebuffer> readFbos_;
     core::Viewport size_;
     core::Bounds bounds_;
     std::vector<double> times_;

@@ -156,14 +156,9 @@ void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo
         // Each view's composite, left to right, into the window.
         const core::Viewport v = pipeline.viewSize();
         for (size_t i = 0; i < pipeline.viewCount(); ++i) {
-            GLuint fbo = 0;
-            glCreateFramebuffers(1, &fbo);
-            glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, pipeline.method(i).composite().id(), 0);
-            glNamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);
             const int x0 = int(i) * v.width;
-            glBlitNamedFramebuffer(fbo, 0, 0, 0, v.width, v.height, x0, fh - v.height, x0 + v.width, fh,
-                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            glDeleteFramebuffers(1, &fbo);
+            glBlitNamedFramebuffer(pipeline.compositeReadFbo(i), 0, 0, 0, v.width, v.height, x0, fh - v.height,
+                                   x0 + v.width, fh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         }
     }
     ImGui_ImplOpenGL3_NewFrame();
