@@ -47,6 +47,10 @@ for fmt, tag in (("<", "binary_little_endian"), (">", "binary_big_endian")):
     body = b"".join(struct.pack(fmt + "fff", *p) for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0)))
     body += struct.pack(fmt + "BIII", 3, 0, 1, 2)
     seed("fuzz_ply", tag + ".ply", head + body)
+# Regressions: inputs a fuzz run once stopped on, kept so every run tries them again.
+seed("fuzz_ply", "regress_empty_element_huge_count.ply",  # hung: 2^64-1 items of no properties
+     "ply\nformat binary_little_endian 1.0\nelement junk 18446744073709551615\nelement vertex 1\n"
+     "property float x\nproperty float y\nproperty float z\nend_header\n" + "\0" * 12)
 
 # OBJ: vertices, normals, texture coordinates, faces with every index form, negatives.
 seed("fuzz_obj", "quad.obj", "# seed\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"

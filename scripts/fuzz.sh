@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan), writes their seed
 # corpora (fuzz/make_seeds.py) and runs each target on one core.
-#   scripts/fuzz.sh                      every target for 60 s (what CI runs)
-#   scripts/fuzz.sh --runs 1000000       every target for 1M executions
-#   scripts/fuzz.sh --time 3600 fuzz_ply one target for an hour (a long run)
+#   scripts/fuzz.sh                      every target, seed 1, a fixed number of executions
+#                                        (what CI runs: the same inputs on every machine, so a
+#                                        run that passed here passes there)
+#   scripts/fuzz.sh --runs 1000000       every target for 1M executions, random seed
+#   scripts/fuzz.sh --time 3600 fuzz_ply one target for an hour, random seed (a long run:
+#                                        add what it finds to fuzz/make_seeds.py as a regression)
 # Corpora grow in build-fuzz/corpus/<target>/; crashes land in build-fuzz/crashes/.
 # Exit status: non-zero if a target found a crash, leak or undefined behaviour.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-budget=(-max_total_time=60)
+budget=(-runs=${FUZZ_RUNS:-300000} -seed=1)
 targets=()
 while [ $# -gt 0 ]; do
     case "$1" in

@@ -275,6 +275,9 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path) {
     geometry.normals->SetNumberOfComponents(3);
     Body body(bytes, header.dataStart, header.encoding);
     for (const Element& e : header.elements) {
+        // An element without properties holds no bytes, whatever its count: nothing to read
+        // (looping over a count of 2^64 - 1 empty items would hang).
+        if (e.properties.empty()) continue;
         // A count the rest of the file cannot hold is refused before anything is allocated.
         const uint64_t need = minItemBytes(e, header.encoding);
         if (need > 0 && e.count > body.remaining() / need)

@@ -2,6 +2,7 @@
 // prints nothing (VTK's own reports are captured, not shown).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
+#include "io/ply_reader.h"
 
 #include "test_io_common.h"
 
@@ -176,6 +177,20 @@ TEST(IoReaders, MalformedPlyHeadersAreFormatErrors) {
         writeText(dir.file(name), text);
         expectReadError<FormatError>(dir.file(name), name, why);
     }
+}
+
+// Found by fuzz_ply: an element with no properties and a count of 2^64 - 1 held the reader
+// in a loop over empty items. Such an element holds no bytes; the file reads at once.
+TEST(IoReaders, PlyElementWithoutPropertiesAndHugeCountReadsAtOnce) {
+    ScratchDir dir;
+    writeText(dir.file("empty_element.ply"),
+              "ply\nformat ascii 1.0\nelement junk 18446744073709551615\n"
+              "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+              "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const auto poly = io::detail::readPly(dir.file("empty_element.ply"));
+    EXPECT_EQ(poly->GetNumberOfPoints(), 3);
+    EXPECT_EQ(poly->GetNumberOfPolys(), 1);
 }
 
 TEST(IoReaders, MalformedObjNamesTheLine) {
