@@ -83,6 +83,10 @@ def render(TAG, PARTITIONS):
         rep.FlowSurfMethod = method
         Render(view)
         SaveScreenshot(os.path.join(OUT, '%s_%s.png' % (method, TAG)), view, ImageResolution=[W, H])
+    # A missing vector array on every rank: ParaView's error on each, no rank left
+    # waiting in a collective step (the wrapper's timeout would end a hang).
+    rep.FlowSurfVectors = ['POINTS', 'NoSuchArray']
+    Render(view)
     print('RENDERED', TAG)
 
 
