@@ -18,9 +18,18 @@ export PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages"
 MPI=(mpiexec --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none)
 run() {  # TAG PARTITIONS NP
   echo "== $1: $3 rank(s), partitions $2"
-  timeout 240 xvfb-run -a "${MPI[@]}" -np "$3" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" render "$1" "$2" \
-    >"$OUT/$1.log" 2>&1
-  local rc=$?
+  local rc attempt
+  # An X display taken by another xvfb-run starting at the same moment (outside ctest's
+  # xvfb lock) makes pvbatch abort with "bad X server connection": that, and only that,
+  # is tried again on a fresh display.
+  for attempt in 1 2 3; do
+    timeout 240 xvfb-run -a "${MPI[@]}" -np "$3" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" render "$1" "$2" \
+      >"$OUT/$1.log" 2>&1
+    rc=$?
+    grep -q -e "bad X server connection" -e "Xvfb failed to start" "$OUT/$1.log" || break
+    echo "$1: no X display (attempt $attempt), again"
+    sleep 2
+  done
   grep -E "RENDERED" "$OUT/$1.log"
   [ $rc -eq 0 ] && grep -q "^RENDERED $1" "$OUT/$1.log" || { echo "$1: pvbatch failed ($rc)"; cat "$OUT/$1.log"; exit 1; }
   grep -q "no 3-component point array 'NoSuchArray'" "$OUT/$1.log" || { echo "$1: no error for a missing array"; exit 1; }
