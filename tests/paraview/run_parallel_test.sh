@@ -16,20 +16,25 @@ export PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages"
 # Open MPI as root (CI) and more ranks than cores; shared-memory transport without
 # ptrace-based single copy (refused in containers).
 MPI=(mpiexec --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none)
-run() {  # TAG PARTITIONS NP
-  echo "== $1: $3 rank(s), partitions $2"
-  local rc attempt
-  # An X display taken by another xvfb-run starting at the same moment (outside ctest's
-  # xvfb lock) makes pvbatch abort with "bad X server connection": that, and only that,
-  # is tried again on a fresh display.
+# xrun LOG CMD...: CMD under xvfb-run with its output in LOG. A display taken by another
+# xvfb-run starting at the same moment (outside ctest's xvfb lock) makes pvbatch abort with
+# "bad X server connection": that, and only that, is tried again on a fresh display.
+xrun() {
+  local log="$1" rc attempt
+  shift
   for attempt in 1 2 3; do
-    timeout 240 xvfb-run -a "${MPI[@]}" -np "$3" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" render "$1" "$2" \
-      >"$OUT/$1.log" 2>&1
+    timeout 240 xvfb-run -a "$@" >"$log" 2>&1
     rc=$?
-    grep -q -e "bad X server connection" -e "Xvfb failed to start" "$OUT/$1.log" || break
-    echo "$1: no X display (attempt $attempt), again"
+    grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log" || return $rc
+    echo "no X display (attempt $attempt), again"
     sleep 2
   done
+  return $rc
+}
+run() {  # TAG PARTITIONS NP
+  echo "== $1: $3 rank(s), partitions $2"
+  xrun "$OUT/$1.log" "${MPI[@]}" -np "$3" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" render "$1" "$2"
+  local rc=$?
   grep -E "RENDERED" "$OUT/$1.log"
   [ $rc -eq 0 ] && grep -q "^RENDERED $1" "$OUT/$1.log" || { echo "$1: pvbatch failed ($rc)"; cat "$OUT/$1.log"; exit 1; }
   grep -q "no 3-component point array 'NoSuchArray'" "$OUT/$1.log" || { echo "$1: no error for a missing array"; exit 1; }
@@ -38,6 +43,6 @@ run np1 0 1
 run np2 0 2
 run np4 0 4
 run np4of2 2 4
-timeout 120 xvfb-run -a pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" compare np1 np2 np4 np4of2 >"$OUT/compare.log" 2>&1
+xrun "$OUT/compare.log" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" compare np1 np2 np4 np4of2
 cat "$OUT/compare.log"
 grep -q '^PASSED' "$OUT/compare.log"
