@@ -16,6 +16,10 @@ rank count N > 1, mesh and method, against the 1-rank image of the same mesh and
                   B = 2S px (half a streak; streaks are ~4S px long) of a seam pixel, a surface
                   pixel whose 4-neighbour belongs to another rank in the N-rank ProcessId image
   far_diff        mean |difference| on the surface farther than 2B from the seam
+  oversubscribed  1 when N > cores (here 4 ranks on 2 cores): the seam numbers hold, the
+                  ms/render is no speed figure
+  run_peak_rss_mb the largest peak RSS of one rank over the whole N-rank run (all meshes), from
+                  /usr/bin/time in np{N}/pvbatch.log
   contrast        standard deviation of the 1-rank gray over the surface (the texture's
                   contrast: read the differences against it)
 
@@ -39,14 +43,16 @@ def markdown(path):
           '| seam band | far from seam |')
     print('|---:|---|---:|---:|---:|---:|---:|---:|---:|')
     for r in rows:
-        print('| {:,} | {} | {} | {} ({}) | {} | {} | {} | {} | {} |'.format(
+        over = r.get('oversubscribed') == '1'
+        print('| {:,} | {} | {} | {}{} ({}) | {} | {} | {} | {} | {} |'.format(
             int(r['triangles']), NAMES.get(r['method'], r['method']), r['ranks'], r['ms_median'],
-            r['ms_min'], r['contrast'], r['mean_diff'] or '–', r['worst_tile'] or '–',
+            ' †' if over else '', r['ms_min'], r['contrast'], r['mean_diff'] or '–', r['worst_tile'] or '–',
             r['seam_band_diff'] or '–', r['far_diff'] or '–'))
 
 
 if sys.argv[1] == '--markdown':
     markdown(sys.argv[2])
+    print('\n† more ranks than cores: no speed figure (the seam numbers hold)')
     sys.exit(0)
 out, csv_path = sys.argv[1], sys.argv[2]
 diff_dir = sys.argv[3] if len(sys.argv) > 3 else os.path.join(out, 'diff')
@@ -110,6 +116,18 @@ for sub in sorted(os.listdir(out)):
 if 1 not in runs:
     sys.exit('no np1/timings.json under %s: the 1-rank run is the reference' % out)
 
+CORES = os.cpu_count() or 1
+
+
+def peak_rss_mb(n):
+    try:
+        with open(os.path.join(out, 'np%d' % n, 'pvbatch.log')) as f:
+            kb = [int(line.split()[2]) for line in f if line.startswith('rank maxrss_kb')]
+        return round(max(kb) / 1024.0) if kb else ''
+    except OSError:
+        return ''
+
+
 rows = []
 for n in sorted(runs):
     info = runs[n]
@@ -139,6 +157,7 @@ for n in sorted(runs):
                 'steps_S': info['steps'], 'filter_length_L': info['filter_length'],
                 'surface_px': int(surface.sum()), 'ranks_seen': len(pieces),
                 'contrast': round(float(g_1[surface].std()), 2),
+                'oversubscribed': int(n > CORES), 'run_peak_rss_mb': peak_rss_mb(n),
             }
             if n > 1:
                 row.update(
@@ -155,7 +174,7 @@ for n in sorted(runs):
 order = {'flowsurf': 0, 'lic': 1, 'licenh': 2}
 rows.sort(key=lambda r: (r['triangles'], order.get(r['method'], 9), r['ranks']))
 fields = ['mesh', 'triangles', 'size', 'method', 'ranks', 'ms_median', 'ms_min', 'frames', 'steps_S',
-          'filter_length_L', 'contrast', 'mean_diff', 'worst_tile', 'seam_band_diff', 'far_diff',
+          'filter_length_L', 'oversubscribed', 'run_peak_rss_mb', 'contrast', 'mean_diff', 'worst_tile', 'seam_band_diff', 'far_diff',
           'band_px', 'band_halfwidth_px', 'surface_px', 'ranks_seen']
 with open(csv_path, 'w', newline='') as f:
     w = csv.DictWriter(f, fieldnames=fields)

@@ -46,7 +46,7 @@ ap.add_argument('--meshes', default='sphere:37056',
                 help='NAME:TRIANGLES,... (UV spheres; TRIANGLES ~ 2*theta*(phi-2), theta = 2 phi)')
 ap.add_argument('--size', default='400x400')
 ap.add_argument('--steps', type=int, default=15, help='Surface LIC steps each way S; FlowSurf L = 2S+1')
-ap.add_argument('--frames', type=int, default=7, help='timed renders K per view')
+ap.add_argument('--frames', type=int, default=9, help='timed renders K per view')
 ap.add_argument('--azimuth', type=float, default=0.5, help='degrees of camera turn per timed render')
 ap.add_argument('--modes', default='ids,flowsurf,lic,licenh')
 args = ap.parse_args()

@@ -3,23 +3,24 @@
 # ms per render and the seam difference of the N-rank image against the 1-rank image
 # (flowsurf_vs_lic.py renders, compare_ranks.py compares; see bench/paraview/README.md).
 #
-#   bench/paraview/flowsurf_vs_lic.sh [--ranks 1,2] [--meshes sphere:37056,sphere1m:1000000]
-#       [--size 400x400] [--steps 15] [--frames 7] [--out DIR] [--csv FILE]
+#   bench/paraview/flowsurf_vs_lic.sh [--ranks 1,2,4] [--meshes sphere:37056,sphere1m:1000000]
+#       [--size 400x400] [--steps 15] [--frames 9] [--out DIR] [--csv FILE]
 #
 # --out (default out/paraview_ranks) gets np{N}/ (PNGs, timings.json, the pvbatch log), diff/
 # (|N-rank - 1-rank| x 8 per mesh and method), results.csv and results.md; --csv also copies
 # the CSV there. The plugin (FLOWSURF_PLUGIN, default the one under build-paraview/) is copied
 # into OUT first, so a rebuild during the run does not change it mid-way.
 # Environment: FLOWSURF_PLUGIN, PVPYTHON_PREFIX (see setup.sh), XVFB_SCREEN (1280x1024x24),
-# BENCH_NICE (e.g. -10, root only).
+# BENCH_NICE (e.g. -10, root only). xvfb-run starts its search for a free display at a random
+# number from 200 (two xvfb-run -a starting at 99 at once on a shared machine collided here).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
-RANKS=1,2
+RANKS=1,2,4
 MESHES=sphere:37056,sphere1m:1000000
 SIZE=400x400
 STEPS=15
-FRAMES=7
+FRAMES=9
 OUT="$ROOT/out/paraview_ranks"
 CSV=""
 while [ $# -gt 0 ]; do
@@ -60,7 +61,7 @@ for n in ${RANKS//,/ }; do
   mkdir -p "$OUT/np$n"
   echo "# $n rank(s): ${MPI[*]} -np $n pvbatch flowsurf_vs_lic.py --meshes $MESHES ..." >&2
   # /usr/bin/time per rank: each rank's peak memory ("maxrss_kb") lands in the log.
-  "${NICE[@]}" xvfb-run -a -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
+  "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
     "${MPI[@]}" -np "$n" -x PYTHONPATH /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
     pvbatch "$HERE/flowsurf_vs_lic.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$OUT/np$n" \
     --meshes "$MESHES" --size "$SIZE" --steps "$STEPS" --frames "$FRAMES" \
