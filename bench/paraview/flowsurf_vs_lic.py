@@ -127,6 +127,7 @@ for spec in args.meshes.split(','):
             ColorBy(rep, ('CELLS', 'ProcessId'))
             lut = GetColorTransferFunction('ProcessId')
             top = max(1, NRANKS - 1)
+            lut.ColorSpace = 'RGB'  # rank k: (1 - t, 0, t), t = k / (N - 1); compare_ranks decodes t
             lut.RGBPoints = [0.0, 1.0, 0.0, 0.0, float(top), 0.0, 0.0, 1.0]
             lut.AutomaticRescaleRangeMode = 'Never'
             lut.RescaleTransferFunction(0.0, float(top))
