@@ -11,8 +11,10 @@
 # the CSV there. The plugin (FLOWSURF_PLUGIN, default the one under build-paraview/) is copied
 # into OUT first, so a rebuild during the run does not change it mid-way.
 # Environment: FLOWSURF_PLUGIN, PVPYTHON_PREFIX (see setup.sh), XVFB_SCREEN (1280x1024x24),
-# BENCH_NICE (e.g. -10, root only). xvfb-run starts its search for a free display at a random
-# number from 200 (two xvfb-run -a starting at 99 at once on a shared machine collided here).
+# BENCH_NICE (e.g. -10, root only), BENCH_TIMEOUT (seconds per rank count, default 1800: a hung
+# run is killed and its rows left out; the script then exits 1). xvfb-run starts its search for
+# a free display at a random number from 200 (two xvfb-run -a starting at 99 at once on a shared
+# machine collided here).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
@@ -57,18 +59,27 @@ MPI=(mpiexec --bind-to none --oversubscribe)
 [ "$(id -u)" -eq 0 ] && MPI+=(--allow-run-as-root)
 NICE=()
 [ -n "${BENCH_NICE:-}" ] && NICE=(nice -n "$BENCH_NICE")
+failed=0
 for n in ${RANKS//,/ }; do
   mkdir -p "$OUT/np$n"
   echo "# $n rank(s): ${MPI[*]} -np $n pvbatch flowsurf_vs_lic.py --meshes $MESHES ..." >&2
   # /usr/bin/time per rank: each rank's peak memory ("maxrss_kb") lands in the log.
   "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
-    "${MPI[@]}" -np "$n" -x PYTHONPATH /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
+    timeout -k 10 "${BENCH_TIMEOUT:-1800}" "${MPI[@]}" -np "$n" -x PYTHONPATH /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
     pvbatch "$HERE/flowsurf_vs_lic.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$OUT/np$n" \
     --meshes "$MESHES" --size "$SIZE" --steps "$STEPS" --frames "$FRAMES" \
     2>&1 | tee "$OUT/np$n/pvbatch.log" | grep -E '^(  |[a-z0-9]+: |rank maxrss|DONE)' >&2
-  grep -q '^DONE' "$OUT/np$n/pvbatch.log" || { echo "pvbatch at $n ranks failed: $OUT/np$n/pvbatch.log" >&2; exit 1; }
+  if ! grep -q '^DONE' "$OUT/np$n/pvbatch.log"; then
+    # A failed or hung rank count (killed after BENCH_TIMEOUT s) leaves out its rows; the
+    # 1-rank run is the reference, so without it there is nothing to compare.
+    echo "pvbatch at $n ranks failed or hung (see $OUT/np$n/pvbatch.log)" | tee -a "$OUT/plugin/info.txt" >&2
+    [ "$n" -ne 1 ] || exit 1
+    rm -f "$OUT/np$n/timings.json"
+    failed=1
+  fi
 done
 echo "load at end: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/plugin/info.txt" >&2
 /usr/bin/python3 "$HERE/compare_ranks.py" "$OUT" "$OUT/results.csv" "$OUT/diff" >&2
 /usr/bin/python3 "$HERE/compare_ranks.py" --markdown "$OUT/results.csv" | tee "$OUT/results.md"
 [ -z "$CSV" ] || cp "$OUT/results.csv" "$CSV"
+exit "$failed"
