@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cli_options.h"
+#include "io/dataset_reader.h"
 
 #include <string>
 #include <vector>
@@ -9,7 +10,7 @@
 namespace flowsurf::app {
 
 int runRender(const RenderOptions& options);
-int runInfo(const std::string& path);
+int runInfo(const std::string& path, const io::SourceOptions& source = {});
 // Methods side by side on the same camera and frames, labelled with ms/frame.
 int runCompare(const RenderOptions& options, const std::string& methods);
 

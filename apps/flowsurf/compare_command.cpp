@@ -37,7 +37,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
     const std::vector<std::string> names = splitMethods(methodList);
 
-    std::unique_ptr<core::StepProvider> steps = openInput(o.input, o.patches);
+    std::unique_ptr<core::StepProvider> steps = openInput(o);
     const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
 

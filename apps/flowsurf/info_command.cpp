@@ -8,7 +8,7 @@
 
 namespace flowsurf::app {
 
-int runInfo(const std::string& path) {
+int runInfo(const std::string& path, const io::SourceOptions& source) {
     if (core::isBuiltinSpec(path)) {
         core::Dataset d = core::makeBuiltin(path);
         const auto& m = d.steps.front().mesh;
@@ -33,7 +33,7 @@ int runInfo(const std::string& path) {
         std::fputs(io::formatFileInfo(io::inspectFile(first)).c_str(), stdout);
         return 0;
     }
-    std::fputs(io::formatFileInfo(io::inspectFile(path)).c_str(), stdout);
+    std::fputs(io::formatFileInfo(io::inspectFile(path, source)).c_str(), stdout);
     return 0;
 }
 

@@ -77,8 +77,17 @@ int main(int argc, char** argv) {
     }
 
     std::string infoPath;
-    CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, bounds");
+    io::SourceOptions infoSource;
+    CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, "
+                                                   "bounds, OpenFOAM patches with their fields");
     infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
+    // The two reading options of the render table, with its help.
+    for (const auto& spec : session::renderOptionTable())
+        if (spec.name == "patches" || spec.name == "foam-case") {
+            auto* opt = infoCmd->add_option("--" + spec.name, spec.name == "patches" ? infoSource.patches
+                                                                                     : infoSource.foamCase, spec.help);
+            if (!spec.choices.empty()) opt->check(CLI::IsMember(spec.choices));
+        }
 
     app::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Print ms/frame per stage, static and dynamic case");
@@ -130,7 +139,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*renderCmd) return app::runRender(render);
-        if (*infoCmd) return app::runInfo(infoPath);
+        if (*infoCmd) return app::runInfo(infoPath, infoSource);
         if (*viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
             if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");

@@ -42,7 +42,7 @@ int runRender(const RenderOptions& o) {
     const OutputKind kind = outputKind(o.output);
 
     // Data: load and check the field before any GL work.
-    std::unique_ptr<core::StepProvider> steps = openInput(o.input, o.patches);
+    std::unique_ptr<core::StepProvider> steps = openInput(o);
     const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
     AnimatedSurface surface(o, *steps);

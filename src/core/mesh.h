@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct SurfaceMesh {
     std::vector<glm::uvec3> triangles;  // indices into positions
     std::vector<VectorField> fields;    // per-vertex vectors, same count as positions
     std::vector<ScalarField> scalars;   // per-vertex scalars, same count as positions
+    // Units of the fields and scalars, by name, where the file gives them (OpenFOAM's
+    // dimensions: U -> "m/s", p -> "m2/s2"); an array without an entry has none known.
+    std::map<std::string, std::string> units;
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return triangles.size(); }

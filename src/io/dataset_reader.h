@@ -16,6 +16,12 @@ struct ReadOptions {
     size_t maxSteps = 0;
 };
 
+// How a file made of parts is read (today: OpenFOAM cases).
+struct SourceOptions {
+    std::string patches;            // boundary patches to read: a regular expression on the name (empty: all)
+    std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
+};
+
 // Reads every time step of `path` into a Dataset. Each step's mesh holds all point
 // arrays with 3 components as fields, normals (from the file's point normals, else
 // computed), and only triangles. Validates with core::validateMesh.
@@ -28,16 +34,25 @@ struct ArrayInfo {
     int components = 0;
     bool pointData = true;  // false: cell data (converted to point data on read)
     double rangeMin = 0, rangeMax = 0;  // of the magnitude for vectors
+    std::string units;                  // e.g. "m/s" (OpenFOAM dimensions); empty when unknown
+};
+// A part of the surface (an OpenFOAM boundary patch, an Exodus block...): its name and
+// faces, and the names of the arrays it carries (a field may be missing on some).
+struct PartInfo {
+    std::string name;
+    size_t faces = 0;
+    std::vector<std::string> arrays;
 };
 struct FileInfo {
     std::string path;
     std::string format;            // e.g. "VTK XML PolyData"
     size_t points = 0, triangles = 0;  // after triangulation, first time step
     std::vector<ArrayInfo> arrays;
+    std::vector<PartInfo> parts;   // more than one only for composite data (patches, blocks)
     std::vector<double> times;     // empty or one entry for a single step
     core::Bounds bounds;
 };
-FileInfo inspectFile(const std::string& path);
+FileInfo inspectFile(const std::string& path, const SourceOptions& options = {});
 std::string formatFileInfo(const FileInfo& info);
 
 }  // namespace flowsurf::io

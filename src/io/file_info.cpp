@@ -32,7 +32,9 @@ std::string timesText(const std::vector<double>& times) {
 
 }  // namespace
 
-FileInfo inspectFile(const std::string& path) { return detail::ReaderProcess().inspect(path); }
+FileInfo inspectFile(const std::string& path, const SourceOptions& options) {
+    return detail::ReaderProcess().inspect(path, options);
+}
 
 std::string formatFileInfo(const FileInfo& info) {
     std::ostringstream s;
@@ -57,11 +59,24 @@ std::string formatFileInfo(const FileInfo& info) {
         s << "  " << (a.pointData ? "point " : "cell  ") << std::left << std::setw(int(width) + 2)
           << a.name << std::right << std::setw(2) << a.components << " comp   "
           << (a.components == 1 ? "" : "|v| ") << number(a.rangeMin) << " .. " << number(a.rangeMax)
-          << "\n";
+          << (a.units.empty() ? "" : "  [" + a.units + "]") << "\n";
         // Cell vectors become point vectors on read, so both can be shown.
         if (a.components == 3 && a.name != "Normals" &&
             std::find(vectors.begin(), vectors.end(), a.name) == vectors.end())
             vectors.push_back(a.name);
+    }
+    if (!info.parts.empty()) {
+        // Which array is on which part: an OpenFOAM field may be missing on some patches.
+        size_t nameWidth = 4;
+        for (const auto& p : info.parts) nameWidth = std::max(nameWidth, p.name.size());
+        s << "Parts        " << info.parts.size() << " (OpenFOAM: boundary patches), faces and arrays of each\n";
+        for (const auto& p : info.parts) {
+            s << "  " << std::left << std::setw(int(nameWidth) + 2) << p.name << std::right << std::setw(8) << p.faces
+              << " faces  ";
+            if (p.arrays.empty()) s << " (no arrays)";
+            for (const auto& a : p.arrays) s << " " << a;
+            s << "\n";
+        }
     }
     s << "Vector fields";
     if (vectors.empty()) s << " none (no array with 3 components)";

@@ -13,6 +13,7 @@
 #include <vtkPointData.h>
 
 #include <algorithm>
+#include <map>
 
 namespace flowsurf::io::detail {
 
@@ -28,7 +29,7 @@ void collectArrays(vtkFieldData* data, bool pointData, std::vector<ArrayInfo>& a
         auto same = [&](const ArrayInfo& x) { return x.name == a->GetName() && x.pointData == pointData; };
         auto it = std::find_if(arrays.begin(), arrays.end(), same);
         if (it == arrays.end()) {
-            arrays.push_back({a->GetName(), a->GetNumberOfComponents(), pointData, range[0], range[1]});
+            arrays.push_back({a->GetName(), a->GetNumberOfComponents(), pointData, range[0], range[1], ""});
         } else {
             it->rangeMin = std::min(it->rangeMin, range[0]);
             it->rangeMax = std::max(it->rangeMax, range[1]);
@@ -36,21 +37,37 @@ void collectArrays(vtkFieldData* data, bool pointData, std::vector<ArrayInfo>& a
     }
 }
 
+// One block's name, faces and arrays (cell arrays first: an OpenFOAM field is a cell
+// array on its patch, the point array beside it VTK's interpolation of it).
+PartInfo partOf(vtkDataSet* ds, const std::string& name) {
+    PartInfo part{name, size_t(ds->GetNumberOfCells()), {}};
+    for (vtkFieldData* fd : {static_cast<vtkFieldData*>(ds->GetCellData()), static_cast<vtkFieldData*>(ds->GetPointData())})
+        for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+            const char* n = fd->GetArrayName(i);
+            if (n && std::find(part.arrays.begin(), part.arrays.end(), n) == part.arrays.end()) part.arrays.push_back(n);
+        }
+    return part;
+}
+
 }  // namespace
 
-FileInfo inspectFileHere(const std::string& path) {
+FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) {
     VtkMessageTrap trap;
-    auto source = openSource(path, trap);
+    auto source = openSource(path, trap, options);
     FileInfo info;
     info.path = path;
     info.format = source->format();
     info.times = source->times();
 
     vtkSmartPointer<vtkDataObject> raw = source->readStep(0);
-    forEachLeaf(raw, [&](vtkDataSet* ds) {
+    forEachNamedLeaf(raw, [&](vtkDataSet* ds, const std::string& name) {
         collectArrays(ds->GetPointData(), true, info.arrays);
         collectArrays(ds->GetCellData(), false, info.arrays);
+        if (!name.empty()) info.parts.push_back(partOf(ds, name));
     });
+    const std::map<std::string, std::string> units = arrayUnits(raw);
+    for (auto& a : info.arrays)
+        if (auto it = units.find(a.name); it != units.end()) a.units = it->second;
     core::SurfaceMesh mesh = readSurfaceMesh(raw, trap, stepLabel(path, *source, 0));
     info.points = mesh.vertexCount();
     info.triangles = mesh.triangleCount();

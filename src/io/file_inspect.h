@@ -6,6 +6,6 @@
 namespace flowsurf::io::detail {
 
 // Reads the first time step of `path` in this process (through VTK). Throws like readDataset.
-FileInfo inspectFileHere(const std::string& path);
+FileInfo inspectFileHere(const std::string& path, const SourceOptions& options = {});
 
 }  // namespace flowsurf::io::detail

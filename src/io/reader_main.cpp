@@ -74,10 +74,10 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
     switch (op) {
         case w::Op::Open: {
             std::string path = in.str();
-            std::string patches = in.str();
+            io::SourceOptions options = w::readSourceOptions(in);
             auto s = std::make_unique<OpenSource>();
             s->path = path;
-            s->source = io::detail::openSource(path, s->trap, patches);
+            s->source = io::detail::openSource(path, s->trap, options);
             out.u8(uint8_t(w::Status::Ok));
             out.str(s->source->format());
             out.u64(s->source->times().size());
@@ -104,7 +104,7 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
         }
         case w::Op::Inspect: {
             std::string path = in.str();
-            io::FileInfo info = io::detail::inspectFileHere(path);
+            io::FileInfo info = io::detail::inspectFileHere(path, w::readSourceOptions(in));
             out.u8(uint8_t(w::Status::Ok));
             w::writeFileInfo(out, info);
             return true;
@@ -157,6 +157,10 @@ int main(int argc, char** argv) {
         } catch (const std::exception& e) {
             error(out, w::Status::Other, e.what());
         }
+        // Every reply ends with the warnings raised while answering.
+        const std::vector<std::string> warnings = io::detail::takeWarnings();
+        out.u64(warnings.size());
+        for (const auto& text : warnings) out.str(text);
         if (!out.flush()) return 0;
     }
 }

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -59,6 +60,12 @@ std::string signalText(int sig) {
         case SIGXCPU: return "ran out of CPU time (SIGXCPU)";
         default: return std::string("was killed by signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")";
     }
+}
+
+// The reader's warnings that end every reply, printed as the library's own.
+void printWarnings(wire::Reader& r) {
+    for (uint64_t i = 0, n = r.count(1 << 16); i < n; ++i)
+        std::fprintf(stderr, "flowsurf: warning: %s\n", r.str().c_str());
 }
 
 }  // namespace
@@ -146,7 +153,7 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
         if (!lastOpen_.empty()) {  // the previous child died: restore its open source
             const std::string path = lastOpen_;
             lastOpen_.clear();
-            openLocked(path, lastPatches_);
+            openLocked(path, lastOptions_);
         }
     }
     wire::Writer w(fd_);
@@ -158,6 +165,7 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
         auto status = wire::Status(r.u8());
         if (status != wire::Status::Ok) {
             std::string what = r.str();
+            printWarnings(r);
             switch (status) {
                 case wire::Status::IoError: throw IoError(what);
                 case wire::Status::FormatError: throw FormatError(what);
@@ -166,7 +174,9 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
                 default: throw FormatError(label + ": " + what);
             }
         }
-        return parse(r);
+        auto result = parse(r);
+        printWarnings(r);
+        return result;
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         std::string why = reap(true);
@@ -187,18 +197,18 @@ core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxStep
         [](wire::Reader& r) { return wire::readDataset(r); });
 }
 
-ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const std::string& patches) {
+ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
-    return openLocked(path, patches);
+    return openLocked(path, options);
 }
 
-ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const std::string& patches) {
+ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     SourceInfo info = call(
         path,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Open));
             w.str(path);
-            w.str(patches);
+            wire::writeSourceOptions(w, options);
         },
         [](wire::Reader& r) {
             SourceInfo s;
@@ -208,7 +218,7 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
             return s;
         });
     lastOpen_ = path;
-    lastPatches_ = patches;
+    lastOptions_ = options;
     return info;
 }
 
@@ -223,13 +233,14 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
         [](wire::Reader& r) { return r.mesh(); });
 }
 
-FileInfo ReaderProcess::inspect(const std::string& path) {
+FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
     return call(
         path,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Inspect));
             w.str(path);
+            wire::writeSourceOptions(w, options);
         },
         [](wire::Reader& r) { return wire::readFileInfo(r); });
 }

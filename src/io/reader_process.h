@@ -32,15 +32,15 @@ public:
     // Every time step of `path` (at most `maxSteps`, 0 = all).
     core::Dataset readDataset(const std::string& path, size_t maxSteps);
     // Opens `path` as the child's current multi-step source: its format and times.
-    // `patches`: OpenFOAM boundary patches to read (regular expression; empty: all).
+    // `options`: OpenFOAM's boundary patches and case layout.
     struct SourceInfo {
         std::string format;
         std::vector<double> times;
     };
-    SourceInfo open(const std::string& path, const std::string& patches = "");
+    SourceInfo open(const std::string& path, const SourceOptions& options = {});
     // Step `index` of the source opened last; `label` names it in errors.
     core::SurfaceMesh readStep(size_t index, const std::string& label);
-    FileInfo inspect(const std::string& path);
+    FileInfo inspect(const std::string& path, const SourceOptions& options = {});
 
 private:
     // Sends a request, then parses the reply with `parse` (called with a wire::Reader
@@ -49,7 +49,7 @@ private:
     template <typename Send, typename Parse>
     auto call(const std::string& label, Send send, Parse parse);
     void spawn();
-    SourceInfo openLocked(const std::string& path, const std::string& patches);
+    SourceInfo openLocked(const std::string& path, const SourceOptions& options);
     // Ends the child (killing it if needed) and returns why it died, for messages.
     std::string reap(bool kill);
 
@@ -58,7 +58,8 @@ private:
     int fd_ = -1;
     int timeoutS_ = 300;
     unsigned long long memoryMb_ = 0;
-    std::string lastOpen_, lastPatches_;  // re-opened after a restart
+    std::string lastOpen_;  // re-opened after a restart, with these options
+    SourceOptions lastOptions_;
 };
 
 // Where flowsurf-reader is (see above); throws IoError if nowhere.

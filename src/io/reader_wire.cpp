@@ -49,6 +49,11 @@ void Writer::mesh(const core::SurfaceMesh& m) {
         str(f.name);
         writeVector(*this, f.values);
     }
+    u64(m.units.size());
+    for (const auto& [name, units] : m.units) {
+        str(name);
+        str(units);
+    }
 }
 
 bool Writer::flush() {
@@ -128,6 +133,10 @@ core::SurfaceMesh Reader::mesh() {
         f.name = str();
         readVector(*this, f.values);
     }
+    for (uint64_t i = 0, n = count(1 << 20); i < n; ++i) {
+        std::string name = str();
+        m.units[name] = str();
+    }
     return m;
 }
 
@@ -151,6 +160,18 @@ core::Dataset readDataset(Reader& r) {
     return d;
 }
 
+void writeSourceOptions(Writer& w, const SourceOptions& o) {
+    w.str(o.patches);
+    w.str(o.foamCase);
+}
+
+SourceOptions readSourceOptions(Reader& r) {
+    SourceOptions o;
+    o.patches = r.str();
+    o.foamCase = r.str();
+    return o;
+}
+
 void writeFileInfo(Writer& w, const FileInfo& info) {
     w.str(info.path);
     w.str(info.format);
@@ -163,6 +184,14 @@ void writeFileInfo(Writer& w, const FileInfo& info) {
         w.u8(a.pointData);
         w.f64(a.rangeMin);
         w.f64(a.rangeMax);
+        w.str(a.units);
+    }
+    w.u64(info.parts.size());
+    for (const auto& p : info.parts) {
+        w.str(p.name);
+        w.u64(p.faces);
+        w.u64(p.arrays.size());
+        for (const auto& a : p.arrays) w.str(a);
     }
     writeVector(w, info.times);
     w.raw(&info.bounds, sizeof(info.bounds));
@@ -181,6 +210,14 @@ FileInfo readFileInfo(Reader& r) {
         a.pointData = r.u8() != 0;
         a.rangeMin = r.f64();
         a.rangeMax = r.f64();
+        a.units = r.str();
+    }
+    info.parts.resize(size_t(r.count(1 << 20)));
+    for (auto& p : info.parts) {
+        p.name = r.str();
+        p.faces = size_t(r.u64());
+        p.arrays.resize(size_t(r.count(1 << 20)));
+        for (auto& a : p.arrays) a = r.str();
     }
     readVector(r, info.times);
     r.raw(&info.bounds, sizeof(info.bounds));

@@ -15,7 +15,8 @@
 namespace flowsurf::io::wire {
 
 enum class Op : uint8_t { Open = 1, Step = 2, Dataset = 3, Inspect = 4, Quit = 5 };
-// Reply status: the error type the reader threw, rethrown as the same type.
+// Reply status: the error type the reader threw, rethrown as the same type. Every reply,
+// ok or not, ends with the reader's warnings (a count and the texts).
 enum class Status : uint8_t { Ok = 0, IoError = 1, FormatError = 2, ConfigError = 3, FieldError = 4, Other = 5 };
 
 // Buffered writes to a socket; flush() sends everything (no SIGPIPE: a dead peer is an
@@ -62,6 +63,8 @@ private:
 
 void writeDataset(Writer& w, const core::Dataset& d);
 core::Dataset readDataset(Reader& r);
+void writeSourceOptions(Writer& w, const SourceOptions& o);
+SourceOptions readSourceOptions(Reader& r);
 void writeFileInfo(Writer& w, const FileInfo& info);
 FileInfo readFileInfo(Reader& r);
 

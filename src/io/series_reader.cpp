@@ -17,8 +17,8 @@ namespace {
 // One file with one or more steps, each read when asked for by one reader process.
 class FileSteps final : public core::StepProvider {
 public:
-    FileSteps(const std::string& path, const std::string& patches)
-        : path_(path), info_(reader_.open(path, patches)) {}
+    FileSteps(const std::string& path, const SourceOptions& options)
+        : path_(path), info_(reader_.open(path, options)) {}
     size_t count() const override { return info_.times.empty() ? 1 : info_.times.size(); }
     double time(size_t i) const override { return info_.times.empty() ? 0.0 : info_.times[i]; }
     core::SurfaceMesh load(size_t i) override { return reader_.readStep(i, label(i)); }
@@ -80,8 +80,8 @@ bool numberAt(const std::string& globPattern, const std::string& file, double& v
 
 bool isSeriesPattern(const std::string& input) { return input.find_first_of("%*?") != std::string::npos; }
 
-std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const std::string& patches) {
-    if (!isSeriesPattern(input)) return std::make_unique<FileSteps>(input, patches);
+std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const SourceOptions& options) {
+    if (!isSeriesPattern(input)) return std::make_unique<FileSteps>(input, options);
     const std::string pattern = toGlob(input);
     glob_t g{};
     int rc = glob(pattern.c_str(), 0, nullptr, &g);

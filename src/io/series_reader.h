@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/time_series.h"
+#include "io/dataset_reader.h"
 
 #include <memory>
 #include <string>
@@ -17,7 +18,7 @@ bool isSeriesPattern(const std::string& input);
 // Opens the metadata (file list or time values) now; steps load on demand. A series
 // file's time is the number in its name where the pattern varies (else its index).
 // Throws IoError (no file matches, unreadable) or FormatError.
-// `patches`: OpenFOAM boundary patches to read (regular expression; empty: all).
-std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const std::string& patches = "");
+// `options`: OpenFOAM's boundary patches and case layout (single files only).
+std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const SourceOptions& options = {});
 
 }  // namespace flowsurf::io

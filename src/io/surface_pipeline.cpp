@@ -68,20 +68,14 @@ vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, VtkMessageTrap& trap,
     return filter->GetOutput();
 }
 
-// One warning per message and process: a series would repeat it for every step.
-void warnOnce(const std::string& message) {
-    static std::mutex lock;
-    static std::set<std::string> said;
-    std::lock_guard<std::mutex> guard(lock);
-    if (said.insert(message).second) std::fprintf(stderr, "flowsurf: warning: %s\n", message.c_str());
-}
-
 // VTK's append keeps only arrays present in every block; a CFD field written on some
 // patches only would vanish. Pads each block lacking an array that another block has
 // (same point/cell association, components and type): scalars with NaN (drawn in the
 // NaN colour), vectors with zero (no advection there), and names the patches.
 void padPartialArrays(std::vector<vtkSmartPointer<vtkPolyData>>& parts, const std::vector<std::string>& names,
                       const std::string& where) {
+    // One warning per set of patches: the arrays missing there (point and cell alike).
+    std::map<std::string, std::set<std::string>> missingOn;
     for (int assoc = 0; assoc < 2; ++assoc) {
         auto dataOf = [assoc](vtkPolyData* p) -> vtkFieldData* {
             return assoc == 0 ? static_cast<vtkFieldData*>(p->GetPointData()) : p->GetCellData();
@@ -106,11 +100,14 @@ void padPartialArrays(std::vector<vtkSmartPointer<vtkPolyData>>& parts, const st
                 fd->AddArray(pad);
                 missing += (missing.empty() ? "" : ", ") + names[b];
             }
-            if (!missing.empty())
-                warnOnce(where + ": " + (assoc == 0 ? "point" : "cell") + " array '" + name + "' is missing on " +
-                         missing + "; kept, with " +
-                         (model->GetNumberOfComponents() == 1 ? "NaN (no colour)" : "zero vectors") + " there");
+            if (!missing.empty()) missingOn[missing].insert(name);
         }
+    }
+    for (const auto& [patches, arrays] : missingOn) {
+        std::string list;
+        for (const auto& a : arrays) list += (list.empty() ? "'" : ", '") + a + "'";
+        warnOnce(where + ": " + list + (arrays.size() == 1 ? " is" : " are") + " missing on " + patches +
+                 "; kept, with NaN (no colour) for scalars and zero vectors (no motion) there");
     }
 }
 
@@ -139,6 +136,34 @@ std::string normalsName(vtkPolyData* data) {
     return {};
 }
 
+// VTK's filter averages every cell around a point, so one NaN cell scalar ("no value
+// here": a field missing on part of the surface) makes the whole ring of points around it
+// NaN. Scalars with a NaN are averaged over the cells that have a value instead; a point
+// none of whose cells has one stays NaN.
+void averageFiniteCells(vtkPolyData* data, vtkDataArray* cells, vtkDataArray* points) {
+    std::vector<double> sum(size_t(data->GetNumberOfPoints()), 0.0);
+    std::vector<int> count(sum.size(), 0);
+    for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+        const double v = cells->GetComponent(c, 0);
+        if (!std::isfinite(v)) continue;
+        vtkIdType n;
+        const vtkIdType* ids;
+        data->GetCellPoints(c, n, ids);
+        for (vtkIdType k = 0; k < n; ++k) {
+            sum[size_t(ids[k])] += v;
+            ++count[size_t(ids[k])];
+        }
+    }
+    for (size_t p = 0; p < sum.size(); ++p)
+        points->SetComponent(vtkIdType(p), 0, count[p] ? sum[p] / count[p] : std::numeric_limits<double>::quiet_NaN());
+}
+
+bool hasNonFinite(vtkDataArray* a) {
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+        if (!std::isfinite(a->GetComponent(i, 0))) return true;
+    return false;
+}
+
 vtkSmartPointer<vtkPolyData> cellToPoint(vtkPolyData* data, VtkMessageTrap& trap,
                                          const std::string& where) {
     if (data->GetCellData()->GetNumberOfArrays() == 0) return data;
@@ -149,6 +174,13 @@ vtkSmartPointer<vtkPolyData> cellToPoint(vtkPolyData* data, VtkMessageTrap& trap
     filter->Update();
     trap.throwIfError(where, "cannot convert cell data to point data");
     vtkSmartPointer<vtkPolyData> out = filter->GetPolyDataOutput();
+    vtkCellData* cd = data->GetCellData();
+    for (int i = 0; i < cd->GetNumberOfArrays(); ++i) {
+        vtkDataArray* a = cd->GetArray(i);
+        vtkDataArray* converted = a && a->GetName() ? out->GetPointData()->GetArray(a->GetName()) : nullptr;
+        if (converted && a->GetNumberOfComponents() == 1 && converted->GetNumberOfComponents() == 1 && hasNonFinite(a))
+            averageFiniteCells(data, a, converted);
+    }
     // Arrays the file gives per point are exact; averaged cell values are not: the
     // file's point arrays replace converted cell arrays of the same name.
     vtkPointData* in = data->GetPointData();
@@ -264,10 +296,27 @@ core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where) 
     return mesh;
 }
 
+std::map<std::string, std::string> arrayUnits(vtkDataObject* data) {
+    std::map<std::string, std::string> units;
+    auto collect = [&units](vtkFieldData* fd) {
+        for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+            vtkDataArray* a = fd->GetArray(i);
+            if (a && a->GetName() && a->HasInformation() && a->GetInformation()->Has(vtkDataArray::UNITS_LABEL()))
+                units[a->GetName()] = a->GetInformation()->Get(vtkDataArray::UNITS_LABEL());
+        }
+    };
+    forEachLeaf(data, [&](vtkDataSet* ds) {
+        collect(ds->GetPointData());
+        collect(ds->GetCellData());
+    });
+    return units;
+}
+
 core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap,
                                   const std::string& where) {
     vtkSmartPointer<vtkPolyData> surface = extractSurface(data, trap, where);
     core::SurfaceMesh mesh = toSurfaceMesh(surface, where);
+    mesh.units = arrayUnits(data);
     // (7) validate: NaN/Inf, indices, sizes; degenerate triangles dropped.
     core::validateMesh(mesh, where);
     return mesh;

@@ -10,6 +10,7 @@
 #include <vtkSmartPointer.h>
 
 #include <functional>
+#include <map>
 #include <string>
 
 class vtkDataObject;
@@ -23,6 +24,10 @@ void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& vi
 // The same with each block's name (an OpenFOAM patch name; "block N" when unnamed).
 void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*, const std::string&)>& visit);
 
+// The units of the arrays of `data`'s leaves (their UNITS_LABEL, set by the OpenFOAM
+// source from the fields' dimensions), by array name.
+std::map<std::string, std::string> arrayUnits(vtkDataObject* data);
+
 // Stages 1–5. Point arrays win over converted cell arrays of the same name.
 vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
                                             const std::string& where);
@@ -32,7 +37,7 @@ vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap&
 // 1-component point array (converted cell arrays included) as a scalar.
 core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where);
 
-// All stages, validation included.
+// All stages, validation included; the mesh's fields carry arrayUnits(data).
 core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap,
                                   const std::string& where);
 

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <iterator>
 #include <mutex>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace flowsurf::io::detail {
@@ -219,6 +221,22 @@ void VtkMessageTrap::throwIfError(const std::string& path, const std::string& wh
         }
     if (reason.empty()) reason = warnings_.empty() ? "the reader failed without saying why" : warnings_.front();
     throw FormatError(path + ": " + what + ": " + reason);
+}
+
+namespace {
+std::mutex warningLock;
+std::set<std::string> warningsSaid;
+std::vector<std::string> warningsPending;
+}  // namespace
+
+void warnOnce(const std::string& message) {
+    std::lock_guard<std::mutex> guard(warningLock);
+    if (warningsSaid.insert(message).second) warningsPending.push_back(message);
+}
+
+std::vector<std::string> takeWarnings() {
+    std::lock_guard<std::mutex> guard(warningLock);
+    return std::exchange(warningsPending, {});
 }
 
 }  // namespace flowsurf::io::detail

@@ -65,6 +65,12 @@ private:
     std::vector<std::pair<vtkWeakPointer<vtkObject>, unsigned long>> observed_;
 };
 
+// Our own warnings about what was read (a field kept with NaN on some patches...), each
+// message once per process: a series would repeat it for every step. They wait here until
+// the reader process sends them with its next reply (the library prints them).
+void warnOnce(const std::string& message);
+std::vector<std::string> takeWarnings();
+
 // "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
 std::string cleanVtkMessage(const char* text);
 

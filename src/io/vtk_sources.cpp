@@ -5,6 +5,7 @@
 #include "io/exodus_check.h"
 #include "io/legacy_check.h"
 #include "io/obj_reader.h"
+#include "io/openfoam_source.h"
 #include "io/ply_reader.h"
 #include "io/xml_check.h"
 
@@ -14,9 +15,6 @@
 #include <vtkGenericEnSightReader.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
-#include <vtkOpenFOAMReader.h>
-
-#include <regex>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLDataElement.h>
@@ -198,39 +196,6 @@ std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& 
     return std::make_unique<AlgorithmSource>(r, path, "VTK legacy " + type, trap);
 }
 
-std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap& trap, const std::string& patches) {
-    std::regex select;
-    try {
-        select = std::regex(patches.empty() ? ".*" : patches);
-    } catch (const std::regex_error& e) {
-        throw ConfigError("--patches: '" + patches + "' is not a regular expression (" + e.what() + ")");
-    }
-    auto r = readerFor<vtkOpenFOAMReader>(path);
-    // Every time directory is a step, 0/ included (SkipZeroTime is on by default).
-    r->SkipZeroTimeOff();
-    r->ListTimeStepsByControlDictOff();
-    return makeSource(r, path, "OpenFOAM case", trap, [&] {
-        // Boundary patches only: the surface to show is the walls, not the volume.
-        // --patches matches the patch's own name (VTK lists boundary patches as "patch/NAME").
-        std::string all;
-        int kept = 0;
-        for (int i = 0; i < r->GetNumberOfPatchArrays(); ++i) {
-            std::string name = r->GetPatchArrayName(i);
-            const std::string bare = name.rfind("patch/", 0) == 0 ? name.substr(6) : name;
-            bool keep = name != "internalMesh" && name.rfind("lagrangian", 0) != 0;
-            if (keep) all += (all.empty() ? "" : ", ") + bare;
-            keep = keep && std::regex_match(bare, select);
-            kept += keep;
-            r->SetPatchArrayStatus(name.c_str(), keep ? 1 : 0);
-        }
-        if (kept == 0)
-            throw ConfigError(path + ": --patches '" + patches + "' matches no boundary patch (patches: " + all + ")");
-        r->EnableAllCellArrays();
-        r->EnableAllPointArrays();
-        r->DisableAllLagrangianArrays();
-    });
-}
-
 std::unique_ptr<StepSource> openExodus(const std::string& path, VtkMessageTrap& trap) {
     checkExodusFile(path);  // what the Exodus library would print, crash on or miss
     auto r = readerFor<vtkExodusIIReader>(path);
@@ -338,7 +303,7 @@ std::string stepLabel(const std::string& path, const StepSource& source, size_t 
 }
 
 // --- openSource ------------------------------------------------------------------------
-std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const std::string& patches) {
+std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options) {
     VtkMessageTrap::Active active(trap);
     const std::string ext = lowerExtension(path);
     const FormatEntry* entry = nullptr;
@@ -366,7 +331,7 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
         checkBinaryStlSize(path);
         return makeSource(readerFor<vtkSTLReader>(path), path, name, trap);
     }
-    if (ext == ".foam") return openOpenFoam(path, trap, patches);
+    if (ext == ".foam") return openOpenFoam(path, trap, options);
     if (ext == ".case") {
         auto r = vtkSmartPointer<vtkGenericEnSightReader>::New();
         r->SetCaseFileName(path.c_str());

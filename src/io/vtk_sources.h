@@ -5,6 +5,7 @@
 // a triangle surface.
 #pragma once
 
+#include "io/dataset_reader.h"
 #include "io/vtk_messages.h"
 
 #include <vtkDataObject.h>
@@ -32,9 +33,8 @@ public:
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
 // empty file, header the reader refuses). Every reader is watched by `trap`.
-// `patches`: OpenFOAM boundary patches to read, a regular expression on the patch name
-// (empty: all).
-std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const std::string& patches = "");
+// `options`: OpenFOAM's boundary patches and case layout (openfoam_source.h).
+std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options = {});
 
 // "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
 // just the path for a single step.

@@ -209,6 +209,19 @@ std::vector<OptionSpec> buildTable() {
     add(text("patches", gData, "OpenFOAM: read the boundary patches whose names match this regular expression "
                                "(default: all)", FS_REF(patches)));
     {
+        OptionSpec s{"foam-case", "", gData, "OpenFOAM: read the reconstructed case or the processor* directories "
+                     "of a decomposed one (auto: the decomposed one when it has more time directories or the case "
+                     "folder has no mesh)", OptionKind::Choice, 0, 0, {"auto", "reconstructed", "decomposed"}, true,
+                     nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            if (v != "auto" && v != "reconstructed" && v != "decomposed")
+                throw ConfigError("--foam-case: '" + v + "' is not one of auto, reconstructed, decomposed");
+            o.foamCase = v;
+        };
+        s.get = [](const RenderOptions& o) { return o.foamCase; };
+        add(s);
+    }
+    {
         OptionSpec s{"time-step", "", gData, "Render only this time step (index), as steady data", OptionKind::Int, 0,
                      1e9, {}, true, nullptr, nullptr};
         s.set = [](RenderOptions& o, const std::string& v) {

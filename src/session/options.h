@@ -46,6 +46,7 @@ struct RenderOptions {
     int upAxis = 1;                     // --up-axis x|y|z: 0, 1, 2
     float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
+    std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
     methods::MethodParams params;
 };
 

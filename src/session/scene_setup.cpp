@@ -15,9 +15,13 @@ core::Dataset loadInput(const std::string& input) {
     return io::readDataset(input);
 }
 
-std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches) {
+std::unique_ptr<core::StepProvider> openInput(const RenderOptions& o) {
+    return openInput(o.input, io::SourceOptions{o.patches, o.foamCase});
+}
+
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const io::SourceOptions& options) {
     if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
-    return io::openSeries(input, patches);
+    return io::openSeries(input, options);
 }
 
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {

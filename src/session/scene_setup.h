@@ -6,6 +6,7 @@
 #include "core/camera_path.h"
 #include "core/mesh.h"
 #include "core/time_series.h"
+#include "io/dataset_reader.h"
 
 #include <memory>
 #include "session/options.h"
@@ -14,8 +15,9 @@ namespace flowsurf::session {
 
 core::Dataset loadInput(const std::string& input);
 // The input as time steps loaded on demand: builtin:NAME, a file, or a file series
-// pattern (surf_%04d.vtp, surf_*.vtp).
-std::unique_ptr<core::StepProvider> openInput(const std::string& input, const std::string& patches = "");
+// pattern (surf_%04d.vtp, surf_*.vtp); OpenFOAM's --patches and --foam-case applied.
+std::unique_ptr<core::StepProvider> openInput(const RenderOptions& o);
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const io::SourceOptions& options = {});
 // The mesh of the requested step with its field selected; throws ConfigError/FieldError.
 const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.

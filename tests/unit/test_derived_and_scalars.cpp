@@ -130,11 +130,11 @@ TEST(Scalars, OpenFoamFieldOnOnePatchIsKept) {
     EXPECT_GT(nan, 0u);
     EXPECT_NE(m.findField("U"), nullptr);
     // --patches selects boundary patches by name: the four wall faces only, T everywhere.
-    core::SurfaceMesh walls = io::openSeries(dir.file("case.foam"), "wal.*")->load(0);
+    core::SurfaceMesh walls = io::openSeries(dir.file("case.foam"), {"wal.*"})->load(0);
     EXPECT_EQ(walls.triangleCount(), 8u);
     ASSERT_NE(walls.findScalar("T"), nullptr);
     for (float v : walls.findScalar("T")->values) EXPECT_EQ(v, 2.0f);
-    EXPECT_THROW(io::openSeries(dir.file("case.foam"), "nope"), ConfigError);
+    EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"nope"}), ConfigError);
 }
 
 TEST(Colormaps, ParaViewJsonPresetIsSampled) {

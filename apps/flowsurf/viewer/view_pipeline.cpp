@@ -39,7 +39,7 @@ private:
 }  // namespace
 
 void ViewPipeline::load(const RenderOptions& o) {
-    std::unique_ptr<core::StepProvider> steps = openInput(o.input, o.patches);
+    std::unique_ptr<core::StepProvider> steps = openInput(o);
     if (steps->count() == 1) steps = std::make_unique<CachedStep>(std::move(steps));
     auto options = std::make_unique<RenderOptions>(o);
     // The surface checks the field and loads the first step: errors surface here.

@@ -1,0 +1,258 @@
+// Sections: case layout · units and VTK's warnings · the source · openOpenFoam.
+#include "io/openfoam_source.h"
+
+#include "core/errors.h"
+#include "io/surface_pipeline.h"
+
+#include <vtkCellData.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDummyController.h>
+#include <vtkInformation.h>
+#include <vtkInformationStringKey.h>
+#include <vtkOpenFOAMReader.h>
+#include <vtkPOpenFOAMReader.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <regex>
+
+namespace flowsurf::io::detail {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// --- case layout ----------------------------------------------------------------------
+// A time directory is named by a number ("0", "0.0005", "1e-05"), as VTK's reader lists them.
+bool isTimeName(const std::string& name) {
+    if (name.empty()) return false;
+    char* end = nullptr;
+    std::strtod(name.c_str(), &end);
+    return end != name.c_str() && *end == '\0';
+}
+
+size_t countTimeDirs(const fs::path& dir) {
+    std::error_code ec;
+    size_t n = 0;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (e.is_directory(ec) && isTimeName(e.path().filename().string())) ++n;
+    return n;
+}
+
+bool hasMesh(const fs::path& dir) {
+    std::error_code ec;
+    const fs::path mesh = dir / "constant" / "polyMesh";
+    return fs::exists(mesh / "faces", ec) || fs::exists(mesh / "faces.gz", ec);
+}
+
+// processor0, processor1, ... (decomposePar's layout) or processorsN (the collated
+// format), sorted by number: the first is the one VTK takes the times from.
+std::vector<fs::path> processorDirs(const fs::path& dir) {
+    static const std::regex name("processors?([0-9]+)(_[0-9]+-[0-9]+)?");
+    std::vector<std::pair<long, fs::path>> found;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        std::smatch m;
+        const std::string n = e.path().filename().string();
+        if (e.is_directory(ec) && std::regex_match(n, m, name)) found.emplace_back(std::atol(m[1].str().c_str()), e.path());
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<fs::path> dirs;
+    for (auto& f : found) dirs.push_back(f.second);
+    return dirs;
+}
+
+fs::path caseDir(const std::string& casePath) {
+    fs::path dir = fs::path(casePath).parent_path();
+    return dir.empty() ? fs::path(".") : dir;
+}
+
+// --- units and VTK's warnings -----------------------------------------------------------
+
+// Moves AddDimensionsToArrayNames' " [m/s]" suffix of every array into the array's
+// UNITS_LABEL. The arrays are replaced by renamed shallow copies in a copied tree: the
+// reader's own output (and its mesh cache) is left as it was. `units` remembers what was
+// seen, for steps the reader hands out again without re-reading.
+void moveUnitsToLabels(vtkDataObject* data, std::map<std::string, std::string>& units) {
+    auto relabel = [&units](vtkFieldData* fd) {
+        for (int i = fd->GetNumberOfArrays() - 1; i >= 0; --i) {
+            vtkDataArray* a = fd->GetArray(i);
+            if (!a || !a->GetName()) continue;
+            std::string bare, unit;
+            if (splitUnitsSuffix(a->GetName(), bare, unit)) units[bare] = unit;
+            else if (auto it = units.find(a->GetName()); it != units.end()) bare = it->first, unit = it->second;
+            else continue;
+            auto renamed = vtkSmartPointer<vtkDataArray>::Take(a->NewInstance());
+            renamed->ShallowCopy(a);
+            renamed->SetName(bare.c_str());
+            renamed->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), unit.c_str());
+            fd->RemoveArray(i);
+            fd->AddArray(renamed);
+        }
+    };
+    auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+    if (!composite) return;
+    auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
+        auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+        if (!leaf) continue;
+        auto own = vtkSmartPointer<vtkDataSet>::Take(leaf->NewInstance());
+        own->ShallowCopy(leaf);  // own point/cell data objects; the arrays still shared
+        relabel(own->GetPointData());
+        relabel(own->GetCellData());
+        composite->SetDataSet(it, own);
+    }
+}
+
+// VTK 9.1 reads a field's patches in the order of constant/polyMesh/boundary and stops at
+// the first one its file has no entry for (OpenFOAM lets a 0/ file omit constraint patches
+// such as `empty`): the field is then missing on that patch and every later one. Said
+// once per field and patch, with what the user sees.
+void warnMissingPatchEntries(const std::vector<std::string>& warnings, const std::string& path) {
+    static const std::regex missing("boundaryField (\\S+) (not found|not a subdictionary) in object (\\S+) at time = (\\S+)");
+    std::map<std::pair<std::string, std::string>, std::string> fields;  // (time, patch) -> "U, p"
+    for (const auto& w : warnings) {
+        std::smatch m;
+        if (!std::regex_search(w, m, missing)) continue;
+        std::string& list = fields[{m[4].str(), m[1].str()}];
+        list += (list.empty() ? "" : ", ") + m[3].str();
+    }
+    for (const auto& [where, list] : fields)
+        warnOnce(path + ": the fields " + list + " of time " + where.first + " have no entry for boundary patch '" +
+                 where.second + "' (OpenFOAM allows that for constraint patches such as empty); VTK's reader then "
+                 "leaves them out on that patch and on the patches after it in constant/polyMesh/boundary");
+}
+
+// --- the source ---------------------------------------------------------------------------
+
+class OpenFoamSource final : public StepSource {
+public:
+    OpenFoamSource(vtkSmartPointer<vtkOpenFOAMReader> reader, std::string path, std::string format,
+                   VtkMessageTrap& trap)
+        : reader_(std::move(reader)), path_(std::move(path)), format_(std::move(format)), trap_(trap) {
+        vtkInformation* info = reader_->GetOutputInformation(0);
+        auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
+        if (info && info->Has(key)) times_.assign(info->Get(key), info->Get(key) + info->Length(key));
+    }
+    std::string format() const override { return format_; }
+    const std::vector<double>& times() const override { return times_; }
+
+    vtkSmartPointer<vtkDataObject> readStep(size_t index) override {
+        VtkMessageTrap::Active active(trap_);
+        trap_.clear();
+        if (times_.empty()) reader_->Update();
+        else reader_->UpdateTimeStep(times_.at(index));
+        trap_.throwIfError(path_, "cannot read " + format_);
+        warnMissingPatchEntries(trap_.warnings(), path_);
+        vtkDataObject* out = reader_->GetOutputDataObject(0);
+        if (!out) throw FormatError(path_ + ": cannot read " + format_ + ": the reader gave no data");
+        vtkSmartPointer<vtkDataObject> copy;
+        copy.TakeReference(out->NewInstance());
+        copy->ShallowCopy(out);
+        moveUnitsToLabels(copy, units_);
+        return copy;
+    }
+
+private:
+    vtkSmartPointer<vtkOpenFOAMReader> reader_;
+    std::string path_, format_;
+    VtkMessageTrap& trap_;
+    std::vector<double> times_;
+    std::map<std::string, std::string> units_;
+};
+
+// Boundary patches only: the surface to show is the walls, not the volume. --patches
+// matches the patch's own name (VTK lists boundary patches as "patch/NAME").
+void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::string& patches) {
+    std::regex select;
+    try {
+        select = std::regex(patches.empty() ? ".*" : patches);
+    } catch (const std::regex_error& e) {
+        throw ConfigError("--patches: '" + patches + "' is not a regular expression (" + e.what() + ")");
+    }
+    std::string all;
+    int kept = 0;
+    for (int i = 0; i < r->GetNumberOfPatchArrays(); ++i) {
+        std::string name = r->GetPatchArrayName(i);
+        const std::string bare = name.rfind("patch/", 0) == 0 ? name.substr(6) : name;
+        bool keep = name != "internalMesh" && name.rfind("lagrangian", 0) != 0;
+        if (keep) all += (all.empty() ? "" : ", ") + bare;
+        keep = keep && std::regex_match(bare, select);
+        kept += keep;
+        r->SetPatchArrayStatus(name.c_str(), keep ? 1 : 0);
+    }
+    if (kept == 0)
+        throw ConfigError(path + ": --patches '" + patches + "' matches no boundary patch (patches: " + all + ")");
+}
+
+}  // namespace
+
+bool splitUnitsSuffix(const std::string& name, std::string& bare, std::string& units) {
+    const size_t open = name.rfind(" [");
+    if (open == std::string::npos || open == 0 || name.back() != ']') return false;
+    bare = name.substr(0, open);
+    units = name.substr(open + 2, name.size() - open - 3);
+    return true;
+}
+
+bool readsDecomposed(const std::string& casePath, const std::string& choice) {
+    if (choice != "auto" && choice != "reconstructed" && choice != "decomposed")
+        throw ConfigError("--foam-case: '" + choice + "' is not one of auto, reconstructed, decomposed");
+    if (choice == "reconstructed") return false;
+    const fs::path dir = caseDir(casePath);
+    const std::vector<fs::path> procs = processorDirs(dir);
+    if (choice == "decomposed") {
+        if (procs.empty())
+            throw ConfigError(casePath + ": --foam-case decomposed: no processor* directories in " + dir.string());
+        return true;
+    }
+    if (procs.empty()) return false;
+    return !hasMesh(dir) || countTimeDirs(procs.front()) > countTimeDirs(dir);
+}
+
+// --- openOpenFoam -------------------------------------------------------------------------
+std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options) {
+    const bool decomposed = readsDecomposed(path, options.foamCase);
+    vtkSmartPointer<vtkOpenFOAMReader> r;
+    std::string format = "OpenFOAM case";
+    if (decomposed) {
+        // One reader per processor directory, appended patch by patch; VTK's parallel
+        // reader wants a controller even in one process.
+        auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
+        p->SetController(vtkSmartPointer<vtkDummyController>::New());
+        p->SetCaseType(vtkPOpenFOAMReader::DECOMPOSED_CASE);
+        format += " (decomposed, " + std::to_string(processorDirs(caseDir(path)).size()) + " processor directories)";
+        r = p;
+    } else {
+        r = vtkSmartPointer<vtkOpenFOAMReader>::New();
+    }
+    r->SetFileName(path.c_str());
+    // Every time directory is a step, 0/ included (SkipZeroTime is on by default).
+    r->SkipZeroTimeOff();
+    r->ListTimeStepsByControlDictOff();
+    // Units travel as " [m/s]" name suffixes; the source moves them to UNITS_LABEL.
+    r->AddDimensionsToArrayNamesOn();
+    // Moving meshes: the mesh stays cached and only the points of a time directory with
+    // polyMesh/points are re-read (VTK compares the points' time instance per step).
+    r->CacheMeshOn();
+    trap.watch(r);
+    r->UpdateInformation();
+    trap.throwIfError(path, "cannot read " + format);
+    selectPatches(r, path, options.patches);
+    r->EnableAllCellArrays();
+    r->EnableAllPointArrays();
+    r->DisableAllLagrangianArrays();
+    r->UpdateInformation();
+    trap.throwIfError(path, "cannot read " + format);
+    return std::make_unique<OpenFoamSource>(r, path, format, trap);
+}
+
+}  // namespace flowsurf::io::detail
