@@ -49,8 +49,8 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     sheet.pixels.assign(size_t(sheet.width) * sheet.height * 3, 255);
     ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
     for (size_t m = 0; m < names.size(); ++m) {
-        auto method = methods::makeMethod(names[m], o.params, o.size);
         AnimatedSurface surface(o, *steps);  // each method sees the same data times
+        auto method = methods::makeMethod(names[m], surface.paramsFor(o.params), o.size);
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
         for (int k = 0; k <= o.frames; ++k) {

@@ -46,7 +46,7 @@ int runRender(const RenderOptions& o) {
     const FrameCameras cameras(o, steps->bounds());
     gl::HeadlessContext context(o.verbose);
     AnimatedSurface surface(o, *steps);
-    std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, o.params, o.size);
+    std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, surface.paramsFor(o.params), o.size);
 
     std::unique_ptr<io::VideoWriter> video;
     if (kind == OutputKind::Mp4) video = std::make_unique<io::VideoWriter>(o.output, o.size.width, o.size.height,

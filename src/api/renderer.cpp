@@ -65,7 +65,7 @@ struct Renderer::Impl {
         steps = data->provider();
         cameras = std::make_unique<session::FrameCameras>(options, data->bounds);
         surface = std::make_unique<session::AnimatedSurface>(options, *steps);
-        method = methods::makeMethod(options.method, options.params, options.size);
+        method = methods::makeMethod(options.method, surface->paramsFor(options.params), options.size);
         method->timer().setEnabled(true);
         frame = 0;
         optionsChanged = cameraChanged = false;

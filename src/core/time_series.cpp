@@ -40,6 +40,7 @@ SurfaceMesh interpolate(const SurfaceMesh& a, const SurfaceMesh& b, double w) {
     const float wf = float(w);
     SurfaceMesh m;
     m.triangles = a.triangles;
+    m.units = a.units;
     m.positions.resize(a.positions.size());
     m.normals.resize(a.positions.size());
     for (size_t i = 0; i < a.positions.size(); ++i) {

@@ -36,6 +36,7 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
             throw ConfigError("--time-step " + std::to_string(o.timeStep) + ": " + steps.label(0) + " has " +
                               std::to_string(steps.count()) + " time step(s)");
         core::SurfaceMesh mesh = provider_.load(o.timeStep);
+        noteUnits(mesh);
         upload(mesh, steps.label(o.timeStep));
         common_.colorRange = surface_->colorRange();
         return;
@@ -44,6 +45,18 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
     stream_ = std::make_unique<core::StepStream>(provider_, 3, true);
     mapping_ = makeTimeMapping(o, stream_->times());
     levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
+    if (units_.empty()) noteUnits(stream_->meshAt(mapping_.at(0)));
+}
+
+methods::MethodParams AnimatedSurface::paramsFor(const methods::MethodParams& params) const {
+    methods::MethodParams p = params;
+    if (!p.common.title.empty()) return p;
+    // The name SurfaceGpu gives the colour array, with the units of the array behind it.
+    const std::string array = p.common.colorBy.empty() ? field_ : core::ScalarSpec::parse(p.common.colorBy).array;
+    const auto it = units_.find(array);
+    if (it != units_.end() && !it->second.empty())
+        p.common.title = (p.common.colorBy.empty() ? "|" + field_ + "|" : p.common.colorBy) + " [" + it->second + "]";
+    return p;
 }
 
 void AnimatedSurface::resolveColorRange() {
@@ -56,7 +69,9 @@ void AnimatedSurface::resolveColorRange() {
     for (size_t i = 0; i < provider_.count(); ++i) {
         glm::vec2 r(1.0f, 0.0f);
         try {
-            r = methods::dataColorRange(provider_.load(i), field_, common_);
+            const core::SurfaceMesh mesh = provider_.load(i);
+            noteUnits(mesh);
+            r = methods::dataColorRange(mesh, field_, common_);
         } catch (const IoError&) {
         } catch (const FormatError&) {
         }

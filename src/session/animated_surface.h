@@ -9,6 +9,7 @@
 #include "session/options.h"
 #include "session/prepared_steps.h"
 
+#include <map>
 #include <memory>
 
 namespace flowsurf::session {
@@ -37,10 +38,14 @@ public:
     // The data times of the steps (empty for steady data).
     const std::vector<double>& times() const;
     const std::string& field() const { return field_; }
+    // `params` for a method drawing this data: without --title, the legend's title gains
+    // the colour array's units where the file gives them ("|U| [m/s]", "p [m2/s2]").
+    methods::MethodParams paramsFor(const methods::MethodParams& params) const;
     size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
 
 private:
     void upload(const core::SurfaceMesh& mesh, const std::string& where);
+    void noteUnits(const core::SurfaceMesh& mesh) { if (units_.empty()) units_ = mesh.units; }
 
     // The colour range the options leave to the data: over every step of a series.
     void resolveColorRange();
@@ -55,6 +60,7 @@ private:
     std::unique_ptr<methods::SurfaceGpu> surface_;
     std::unique_ptr<methods::TimeLevelSource> levels_;
     size_t uploadedTopology_ = 0;  // step whose triangles surface_ holds
+    std::map<std::string, std::string> units_;  // of the data's arrays, from the first step read
 };
 
 // The frame -> data time mapping of the options for these step times.

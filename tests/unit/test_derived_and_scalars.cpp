@@ -12,12 +12,14 @@
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <cmath>
 #include <cstdio>
 
 using namespace flowsurf;
 using testing_io::ScratchDir;
+using testing_io::makeGrid;
 using testing_io::writeText;
 
 namespace {
@@ -135,6 +137,27 @@ TEST(Scalars, OpenFoamFieldOnOnePatchIsKept) {
     ASSERT_NE(walls.findScalar("T"), nullptr);
     for (float v : walls.findScalar("T")->values) EXPECT_EQ(v, 2.0f);
     EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"nope"}), ConfigError);
+}
+
+// A cell scalar with no value (NaN) on one cell: the points it shares with a cell that has
+// a value take that value; only the points of NaN cells alone stay NaN (VTK's averaging
+// would make every point of the NaN cell NaN, shrinking the coloured part by a ring).
+TEST(Scalars, NanCellsDoNotSpreadToSharedPoints) {
+    ScratchDir dir;
+    vtkSmartPointer<vtkPolyData> grid = makeGrid(2, 1);  // two quads sharing the edge x = 1
+    grid->GetCellData()->GetArray("cellId")->SetTuple1(0, 5.0);
+    grid->GetCellData()->GetArray("cellId")->SetTuple1(1, std::nan(""));
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetInputData(grid);
+    writer->SetFileName(dir.file("half.vtp").c_str());
+    ASSERT_EQ(writer->Write(), 1);
+    const core::SurfaceMesh m = io::readDataset(dir.file("half.vtp")).steps.at(0).mesh;
+    const core::ScalarField* s = m.findScalar("cellId");
+    ASSERT_NE(s, nullptr);
+    for (size_t i = 0; i < m.vertexCount(); ++i) {
+        if (m.positions[i].x < 1.5f) EXPECT_EQ(s->values[i], 5.0f) << "point at x = " << m.positions[i].x;
+        else EXPECT_TRUE(std::isnan(s->values[i])) << "point at x = " << m.positions[i].x;
+    }
 }
 
 TEST(Colormaps, ParaViewJsonPresetIsSampled) {

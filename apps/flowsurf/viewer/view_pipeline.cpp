@@ -75,7 +75,7 @@ void ViewPipeline::build(const RenderOptions& o, const std::vector<std::string>&
     try {
         surface_ = std::make_unique<AnimatedSurface>(*options, *steps_);
         for (const std::string& name : methodNames) {
-            made.push_back(methods::makeMethod(name, options->params, size));
+            made.push_back(methods::makeMethod(name, surface_->paramsFor(options->params), size));
             made.back()->timer().setEnabled(true);
         }
     } catch (...) {

@@ -1,0 +1,202 @@
+// OpenFOAM cases as they come, written here as small text files (unit hex cells): a
+// decomposed case (processor* directories only), a moving mesh (points per time
+// directory), units from `dimensions`, `info`'s patches with their fields, and the
+// warning when a field file has no entry for a patch.
+#include "core/errors.h"
+#include "io/dataset_reader.h"
+#include "io/series_reader.h"
+#include "test_io_common.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace flowsurf;
+using namespace flowsurf::testing_io;
+
+namespace {
+
+std::string header(const std::string& cls, const std::string& object) {
+    return "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class " + cls + ";\n    object " + object + ";\n}\n";
+}
+
+// The unit cube's faces in OpenFOAM's hex point order, each pointing out of the cell:
+// 0: z = 0, 1: z = 1, 2: y = 0, 3: y = 1, 4: x = 0, 5: x = 1.
+const char* const kCubeFaces[6] = {"4(0 3 2 1)", "4(4 5 6 7)", "4(0 1 5 4)", "4(3 7 6 2)", "4(0 4 7 3)", "4(1 2 6 5)"};
+
+struct Patch {
+    std::string name, type;
+    std::vector<int> faces;   // of kCubeFaces
+    std::string extra = "";   // more boundary entries (processor patches)
+};
+
+std::string cubePoints(double x0, double z0) {
+    std::string s = "8\n(\n";
+    for (int k = 0; k < 2; ++k)
+        for (auto [x, y] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+            s += "(" + std::to_string(x0 + x) + " " + std::to_string(y) + " " + std::to_string(z0 + k) + ")\n";
+    return s + ")\n";
+}
+
+// One cell in `dir`/constant/polyMesh: the cube moved by x0, its faces in patch order.
+void writeCubeMesh(const fs::path& dir, double x0, const std::vector<Patch>& patches) {
+    const fs::path mesh = dir / "constant/polyMesh";
+    fs::create_directories(mesh);
+    std::string faces, boundary;
+    int count = 0;
+    for (const auto& p : patches) {
+        boundary += p.name + "\n{\n type " + p.type + ";\n nFaces " + std::to_string(p.faces.size()) +
+                    ";\n startFace " + std::to_string(count) + ";\n" + p.extra + "}\n";
+        for (int f : p.faces) faces += std::string(kCubeFaces[f]) + "\n", ++count;
+    }
+    writeText((mesh / "points").string(), header("vectorField", "points") + cubePoints(x0, 0));
+    writeText((mesh / "faces").string(), header("faceList", "faces") + std::to_string(count) + "\n(\n" + faces + ")\n");
+    std::string owners;  // every face belongs to cell 0
+    for (int i = 0; i < count; ++i) owners += "0\n";
+    writeText((mesh / "owner").string(), header("labelList", "owner") + std::to_string(count) + "\n(\n" + owners + ")\n");
+    writeText((mesh / "neighbour").string(), header("labelList", "neighbour") + "0\n(\n)\n");
+    writeText((mesh / "boundary").string(), header("polyBoundaryMesh", "boundary") + std::to_string(patches.size()) +
+                                                "\n(\n" + boundary + ")\n");
+}
+
+// A volVectorField/volScalarField file; `entries` are the boundaryField's patch entries.
+void writeField(const fs::path& timeDir, const std::string& name, const std::string& cls, const std::string& dims,
+                const std::string& internal, const std::vector<std::pair<std::string, std::string>>& entries) {
+    fs::create_directories(timeDir);
+    std::string body = "dimensions [" + dims + "];\ninternalField uniform " + internal + ";\nboundaryField\n{\n";
+    for (const auto& [patch, value] : entries) body += patch + "\n{\n type fixedValue;\n value uniform " + value + ";\n}\n";
+    writeText((timeDir / name).string(), header(cls, name) + body + "}\n");
+}
+
+void writeControlDict(const ScratchDir& dir) {
+    fs::create_directories(dir.path() / "system");
+    writeText(dir.file("system/controlDict"),
+              header("dictionary", "controlDict") + "application pimpleFoam;\nstartTime 0;\nendTime 1;\ndeltaT 1;\n");
+    writeText(dir.file("case.foam"), "");
+}
+
+}  // namespace
+
+// decomposePar's layout: two cells, one per processor directory, the face between them a
+// processor patch on each side; the case folder has no mesh and no time directories.
+TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
+    ScratchDir dir;
+    writeControlDict(dir);
+    const std::string proc = " inGroups 1(processor);\n matchTolerance 0.0001;\n transform unknown;\n";
+    writeCubeMesh(dir.path() / "processor0", 0,
+                  {{"walls", "wall", {0, 1, 2, 3, 4}}, {"procBoundary0to1", "processor", {5}, proc + " myProcNo 0;\n neighbProcNo 1;\n"}});
+    writeCubeMesh(dir.path() / "processor1", 1,
+                  {{"walls", "wall", {0, 1, 2, 3, 5}}, {"procBoundary1to0", "processor", {4}, proc + " myProcNo 1;\n neighbProcNo 0;\n"}});
+    for (const char* p : {"processor0", "processor1"})
+        for (const char* t : {"0", "0.5"}) {
+            const std::string u = std::string("(") + (t[1] ? "2" : "1") + " 0 0)";
+            writeField(dir.path() / p / t, "U", "volVectorField", "0 1 -1 0 0 0 0", u,
+                       {{"walls", u}, {p == std::string("processor0") ? "procBoundary0to1" : "procBoundary1to0", u}});
+        }
+
+    // auto: the case folder has no mesh, so the processor directories are read.
+    auto steps = io::openSeries(dir.file("case.foam"));
+    ASSERT_EQ(steps->count(), 2u);
+    EXPECT_DOUBLE_EQ(steps->time(1), 0.5);
+    const core::SurfaceMesh m = steps->load(1);
+    EXPECT_EQ(m.triangleCount(), 20u) << "both cells' five wall faces, not the faces between processors";
+    EXPECT_FLOAT_EQ(m.bounds().lo.x, 0.0f);
+    EXPECT_FLOAT_EQ(m.bounds().hi.x, 2.0f);
+    ASSERT_NE(m.findField("U"), nullptr);
+    for (const auto& u : m.findField("U")->values) EXPECT_EQ(u, glm::vec3(2, 0, 0));
+
+    const io::FileInfo info = io::inspectFile(dir.file("case.foam"));
+    EXPECT_NE(info.format.find("decomposed, 2 processor directories"), std::string::npos) << info.format;
+    ASSERT_EQ(info.parts.size(), 1u);
+    EXPECT_EQ(info.parts[0].name, "walls");
+    EXPECT_EQ(info.parts[0].faces, 10u);
+
+    // Asked for the reconstructed case, which has no mesh: an error naming the case.
+    EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"", "reconstructed"})->load(0), FormatError);
+    // With a reconstructed mesh and 0/ only (a parallel run not reconstructed), auto
+    // still takes the processor directories' two times; asked for, the one reconstructed time.
+    writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
+    writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
+    EXPECT_EQ(io::openSeries(dir.file("case.foam"))->count(), 2u);
+    EXPECT_EQ(io::openSeries(dir.file("case.foam"), {"", "reconstructed"})->count(), 1u);
+    // Asked for a decomposed case where there is none.
+    ScratchDir plain;
+    writeControlDict(plain);
+    writeCubeMesh(plain.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
+    writeField(plain.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
+    EXPECT_THROW(io::openSeries(plain.file("case.foam"), {"", "decomposed"}), ConfigError);
+    EXPECT_EQ(io::openSeries(plain.file("case.foam"))->load(0).triangleCount(), 12u);
+}
+
+// Dynamic-mesh solvers write polyMesh/points into the time directories where the mesh
+// moved; a time directory without them keeps the last points written before it.
+TEST(OpenFoam, MovingMeshPointsAreReadPerStep) {
+    ScratchDir dir;
+    writeControlDict(dir);
+    writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
+    for (const char* t : {"0", "1", "2"})
+        writeField(dir.path() / t, "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
+    fs::create_directories(dir.path() / "1/polyMesh");
+    writeText(dir.file("1/polyMesh/points"), header("vectorField", "points") + cubePoints(0, 2));
+    auto steps = io::openSeries(dir.file("case.foam"));
+    ASSERT_EQ(steps->count(), 3u);
+    const float expectedLoZ[3] = {0, 2, 2};
+    for (size_t i = 0; i < 3; ++i) {
+        const core::SurfaceMesh m = steps->load(i);
+        EXPECT_EQ(m.triangleCount(), 12u);
+        EXPECT_FLOAT_EQ(m.bounds().lo.z, expectedLoZ[i]) << "step " << i;
+        EXPECT_FLOAT_EQ(m.bounds().hi.z, expectedLoZ[i] + 1) << "step " << i;
+    }
+    // Back to the first step: the reader's cached mesh moves back too.
+    EXPECT_FLOAT_EQ(steps->load(0).bounds().hi.z, 1.0f);
+}
+
+// `dimensions [0 1 -1 0 0 0 0]` is "m/s" (ParaView's notation): on the mesh for the
+// legend's title and in `info`; the arrays keep their plain names.
+TEST(OpenFoam, UnitsComeFromTheFieldsDimensions) {
+    ScratchDir dir;
+    writeControlDict(dir);
+    writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
+    writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
+    writeField(dir.path() / "0", "p", "volScalarField", "0 2 -2 0 0 0 0", "3", {{"walls", "3"}});
+    writeField(dir.path() / "0", "T", "volScalarField", "0 0 0 1 0 0 0", "300", {{"walls", "300"}});
+    const core::SurfaceMesh m = io::openSeries(dir.file("case.foam"))->load(0);
+    ASSERT_NE(m.findField("U"), nullptr);
+    ASSERT_NE(m.findScalar("p"), nullptr);
+    EXPECT_EQ(m.units.at("U"), "m/s");
+    EXPECT_EQ(m.units.at("p"), "m2/s2");
+    EXPECT_EQ(m.units.at("T"), "K");
+    const io::FileInfo info = io::inspectFile(dir.file("case.foam"));
+    for (const auto& a : info.arrays) EXPECT_EQ(a.units, a.name == "U" ? "m/s" : a.name == "p" ? "m2/s2" : "K") << a.name;
+}
+
+// `info` says which field is on which patch; a field file without an entry for a patch
+// listed before the ones it has makes VTK 9.1 drop it there and after: the user is told.
+TEST(OpenFoam, InfoListsPatchesWithTheirFieldsAndMissingEntriesAreWarned) {
+    ScratchDir dir;
+    writeControlDict(dir);
+    writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3}}, {"ends", "patch", {4, 5}}});
+    writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}, {"ends", "(1 0 0)"}});
+    writeField(dir.path() / "0", "T", "volScalarField", "0 0 0 1 0 0 0", "0", {{"walls", "2"}});
+    io::FileInfo info = io::inspectFile(dir.file("case.foam"));
+    ASSERT_EQ(info.parts.size(), 2u);
+    auto has = [](const io::PartInfo& p, const char* a) {
+        return std::find(p.arrays.begin(), p.arrays.end(), a) != p.arrays.end();
+    };
+    EXPECT_EQ(info.parts[0].name, "walls");
+    EXPECT_EQ(info.parts[0].faces, 4u);
+    EXPECT_TRUE(has(info.parts[0], "T") && has(info.parts[0], "U"));
+    EXPECT_EQ(info.parts[1].name, "ends");
+    EXPECT_TRUE(!has(info.parts[1], "T") && has(info.parts[1], "U"));
+    EXPECT_NE(io::formatFileInfo(info).find("ends"), std::string::npos);
+
+    // The same with "ends" listed first: T is gone everywhere, and the warning says why.
+    writeCubeMesh(dir.path(), 0, {{"ends", "patch", {4, 5}}, {"walls", "wall", {0, 1, 2, 3}}});
+    ::testing::internal::CaptureStderr();
+    const core::SurfaceMesh m = io::openSeries(dir.file("case.foam"))->load(0);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(m.findScalar("T"), nullptr);
+    EXPECT_NE(err.find("fields T of time 0 have no entry for boundary patch 'ends'"), std::string::npos) << err;
+}
