@@ -49,13 +49,18 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
 }
 
 methods::MethodParams AnimatedSurface::paramsFor(const methods::MethodParams& params) const {
+    return withUnitsInTitle(params, field_, units_);
+}
+
+methods::MethodParams withUnitsInTitle(const methods::MethodParams& params, const std::string& field,
+                                       const std::map<std::string, std::string>& units) {
     methods::MethodParams p = params;
     if (!p.common.title.empty()) return p;
     // The name SurfaceGpu gives the colour array, with the units of the array behind it.
-    const std::string array = p.common.colorBy.empty() ? field_ : core::ScalarSpec::parse(p.common.colorBy).array;
-    const auto it = units_.find(array);
-    if (it != units_.end() && !it->second.empty())
-        p.common.title = (p.common.colorBy.empty() ? "|" + field_ + "|" : p.common.colorBy) + " [" + it->second + "]";
+    const std::string array = p.common.colorBy.empty() ? field : core::ScalarSpec::parse(p.common.colorBy).array;
+    const auto it = units.find(array);
+    if (it != units.end() && !it->second.empty())
+        p.common.title = (p.common.colorBy.empty() ? "|" + field + "|" : p.common.colorBy) + " [" + it->second + "]";
     return p;
 }
 

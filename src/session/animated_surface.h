@@ -63,6 +63,11 @@ private:
     std::map<std::string, std::string> units_;  // of the data's arrays, from the first step read
 };
 
+// `params` with the legend title the data gives when --title is not set: the colour
+// array's name as SurfaceGpu shows it ("|U|", "p", "U:x") and its units, if known.
+methods::MethodParams withUnitsInTitle(const methods::MethodParams& params, const std::string& field,
+                                       const std::map<std::string, std::string>& units);
+
 // The frame -> data time mapping of the options for these step times.
 core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times);
 

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "io/dataset_reader.h"
 #include "io/series_reader.h"
+#include "session/animated_surface.h"
 #include "session/colormap_file.h"
 #include "session/scene_setup.h"
 #include "test_io_common.h"
@@ -158,6 +159,21 @@ TEST(Scalars, NanCellsDoNotSpreadToSharedPoints) {
         if (m.positions[i].x < 1.5f) EXPECT_EQ(s->values[i], 5.0f) << "point at x = " << m.positions[i].x;
         else EXPECT_TRUE(std::isnan(s->values[i])) << "point at x = " << m.positions[i].x;
     }
+}
+
+// The legend's title carries the colour array's units when the file gives them; --title wins.
+TEST(Scalars, LegendTitleGainsTheUnits) {
+    const std::map<std::string, std::string> units{{"U", "m/s"}, {"p", "m2/s2"}};
+    methods::MethodParams params;
+    EXPECT_EQ(session::withUnitsInTitle(params, "U", units).common.title, "|U| [m/s]");
+    params.common.colorBy = "p";
+    EXPECT_EQ(session::withUnitsInTitle(params, "U", units).common.title, "p [m2/s2]");
+    params.common.colorBy = "U:x";
+    EXPECT_EQ(session::withUnitsInTitle(params, "U", units).common.title, "U:x [m/s]");
+    params.common.colorBy = "T";  // no units known: the method's default title (the name)
+    EXPECT_EQ(session::withUnitsInTitle(params, "U", units).common.title, "");
+    params.common.title = "pressure";
+    EXPECT_EQ(session::withUnitsInTitle(params, "U", units).common.title, "pressure");
 }
 
 TEST(Colormaps, ParaViewJsonPresetIsSampled) {
