@@ -88,6 +88,27 @@ OptionSpec choice(std::string name, std::string group, std::string help, const m
     return s;
 }
 
+// A text option restricted to `choices` (kept as text in RenderOptions); the list the
+// panel, --help and ParaView show is the list it checks against.
+template <typename Ref>
+OptionSpec textChoice(std::string name, std::string group, std::string help, std::vector<std::string> choices,
+                      Ref ref) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), OptionKind::Choice, 0, 0,
+                 std::move(choices), true, nullptr, nullptr};
+    const std::string n = s.name;
+    s.set = [n, allowed = s.choices, ref](RenderOptions& o, const std::string& t) {
+        if (std::find(allowed.begin(), allowed.end(), t) == allowed.end()) {
+            std::string list;
+            for (const auto& c : allowed)
+                if (!c.empty()) list += (list.empty() ? "" : ", ") + c;
+            throw ConfigError(dashed(n) + ": '" + t + "' is not one of " + list);
+        }
+        ref(o) = t;
+    };
+    s.get = [ref](const RenderOptions& o) { return std::string(ref(const_cast<RenderOptions&>(o))); };
+    return s;
+}
+
 // on|off switches kept as choices for the command line's compatibility.
 template <typename Ref>
 OptionSpec onOff(std::string name, std::string group, std::string help, Ref ref) {
@@ -208,19 +229,9 @@ std::vector<OptionSpec> buildTable() {
                "radius (object units; 0: one-ring estimate only)", &RenderOptions::curvatureRadius, 0, 1e30));
     add(text("patches", gData, "OpenFOAM: read the boundary patches whose names match this regular expression "
                                "(default: all)", FS_REF(patches)));
-    {
-        OptionSpec s{"foam-case", "", gData, "OpenFOAM: read the reconstructed case or the processor* directories "
-                     "of a decomposed one (auto: the decomposed one when it has more time directories or the case "
-                     "folder has no mesh)", OptionKind::Choice, 0, 0, {"auto", "reconstructed", "decomposed"}, true,
-                     nullptr, nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            if (v != "auto" && v != "reconstructed" && v != "decomposed")
-                throw ConfigError("--foam-case: '" + v + "' is not one of auto, reconstructed, decomposed");
-            o.foamCase = v;
-        };
-        s.get = [](const RenderOptions& o) { return o.foamCase; };
-        add(s);
-    }
+    add(textChoice("foam-case", gData, "OpenFOAM: read the reconstructed case or the processor* directories "
+                   "of a decomposed one (auto: the decomposed one when it has more time directories or the case "
+                   "folder has no mesh)", {"auto", "reconstructed", "decomposed"}, FS_REF(foamCase)));
     {
         OptionSpec s{"time-step", "", gData, "Render only this time step (index), as steady data", OptionKind::Int, 0,
                      1e9, {}, true, nullptr, nullptr};
@@ -395,19 +406,9 @@ std::vector<OptionSpec> buildTable() {
                &RenderOptions::ortho, 0, 1e30));
     add(number("orbit", gCam, "Camera turns this many degrees per frame about the up axis (dynamic case)",
                &RenderOptions::orbit, -180, 180));
-    {
-        OptionSpec s{"view", "", gCam, "View preset as ParaView's camera buttons: +x, -x, +y, -y, +z, -z (look along "
-                     "that direction) or iso (default: front, a little above and to the right)", OptionKind::Choice, 0,
-                     0, {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"}, true, nullptr, nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            static const char* kViews[] = {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"};
-            if (std::find(std::begin(kViews), std::end(kViews), v) == std::end(kViews))
-                throw ConfigError("--view: '" + v + "' is not one of +x, -x, +y, -y, +z, -z, iso");
-            o.view = v;
-        };
-        s.get = [](const RenderOptions& o) { return o.view; };
-        add(s);
-    }
+    add(textChoice("view", gCam, "View preset as ParaView's camera buttons: +x, -x, +y, -y, +z, -z (look along "
+                   "that direction) or iso (default: front, a little above and to the right)",
+                   {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"}, FS_REF(view)));
     {
         OptionSpec s{"up-axis", "", gCam, "The data's up axis (many CFD cases are z-up): orients --view and the "
                      "default view", OptionKind::Choice, 0, 0, {"x", "y", "z"}, true, nullptr, nullptr};
