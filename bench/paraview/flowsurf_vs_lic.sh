@@ -14,9 +14,9 @@
 # BENCH_NICE (e.g. -10, root only), BENCH_TIMEOUT (seconds per rank count, default 900) and
 # BENCH_RETRIES (default 1): a run that fails or hangs is killed and tried again; one that never
 # finishes leaves out its rows and the script exits 1. ParaView 5.11 itself hangs now and then in
-# the first render at 4 ranks on 2 cores, with or without the plugin loaded (README). xvfb-run starts its search for
-# a free display at a random number from 200 (two xvfb-run -a starting at 99 at once on a shared
-# machine collided here).
+# the first render at 4 ranks on 2 cores, with or without the plugin loaded (README).
+# xvfb-run starts its search for a free display at a random number from 200 (two xvfb-run -a
+# starting at 99 at once on a shared machine collided here).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
