@@ -126,6 +126,25 @@ for method in ('isa', 'ibfvs', 'hybrid'):
     if not err <= 10.0:
         failures.append('%s: streak orientation off by %.1f deg (> 10)' % (method, err))
 
+# While an animation plays (the view time changes) ISA and IBFVS advance one frame per
+# render; a render at the same time and camera shows the same texture.
+for method in ('isa', 'ibfvs'):
+    rep.FlowSurfMethod = method
+    still = [shot('%s_still_%d' % (method, k)) for k in range(2)]
+    played = []
+    for t in (1.0, 2.0):
+        view.ViewTime = t
+        played.append(shot('%s_time_%g' % (method, t)))
+    view.ViewTime = 0.0
+    same = np.abs(still[1] - still[0]).mean()
+    steps = [np.abs(played[0] - still[1]).mean(), np.abs(played[1] - played[0]).mean()]
+    print('%s: still render changes %.3f gray levels; each played frame %.2f, %.2f' % ((method, same) + tuple(steps)))
+    if same != 0.0:
+        failures.append('%s: a render without a new time or camera changed the texture (%.3f)' % (method, same))
+    if not min(steps) > 0.5:
+        failures.append('%s: a new view time did not advance the texture (%.2f, %.2f)' % ((method,) + tuple(steps)))
+rep.FlowSurfMethod = 'hybrid'
+
 # Properties change the picture (each against the hybrid default above).
 for prop, value in (('FlowSurfFilterLength', 9), ('FlowSurfNoiseSize', '128'), ('FlowSurfOverlay', 'gray')):
     default = getattr(rep, prop)

@@ -5,6 +5,7 @@
 #include "gl/objects.h"
 #include "gl/stage_timer.h"
 #include "methods/common/params.h"
+#include "methods/common/process_group.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
 
@@ -21,6 +22,10 @@ struct FrameInput {
     // Unsteady data around this frame's data time, for methods that integrate through
     // time (usesTimeLevels()); null or empty: the surface's field is used throughout.
     const TimeLevels* levels = nullptr;
+    // The processes rendering this view together, each with its own piece of the surface
+    // (sort-last parallel rendering, process_group.h); null: this process alone. Each method
+    // merges its per-pixel buffers over the group by depth before its image-space stages.
+    ProcessGroup* group = nullptr;
 };
 
 class FlowMethod {

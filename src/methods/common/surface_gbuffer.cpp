@@ -62,4 +62,9 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glDisable(GL_CULL_FACE);
 }
 
+void SurfaceGBuffer::merge(ProcessGroup& group) {
+    if (position_) mergeByDepth(group, depth_, {&velocity_, &shade_, &mask_, &position_});
+    else mergeByDepth(group, depth_, {&velocity_, &shade_, &mask_});
+}
+
 }  // namespace flowsurf::methods

@@ -8,6 +8,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/process_group.h"
 #include "methods/common/surface_gpu.h"
 
 namespace flowsurf::methods {
@@ -23,6 +24,8 @@ class SurfaceGBuffer {
 public:
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false);
     void render(const SurfaceGpu& surface, const core::Camera& camera);
+    // Collective: every buffer merged by depth over `group` (process_group.h).
+    void merge(ProcessGroup& group);
 
     const gl::Texture2D& velocity() const { return velocity_; }
     const gl::Texture2D& shade() const { return shade_; }

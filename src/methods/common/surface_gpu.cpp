@@ -78,46 +78,87 @@ std::vector<float> tangentialSpeed(const core::SurfaceMesh& mesh, const core::Ve
 }
 }  // namespace
 
-glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
-    if (params.colorBy.empty()) {
-        const core::VectorField* field = mesh.findField(fieldName);
-        return {0.0f, field ? percentile(tangentialSpeed(mesh, *field), 98.0f) : 0.0f};
+StatisticsSamples statisticsSamples(const core::SurfaceMesh& mesh, const std::string& fieldName,
+                                    const CommonParams& params) {
+    StatisticsSamples s;
+    if (const core::VectorField* field = mesh.findField(fieldName)) s.speed = tangentialSpeed(mesh, *field);
+    if (!params.colorBy.empty()) s.color = scalarValues(mesh, params.colorBy);
+    if (!params.maskBy.empty()) s.mask = scalarValues(mesh, params.maskBy);
+    s.bounds = mesh.bounds();
+    return s;
+}
+
+SurfaceStatistics summarize(const StatisticsSamples& samples, const CommonParams& params) {
+    SurfaceStatistics st;
+    st.speedP98 = percentile(samples.speed, 98.0f);
+    const bool given = params.colorRange.x <= params.colorRange.y && !params.colorRangeAuto;
+    if (given) st.colorRange = params.colorRange;
+    else if (params.colorBy.empty()) st.colorRange = {0.0f, st.speedP98};
+    else {
+        auto [lo, hi] = core::finiteRange(samples.color);
+        st.colorRange = {lo, hi};
     }
-    auto [lo, hi] = core::finiteRange(scalarValues(mesh, params.colorBy));
-    return {lo, hi};
+    if (!params.maskBy.empty()) {
+        auto [lo, hi] = core::finiteRange(samples.mask);
+        st.maskRange = params.maskRange.x <= params.maskRange.y ? params.maskRange : glm::vec2(lo, hi);
+    }
+    st.clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(samples.speed, params.speedPercentile);
+    // The largest advection speed after clamping or normalising (what interleave writes).
+    float raw = 0.0f;
+    for (float v : samples.speed) raw = std::max(raw, v);
+    st.maxSpeed = params.normalize ? (raw > 0.0f ? 1.0f : 0.0f)
+                  : st.clampSpeed > 0.0f ? std::min(raw, st.clampSpeed)
+                                         : raw;
+    st.bounds = samples.bounds;
+    return st;
+}
+
+SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::SurfaceMesh& piece,
+                                         const std::string& fieldName, const CommonParams& params) {
+    StatisticsSamples s = statisticsSamples(piece, fieldName, params);
+    s.speed = group.gather(s.speed);
+    if (!params.colorBy.empty()) s.color = group.gather(s.color);
+    if (!params.maskBy.empty()) s.mask = group.gather(s.mask);
+    float box[6] = {s.bounds.lo.x, s.bounds.lo.y, s.bounds.lo.z, -s.bounds.hi.x, -s.bounds.hi.y, -s.bounds.hi.z};
+    group.minInPlace(box);
+    s.bounds.lo = {box[0], box[1], box[2]};
+    s.bounds.hi = {-box[3], -box[4], -box[5]};
+    return summarize(s, params);
+}
+
+glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
+    return summarize(statisticsSamples(mesh, fieldName, params), params).colorRange;
 }
 
 std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,
-                                          const CommonParams& params) {
+                                          const CommonParams& params, const SurfaceStatistics* whole) {
     const core::VectorField* field = mesh.findField(fieldName);
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
     std::vector<glm::vec3> vel;
     std::vector<float> speed = tangentialSpeed(mesh, *field, &vel);
-    colorSpeedMax_ = percentile(speed, 98.0f);
+    const SurfaceStatistics st = whole ? *whole : summarize(statisticsSamples(mesh, fieldName, params), params);
+    colorSpeedMax_ = st.speedP98;
     lineField_ = core::isLineField(fieldName);
     // Colour value: speed (0 .. p98 as before) or the --color-by scalar, over the given
-    // range or this frame's.
+    // range or the data's.
     std::vector<float> color = params.colorBy.empty() ? speed : scalarValues(mesh, params.colorBy);
     colorName_ = params.colorBy.empty() ? "|" + fieldName + "|" : params.colorBy;
-    const bool given = params.colorRange.x <= params.colorRange.y && !params.colorRangeAuto;
-    colorRange_ = given ? params.colorRange : dataColorRange(mesh, fieldName, params);
+    colorRange_ = st.colorRange;
     normalizeInPlace(color, colorRange_);
     // Mask value: the --mask-by scalar, else speed / p98 (the velocity mask).
     std::vector<float> mask;
     if (!params.maskBy.empty()) {
         mask = scalarValues(mesh, params.maskBy);
-        auto [lo, hi] = core::finiteRange(mask);
-        normalizeInPlace(mask, params.maskRange.x <= params.maskRange.y ? params.maskRange : glm::vec2(lo, hi));
+        normalizeInPlace(mask, st.maskRange);
         for (float& m : mask) m = std::isfinite(m) ? std::clamp(m, 0.0f, 1.0f) : 0.0f;
     } else {
         mask = speed;
         normalizeInPlace(mask, {0.0f, colorSpeedMax_});
     }
-    const float clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(speed, params.speedPercentile);
+    const float clampSpeed = st.clampSpeed;
     clampSpeed_ = params.normalize ? 0.0f : clampSpeed;
     std::vector<float> interleaved;
     interleaved.reserve(mesh.vertexCount() * 11);
-    maxSpeed_ = 0.0f;
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         glm::vec3 v = vel[i];
         if (params.normalize && speed[i] > 0.0f) v /= speed[i];
@@ -125,29 +166,34 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
         const glm::vec3& p = mesh.positions[i];
         const glm::vec3& n = mesh.normals[i];
         interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, color[i], mask[i]});
-        maxSpeed_ = std::max(maxSpeed_, glm::length(v));
     }
-    bounds_ = mesh.bounds();
+    maxSpeed_ = st.maxSpeed;
+    bounds_ = st.bounds;
     return interleaved;
 }
 
 bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName,
-                                const CommonParams& params) {
+                                const CommonParams& params, const SurfaceStatistics* whole) {
     if (GLsizeiptr(mesh.vertexCount() * 11 * sizeof(float)) != vertices_.size() ||
         mesh.triangleCount() != triangles_)
         return false;
-    std::vector<float> interleaved = interleave(mesh, fieldName, params);
+    std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
     glNamedBufferSubData(vertices_.id(), 0, vertices_.size(), interleaved.data());
     generation_ = nextGeneration++;
     return true;
 }
 
 SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
-                       bool withEdges) {
-    std::vector<float> interleaved = interleave(mesh, fieldName, params);
+                       bool withEdges, const SurfaceStatistics* whole) {
+    std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
     triangles_ = mesh.triangleCount();
+    // An empty piece (a process of a parallel render holding no triangles) draws nothing;
+    // GL buffers need at least one byte.
+    interleaved.resize(std::max<size_t>(interleaved.size(), 11));
     vertices_ = gl::Buffer(GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_DYNAMIC_STORAGE_BIT);
-    indices_ = gl::Buffer(GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)), mesh.triangles.data(), 0);
+    const glm::uvec3 none{0, 0, 0};
+    indices_ = gl::Buffer(GLsizeiptr(std::max<size_t>(mesh.triangles.size(), 1) * sizeof(glm::uvec3)),
+                          mesh.triangles.empty() ? &none : mesh.triangles.data(), 0);
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, kVertexStride);

@@ -5,25 +5,53 @@
 #include "core/mesh.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
+#include "methods/common/process_group.h"
 
 #include <string>
 #include <vector>
 
 namespace flowsurf::methods {
 
+// The data statistics an upload scales by: speeds (dt, the clamp, the velocity mask) and the
+// colour and mask ranges. Made from the mesh itself or, when the mesh is one piece of a
+// surface split over processes, from every piece (wholeSurfaceStatistics), so that all
+// pieces scale their vectors and colours alike.
+struct SurfaceStatistics {
+    float speedP98 = 0.0f;       // 98th percentile of the non-zero tangential speeds
+    float clampSpeed = 0.0f;     // CommonParams::speedPercentile-th percentile; 0: no clamp
+    float maxSpeed = 0.0f;       // largest advection speed after clamping or normalising
+    glm::vec2 colorRange{0.0f, 1.0f};
+    glm::vec2 maskRange{0.0f, 1.0f};  // with CommonParams::maskBy
+    core::Bounds bounds;
+};
+// The per-vertex values the statistics are made of: tangential speed, the colour and mask
+// scalars (when CommonParams names them), and the bounds.
+struct StatisticsSamples {
+    std::vector<float> speed, color, mask;
+    core::Bounds bounds;
+};
+StatisticsSamples statisticsSamples(const core::SurfaceMesh& mesh, const std::string& fieldName,
+                                    const CommonParams& params);
+SurfaceStatistics summarize(const StatisticsSamples& samples, const CommonParams& params);
+// Collective: the statistics of the surface whose piece on this process is `piece`.
+SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::SurfaceMesh& piece,
+                                         const std::string& fieldName, const CommonParams& params);
+
 class SurfaceGpu {
 public:
     SurfaceGpu() = default;
     // Uploads `mesh` with the vector field `fieldName` made tangential, scaled for
     // advection as `params` say (speedPercentile, normalize). Throws FieldError.
-    // `withEdges`: also build the edge adjacency the IBFVS edge mask draws.
+    // `withEdges`: also build the edge adjacency the IBFVS edge mask draws. `whole`: the
+    // statistics to scale by when `mesh` is one piece of a larger surface (null: its own).
     SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {},
-               bool withEdges = false);
+               bool withEdges = false, const SurfaceStatistics* whole = nullptr);
 
     // A new time step of the same topology (interpolated positions and vectors): rewrites
     // the vertex buffer in place, keeping triangles and edge adjacency. False (nothing
     // done) if the vertex or triangle count differs: build a new SurfaceGpu then.
-    bool updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params);
+    bool updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
+                        const SurfaceStatistics* whole = nullptr);
 
     void draw() const;  // binds the VAO and draws the triangles
     // Draws every edge as GL_LINES_ADJACENCY (v0, v1, opposite vertex of the triangle
@@ -57,7 +85,7 @@ private:
     // Tangential, clamped/normalised vectors interleaved with position, normal and speed;
     // sets the speed statistics and bounds.
     std::vector<float> interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,
-                                  const CommonParams& params);
+                                  const CommonParams& params, const SurfaceStatistics* whole);
 
     gl::Buffer vertices_, indices_;
     gl::VertexArray vao_, edgeVao_;

@@ -24,12 +24,16 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // (1) seed textures: P-space position and velocity per pixel [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
+    if (unsteady && in.group)
+        throw ConfigError("the hybrid method's unsteady time levels cannot be merged over processes yet; "
+                    "render each time step as steady (no time levels) in a parallel render");
     lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
                    !core::sameCamera(in.camera, seedCamera_) || unsteady != haveLevels_ ||
                    (unsteady && !(*in.levels == seedLevels_));
     if (lastDynamic_) {
         timer_.begin("seed textures");
         seeds_.render(*in.surface, in.camera);
+        if (in.group) seeds_.merge(*in.group);  // the whole surface's seeds
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;

@@ -36,6 +36,9 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.fbo(target), params_.ibfvs.flowBackground, c.cullBackFaces, noise);
     current_ = target;
+    // Parallel: the whole surface's advected texture on every process, which is also the
+    // next frame's source (the texture lives in the image).
+    if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");

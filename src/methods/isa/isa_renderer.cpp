@@ -40,6 +40,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
         timer_.begin("velocity image");
         velocityImage_[vi_].render(*in.surface, in.camera);
+        if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");

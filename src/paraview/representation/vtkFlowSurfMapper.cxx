@@ -4,6 +4,7 @@
 
 #include "gl_state_guard.h"
 #include "polydata_to_mesh.h"
+#include "vtk_process_group.h"
 
 #include "core/errors.h"
 #include "gl/objects.h"
@@ -43,6 +44,12 @@ struct vtkFlowSurfMapper::Internals
   std::optional<double> lastTime;
   fs::core::Camera lastCamera;
 
+  // The processes rendering this view together (pvbatch / pvserver under mpiexec); null
+  // when ParaView runs on one. Every decision below that leads to a collective step is
+  // made the same on all processes (VtkProcessGroup::any).
+  std::unique_ptr<fs::paraview::VtkProcessGroup> group;
+  bool groupChecked = false;
+
   fs::gl::Program composite;
   fs::gl::VertexArray emptyVao;
   bool glChecked = false;
@@ -69,6 +76,13 @@ struct vtkFlowSurfMapper::Internals
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+
+  fs::methods::FrameInput frameInput(const fs::core::Camera& camera, uint32_t k) const
+  {
+    fs::methods::FrameInput in{ surface.get(), camera, k, nullptr };
+    in.group = group.get();
+    return in;
+  }
 };
 
 vtkStandardNewMacro(vtkFlowSurfMapper);
@@ -179,9 +193,14 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     }
     glChecked = true;
   }
-  if (!input)
+  if (!groupChecked)
   {
-    return;
+    group = fs::paraview::parallelGroup();
+    groupChecked = true;
+  }
+  if (!input && !group)
+  {
+    return;  // in parallel an empty piece still takes part
   }
   int w = 0, h = 0, x0 = 0, y0 = 0;
   ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
@@ -194,25 +213,66 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
 
   fs::paraview::GlStateGuard guard(win->GetState());
 
-  // (1) the surface, converted and uploaded when the data, the array or the options change
-  const bool dataChanged = input->GetMTime() != dataTime || vectors != dataVectors;
-  if (dataChanged || optionsChanged || !surface)
+  // (1) the surface, converted and uploaded when the data, the array or the options change;
+  // in parallel each process holds a piece and scales by the whole surface's statistics
+  bool dataChanged = input ? (input->GetMTime() != dataTime || vectors != dataVectors) : mesh.positions.size() > 0;
+  if (group)
+  {
+    dataChanged = group->any(dataChanged);
+  }
+  bool rebuild = dataChanged || optionsChanged || !surface;
+  if (group)
+  {
+    rebuild = group->any(rebuild);
+  }
+  if (rebuild)
   {
     if (dataChanged || mesh.positions.empty())
     {
-      mesh = fs::paraview::toSurfaceMesh(input, vectors);
-      dataTime = input->GetMTime();
+      std::string error;
+      try
+      {
+        mesh = input ? fs::paraview::toSurfaceMesh(input, vectors) : fs::core::SurfaceMesh{};
+      }
+      catch (const std::exception& e)
+      {
+        error = e.what();
+      }
+      if (group && group->any(!error.empty()) && error.empty())
+      {
+        error = "FlowSurf: another process could not use its piece of the surface (see its message)";
+      }
+      if (!error.empty())
+      {
+        mesh = {};
+        surface.reset();
+        throw fs::FieldError(error);
+      }
+      dataTime = input ? input->GetMTime() : 0;
       dataVectors = vectors;
     }
     surface.reset();
-    if (mesh.triangleCount() == 0)
+    if (mesh.triangleCount() == 0 && !group)
     {
       return;
     }
     fs::core::SurfaceMesh checked = mesh;
-    fs::core::validateMesh(checked, "FlowSurf input");
+    if (checked.fields.empty())
+    {
+      checked.fields.push_back({ vectors, {} });  // an empty piece
+    }
+    if (checked.triangleCount() > 0)
+    {
+      fs::core::validateMesh(checked, "FlowSurf input");
+    }
+    const fs::methods::CommonParams common = methodParams().common;
+    std::optional<fs::methods::SurfaceStatistics> whole;
+    if (group)
+    {
+      whole = fs::methods::wholeSurfaceStatistics(*group, checked, vectors, common);
+    }
     surface = std::make_unique<fs::methods::SurfaceGpu>(
-      checked, vectors, methodParams().common, options.params.ibfvs.edgeMask);
+      checked, vectors, common, options.params.ibfvs.edgeMask, whole ? &*whole : nullptr);
   }
 
   // (2) the method, made anew when options or the view size change
@@ -234,13 +294,13 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     const uint32_t frames = hybrid ? 0u : uint32_t(warmupFrames);
     for (uint32_t k = 0; k <= frames; ++k)
     {
-      method->renderFrame({ surface.get(), camera, k, nullptr });
+      method->renderFrame(frameInput(camera, k));
     }
     frame = frames;
   }
   else if (timeChanged || cameraChanged)
   {
-    method->renderFrame({ surface.get(), camera, ++frame, nullptr });
+    method->renderFrame(frameInput(camera, ++frame));
   }
   lastTime = viewTime;
   lastCamera = camera;

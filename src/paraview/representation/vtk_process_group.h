@@ -1,0 +1,33 @@
+// flowsurf — the library's ProcessGroup (methods/common/process_group.h) over ParaView's
+// vtkMultiProcessController (MPI under pvbatch / pvserver with mpiexec): element-wise
+// all-reductions (MIN, SUM) and an all-gather of variable-length arrays.
+#pragma once
+
+#include "methods/common/process_group.h"
+
+#include <memory>
+
+class vtkMultiProcessController;
+
+namespace flowsurf::paraview {
+
+class VtkProcessGroup : public methods::ProcessGroup {
+public:
+  explicit VtkProcessGroup(vtkMultiProcessController* controller);
+  int rank() const override;
+  int size() const override;
+  void minInPlace(std::span<float> values) override;
+  void minInPlace(std::span<int32_t> values) override;
+  void sumInPlace(std::span<float> values) override;
+  std::vector<float> gather(std::span<const float> values) override;
+  // True on every process if `flag` is true on any (a collective decision).
+  bool any(bool flag);
+
+private:
+  vtkMultiProcessController* controller_;
+};
+
+// The group of this process when ParaView runs on more than one (null otherwise).
+std::unique_ptr<VtkProcessGroup> parallelGroup();
+
+}  // namespace flowsurf::paraview
