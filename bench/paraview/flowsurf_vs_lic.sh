@@ -51,7 +51,9 @@ cp "$PLUGIN" "$OUT/plugin/FlowSurf.so"
   echo "plugin: $PLUGIN"
   stat -c 'modified: %y  size: %s' "$PLUGIN"
   sha256sum "$OUT/plugin/FlowSurf.so"
-  git -C "$ROOT" log -1 --format='flowsurf commit: %H %s' 2>/dev/null || true
+  git -C "$ROOT" log -1 --format='bench commit: %h %s' 2>/dev/null || true
+  # the checkout the plugin was built in, as it is now (the build may be older, or dirty)
+  git -C "$(dirname "$PLUGIN")" log -1 --format='plugin checkout HEAD now: %h %ci %s' 2>/dev/null || true
   echo "cores: $(nproc)  load at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 } | tee "$OUT/plugin/info.txt" >&2
 
