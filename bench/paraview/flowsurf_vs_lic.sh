@@ -11,10 +11,12 @@
 # the CSV there. The plugin (FLOWSURF_PLUGIN, default the one under build-paraview/) is copied
 # into OUT first, so a rebuild during the run does not change it mid-way.
 # Environment: FLOWSURF_PLUGIN, PVPYTHON_PREFIX (see setup.sh), XVFB_SCREEN (1280x1024x24),
-# BENCH_NICE (e.g. -10, root only), BENCH_TIMEOUT (seconds per rank count, default 1800: a hung
-# run is killed and its rows left out; the script then exits 1). xvfb-run starts its search for
-# a free display at a random number from 200 (two xvfb-run -a starting at 99 at once on a shared
-# machine collided here).
+# BENCH_NICE (e.g. -10, root only), BENCH_TIMEOUT (seconds per rank count, default 900) and
+# BENCH_RETRIES (default 1): a run that fails or hangs is killed and tried again; one that never
+# finishes leaves out its rows and the script exits 1. ParaView 5.11 itself hangs now and then in
+# the first render at 4 ranks on 2 cores, with or without the plugin loaded (README).
+# xvfb-run starts its search for a free display at a random number from 200 (two xvfb-run -a
+# starting at 99 at once on a shared machine collided here).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
@@ -49,7 +51,9 @@ cp "$PLUGIN" "$OUT/plugin/FlowSurf.so"
   echo "plugin: $PLUGIN"
   stat -c 'modified: %y  size: %s' "$PLUGIN"
   sha256sum "$OUT/plugin/FlowSurf.so"
-  git -C "$ROOT" log -1 --format='flowsurf commit: %H %s' 2>/dev/null || true
+  git -C "$ROOT" log -1 --format='bench commit: %h %s' 2>/dev/null || true
+  # the checkout the plugin was built in, as it is now (the build may be older, or dirty)
+  git -C "$(dirname "$PLUGIN")" log -1 --format='plugin checkout HEAD now: %h %ci %s' 2>/dev/null || true
   echo "cores: $(nproc)  load at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 } | tee "$OUT/plugin/info.txt" >&2
 
@@ -62,13 +66,19 @@ NICE=()
 failed=0
 for n in ${RANKS//,/ }; do
   mkdir -p "$OUT/np$n"
-  echo "# $n rank(s): ${MPI[*]} -np $n pvbatch flowsurf_vs_lic.py --meshes $MESHES ..." >&2
-  # /usr/bin/time per rank: each rank's peak memory ("maxrss_kb") lands in the log.
-  "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
-    timeout -k 10 "${BENCH_TIMEOUT:-1800}" "${MPI[@]}" -np "$n" -x PYTHONPATH /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
-    pvbatch "$HERE/flowsurf_vs_lic.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$OUT/np$n" \
-    --meshes "$MESHES" --size "$SIZE" --steps "$STEPS" --frames "$FRAMES" \
-    2>&1 | tee "$OUT/np$n/pvbatch.log" | grep -E '^(  |[a-z0-9]+: |rank maxrss|DONE)' >&2
+  for attempt in $(seq 0 "${BENCH_RETRIES:-1}"); do
+    [ "$attempt" -eq 0 ] || echo "# $n rank(s) hung or failed: attempt $((attempt + 1))" >&2
+    echo "# $n rank(s): ${MPI[*]} -np $n pvbatch flowsurf_vs_lic.py --meshes $MESHES ..." >&2
+    # /usr/bin/time per rank: each rank's peak memory ("maxrss_kb") lands in the log.
+    "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
+      timeout -k 10 "${BENCH_TIMEOUT:-900}" "${MPI[@]}" -np "$n" -x PYTHONPATH \
+      /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
+      pvbatch "$HERE/flowsurf_vs_lic.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$OUT/np$n" \
+      --meshes "$MESHES" --size "$SIZE" --steps "$STEPS" --frames "$FRAMES" \
+      2>&1 | tee "$OUT/np$n/pvbatch.log" | grep -E '^(  |[a-z0-9]+: |rank maxrss|DONE)' >&2 || true
+    grep -q '^DONE' "$OUT/np$n/pvbatch.log" && break
+    cp "$OUT/np$n/pvbatch.log" "$OUT/np$n/pvbatch.failed$attempt.log"
+  done
   if ! grep -q '^DONE' "$OUT/np$n/pvbatch.log"; then
     # A failed or hung rank count (killed after BENCH_TIMEOUT s) leaves out its rows; the
     # 1-rank run is the reference, so without it there is nothing to compare.
