@@ -78,6 +78,7 @@ def render(TAG, PARTITIONS):
     SaveScreenshot(os.path.join(OUT, 'ranks_%s.png' % TAG), view, ImageResolution=[W, H])
     rep.ColorArrayName = ['POINTS', '']
     rep.FlowSurfVectors = ['POINTS', 'V']
+    print('FLOWSURF_STARTED', flush=True)  # ParaView rendered; from here a hang is ours
     rep.SetRepresentationType('FlowSurf')
     for method in METHODS:
         rep.FlowSurfMethod = method

@@ -16,17 +16,28 @@ export PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages"
 # Open MPI as root (CI) and more ranks than cores; shared-memory transport without
 # ptrace-based single copy (refused in containers).
 MPI=(mpiexec --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none)
-# xrun LOG CMD...: CMD under xvfb-run with its output in LOG. A display taken by another
-# xvfb-run starting at the same moment (outside ctest's xvfb lock) makes pvbatch abort with
-# "bad X server connection": that, and only that, is tried again on a fresh display.
+# xrun LOG CMD...: CMD under xvfb-run with its output in LOG. Tried again, up to 3 times,
+# on two failures that are not ours: a display taken by another xvfb-run starting at the
+# same moment (pvbatch aborts with "bad X server connection"), and ParaView's own startup
+# hang at 4 ranks on 2 cores (rank 0 in IceT's MPI_Comm_dup before the first render, the
+# others waiting; seen in 3 of 11 benchmark runs, 2 of 8 of them without the plugin loaded,
+# all with `--bind-to none`, which is why it is not used here: 4 of 4 runs clean without it)
+# — a run that printed nothing of ours after 150 s. A hang inside our merge would time out
+# every attempt and fail the test.
 xrun() {
   local log="$1" rc attempt
   shift
   for attempt in 1 2 3; do
-    timeout 240 xvfb-run -a "$@" >"$log" 2>&1
+    timeout -k 10 150 xvfb-run -a "$@" >"$log" 2>&1
     rc=$?
-    grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log" || return $rc
-    echo "no X display (attempt $attempt), again"
+    if grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log"; then
+      echo "no X display (attempt $attempt), again"
+    elif [ $rc -eq 124 ] && ! grep -q "^FLOWSURF_STARTED" "$log"; then
+      echo "ParaView hung before its first render (attempt $attempt), again"
+      pkill -f "pvbatch $HERE/parallel_test.py" 2>/dev/null
+    else
+      return $rc
+    fi
     sleep 2
   done
   return $rc
