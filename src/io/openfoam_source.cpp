@@ -133,39 +133,19 @@ void warnMissingPatchEntries(const std::vector<std::string>& warnings, const std
 
 // --- the source ---------------------------------------------------------------------------
 
-class OpenFoamSource final : public StepSource {
+// The reader's steps, with its warnings about patches missing from field files passed on
+// and the units moved from the array names to the labels.
+class OpenFoamSource final : public AlgorithmSource {
 public:
     OpenFoamSource(vtkSmartPointer<vtkOpenFOAMReader> reader, std::string path, std::string format,
                    VtkMessageTrap& trap)
-        : reader_(std::move(reader)), path_(std::move(path)), format_(std::move(format)), trap_(trap) {
-        vtkInformation* info = reader_->GetOutputInformation(0);
-        auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
-        if (info && info->Has(key)) times_.assign(info->Get(key), info->Get(key) + info->Length(key));
-    }
-    std::string format() const override { return format_; }
-    const std::vector<double>& times() const override { return times_; }
+        : AlgorithmSource(reader, std::move(path), std::move(format), trap) {}
 
-    vtkSmartPointer<vtkDataObject> readStep(size_t index) override {
-        VtkMessageTrap::Active active(trap_);
-        trap_.clear();
-        if (times_.empty()) reader_->Update();
-        else reader_->UpdateTimeStep(times_.at(index));
-        trap_.throwIfError(path_, "cannot read " + format_);
-        warnMissingPatchEntries(trap_.warnings(), path_);
-        vtkDataObject* out = reader_->GetOutputDataObject(0);
-        if (!out) throw FormatError(path_ + ": cannot read " + format_ + ": the reader gave no data");
-        vtkSmartPointer<vtkDataObject> copy;
-        copy.TakeReference(out->NewInstance());
-        copy->ShallowCopy(out);
-        moveUnitsToLabels(copy, units_);
-        return copy;
-    }
+protected:
+    void afterUpdate(VtkMessageTrap& trap) override { warnMissingPatchEntries(trap.warnings(), path()); }
+    void adapt(vtkDataObject& step) override { moveUnitsToLabels(&step, units_); }
 
 private:
-    vtkSmartPointer<vtkOpenFOAMReader> reader_;
-    std::string path_, format_;
-    VtkMessageTrap& trap_;
-    std::vector<double> times_;
     std::map<std::string, std::string> units_;
 };
 

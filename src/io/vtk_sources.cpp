@@ -107,42 +107,36 @@ void checkBinaryStlSize(const std::string& path) {
 }
 
 // --- reader-backed sources -----------------------------------------------------------
-class AlgorithmSource : public StepSource {
-public:
-    AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format,
-                    VtkMessageTrap& trap)
-        : reader_(reader), path_(std::move(path)), format_(std::move(format)), trap_(trap) {
-        vtkInformation* info = reader_->GetOutputInformation(0);
-        auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
-        if (info && info->Has(key)) {
-            const double* t = info->Get(key);
-            times_.assign(t, t + info->Length(key));
-        }
-    }
-    std::string format() const override { return format_; }
-    const std::vector<double>& times() const override { return times_; }
+}  // namespace
 
-    vtkSmartPointer<vtkDataObject> readStep(size_t index) override {
-        VtkMessageTrap::Active active(trap_);
-        trap_.clear();
-        if (times_.empty()) reader_->Update();
-        else reader_->UpdateTimeStep(times_.at(index));
-        trap_.throwIfError(path_, "cannot read " + format_);
-        vtkDataObject* out = reader_->GetOutputDataObject(0);
-        if (!out) throw FormatError(path_ + ": cannot read " + format_ + ": the reader gave no data");
-        // A copy, so that reading the next step cannot change what the caller holds.
-        vtkSmartPointer<vtkDataObject> copy;
-        copy.TakeReference(out->NewInstance());
-        copy->ShallowCopy(out);
-        return copy;
+// --- reader-backed sources (vtk_sources.h) ---
+AlgorithmSource::AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap)
+    : reader_(reader), path_(std::move(path)), format_(std::move(format)), trap_(trap) {
+    vtkInformation* info = reader_->GetOutputInformation(0);
+    auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
+    if (info && info->Has(key)) {
+        const double* t = info->Get(key);
+        times_.assign(t, t + info->Length(key));
     }
+}
 
-private:
-    vtkSmartPointer<vtkAlgorithm> reader_;
-    std::string path_, format_;
-    VtkMessageTrap& trap_;
-    std::vector<double> times_;
-};
+vtkSmartPointer<vtkDataObject> AlgorithmSource::readStep(size_t index) {
+    VtkMessageTrap::Active active(trap_);
+    trap_.clear();
+    if (times_.empty()) reader_->Update();
+    else reader_->UpdateTimeStep(times_.at(index));
+    trap_.throwIfError(path_, "cannot read " + format_);
+    afterUpdate(trap_);
+    vtkDataObject* out = reader_->GetOutputDataObject(0);
+    if (!out) throw FormatError(path_ + ": cannot read " + format_ + ": the reader gave no data");
+    vtkSmartPointer<vtkDataObject> copy;
+    copy.TakeReference(out->NewInstance());
+    copy->ShallowCopy(out);
+    adapt(*copy);
+    return copy;
+}
+
+namespace {
 
 // A data object read without a VTK reader (PLY, OBJ): one step, already in memory.
 class ReadySource : public StepSource {

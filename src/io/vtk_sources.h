@@ -8,6 +8,7 @@
 #include "io/dataset_reader.h"
 #include "io/vtk_messages.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkDataObject.h>
 #include <vtkSmartPointer.h>
 
@@ -28,6 +29,30 @@ public:
     size_t stepCount() const { return times().empty() ? 1 : times().size(); }
     // The reader's output for step `index` (may be composite). Throws FormatError.
     virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
+};
+
+// A VTK reader's output as steps (the reader's TIME_STEPS, or one step). Each step is a
+// shallow copy, so reading the next step cannot change what the caller holds. Readers that
+// need more per step (OpenFOAM: warnings, units) override the hooks.
+class AlgorithmSource : public StepSource {
+public:
+    AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap);
+    std::string format() const override { return format_; }
+    const std::vector<double>& times() const override { return times_; }
+    vtkSmartPointer<vtkDataObject> readStep(size_t index) override;
+
+protected:
+    // After the reader ran without error, with the trap still holding its messages.
+    virtual void afterUpdate(VtkMessageTrap& /*trap*/) {}
+    // On the copy handed out.
+    virtual void adapt(vtkDataObject& /*step*/) {}
+    const std::string& path() const { return path_; }
+
+private:
+    vtkSmartPointer<vtkAlgorithm> reader_;
+    std::string path_, format_;
+    VtkMessageTrap& trap_;
+    std::vector<double> times_;
 };
 
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
