@@ -136,19 +136,26 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     if (!field) throw FieldError("no vector field '" + fieldName + "'");
     std::vector<glm::vec3> vel;
     std::vector<float> speed = tangentialSpeed(mesh, *field, &vel);
-    const SurfaceStatistics st = whole ? *whole : summarize(statisticsSamples(mesh, fieldName, params), params);
+    // This piece's samples (speed, colour and mask scalars), computed once: the statistics
+    // of a whole mesh, and the per-vertex colour and mask values.
+    StatisticsSamples own;
+    own.speed = speed;
+    if (!params.colorBy.empty()) own.color = scalarValues(mesh, params.colorBy);
+    if (!params.maskBy.empty()) own.mask = scalarValues(mesh, params.maskBy);
+    own.bounds = mesh.bounds();
+    const SurfaceStatistics st = whole ? *whole : summarize(own, params);
     colorSpeedMax_ = st.speedP98;
     lineField_ = core::isLineField(fieldName);
     // Colour value: speed (0 .. p98 as before) or the --color-by scalar, over the given
     // range or the data's.
-    std::vector<float> color = params.colorBy.empty() ? speed : scalarValues(mesh, params.colorBy);
+    std::vector<float> color = params.colorBy.empty() ? speed : std::move(own.color);
     colorName_ = params.colorBy.empty() ? "|" + fieldName + "|" : params.colorBy;
     colorRange_ = st.colorRange;
     normalizeInPlace(color, colorRange_);
     // Mask value: the --mask-by scalar, else speed / p98 (the velocity mask).
     std::vector<float> mask;
     if (!params.maskBy.empty()) {
-        mask = scalarValues(mesh, params.maskBy);
+        mask = std::move(own.mask);
         normalizeInPlace(mask, st.maskRange);
         for (float& m : mask) m = std::isfinite(m) ? std::clamp(m, 0.0f, 1.0f) : 0.0f;
     } else {
