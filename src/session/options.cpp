@@ -316,6 +316,8 @@ std::vector<OptionSpec> buildTable() {
                "its motion over the frame (swept)", methods::kNoiseInjectionNames, FS_REF(params.common.noiseInjection)));
     add(flag("cull-back-faces", gMethod, "Skip back-facing triangles (closed, outward-oriented surfaces only)",
              FS_REF(params.common.cullBackFaces)));
+    add(choice("gl-path", gMethod, "Per-pixel passes as compute or fragment shaders (same images); auto picks "
+               "per GL renderer", methods::kGlPathNames, FS_REF(params.common.glPath)));
     add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));
     add(choice("on-camera-move", gMethod, "When the camera moves: translate (reproject the texture with the "
                "surface), freeze, none [L §IV-I]", methods::kCameraMoveNames, FS_REF(params.common.onCameraMove)));

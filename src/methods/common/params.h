@@ -42,6 +42,12 @@ enum class Resample { Bilinear, Bicubic };
 // step along the flow and keeps its full resolution across it.
 enum class NoiseInjectionMode { Point, Swept };
 
+// Which GL stage runs the per-pixel passes (hybrid particle tracing, ISA/IBFVS advection
+// with noise injection, the overlay). Fragment: full-screen triangles into framebuffers.
+// Compute: compute-shader dispatches writing images; the same images (tests compare both).
+// Auto: chosen per GL renderer (methods::resolveGlPath).
+enum class GlPath { Auto, Compute, Fragment };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
@@ -88,6 +94,7 @@ struct CommonParams {
     // which are seen from both sides, so off by default. Off-screen triangles are always
     // clipped by the rasteriser before they cost fragment work.
     bool cullBackFaces = false;
+    GlPath glPath = GlPath::Auto;  // per-pixel passes as compute or fragment shaders
 };
 
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
@@ -170,6 +177,9 @@ inline constexpr EnumNames<core::NoiseProfile, 2> kNoiseProfileNames{{{core::Noi
 inline constexpr EnumNames<Resample, 2> kResampleNames{{{Resample::Bicubic, "bicubic"}, {Resample::Bilinear, "bilinear"}}};
 inline constexpr EnumNames<NoiseInjectionMode, 2> kNoiseInjectionNames{{{NoiseInjectionMode::Swept, "swept"},
                                                                          {NoiseInjectionMode::Point, "point"}}};
+inline constexpr EnumNames<GlPath, 3> kGlPathNames{{{GlPath::Auto, "auto"},
+                                                     {GlPath::Compute, "compute"},
+                                                     {GlPath::Fragment, "fragment"}}};
 // The methods, in the order the viewer cycles through them.
 inline constexpr std::array<std::string_view, 3> kMethodNames{"isa", "ibfvs", "hybrid"};
 
