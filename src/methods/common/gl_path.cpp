@@ -1,0 +1,35 @@
+#include "methods/common/gl_path.h"
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <utility>
+
+namespace flowsurf::methods {
+
+namespace {
+
+// Renderer substring -> the faster path there, first match wins (doc/bench: fragment vs
+// compute per stage). Anything unlisted takes the fragment path, the one every GL 4.5
+// driver has run longest.
+constexpr std::array<std::pair<std::string_view, GlPath>, 2> kAutoRule{{
+    {"NVIDIA", GlPath::Compute},
+    {"llvmpipe", GlPath::Fragment},
+}};
+
+}  // namespace
+
+GlPath glPathFor(GlPath requested, std::string_view renderer) {
+    if (requested != GlPath::Auto) return requested;
+    for (const auto& [name, path] : kAutoRule)
+        if (renderer.find(name) != std::string_view::npos) return path;
+    return GlPath::Fragment;
+}
+
+GlPath resolveGlPath(GlPath requested) {
+    if (requested != GlPath::Auto) return requested;
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return glPathFor(requested, r ? std::string_view(r) : std::string_view());
+}
+
+}  // namespace flowsurf::methods
