@@ -13,11 +13,11 @@ done
 [ ${#missing[@]} -eq 0 ] && exit 0
 echo "flowsurf: installing ${missing[*]}" >&2
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq >&2
+$SUDO apt-get -o DPkg::Lock::Timeout=900 update -qq >&2
 sim="$($SUDO apt-get install -s --no-install-recommends "${missing[@]}")"
 if grep -q '^Remv ' <<<"$sim"; then
   echo "flowsurf: installing ${missing[*]} would remove packages; refusing:" >&2
   grep '^Remv ' <<<"$sim" >&2
   exit 1
 fi
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+$SUDO apt-get -o DPkg::Lock::Timeout=900 install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
