@@ -1,7 +1,7 @@
 #include "io/series_reader.h"
 
 #include "core/errors.h"
-#include "io/reader_process.h"
+#include "io/reader/reader_process.h"
 
 #include <glob.h>
 

@@ -3,8 +3,8 @@
 // does with its prefetching StepStream).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
+#include "io/reader/vtk_messages.h"
+#include "io/reader/vtk_sources.h"
 
 #include "test_io_common.h"
 

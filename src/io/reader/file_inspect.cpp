@@ -1,11 +1,11 @@
 // inspectFileHere: what `flowsurf info FILE` lists, read in the reader process. The
 // arrays are listed as the file stores them (point and cell data); the counts and bounds
 // are of the surface readDataset would produce for the first time step.
-#include "io/file_inspect.h"
+#include "io/reader/file_inspect.h"
 
-#include "io/surface_pipeline.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
+#include "io/reader/surface_pipeline.h"
+#include "io/reader/vtk_messages.h"
+#include "io/reader/vtk_sources.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>

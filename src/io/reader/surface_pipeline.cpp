@@ -1,8 +1,8 @@
 // Sections: leaves · surface stages · copy into core::SurfaceMesh.
-#include "io/surface_pipeline.h"
+#include "io/reader/surface_pipeline.h"
 
 #include "core/errors.h"
-#include "io/dataset_check.h"
+#include "io/reader/dataset_check.h"
 
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>

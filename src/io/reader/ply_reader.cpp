@@ -1,5 +1,5 @@
 // Sections: scalar types · header · body values · readPly.
-#include "io/ply_reader.h"
+#include "io/reader/ply_reader.h"
 
 #include "core/errors.h"
 

@@ -1,13 +1,13 @@
 // Sections: file checks · reader-backed sources · ParaView .pvd collections · openSource.
-#include "io/vtk_sources.h"
+#include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
-#include "io/exodus_check.h"
-#include "io/legacy_check.h"
-#include "io/obj_reader.h"
-#include "io/openfoam_source.h"
-#include "io/ply_reader.h"
-#include "io/xml_check.h"
+#include "io/reader/exodus_check.h"
+#include "io/reader/legacy_check.h"
+#include "io/reader/obj_reader.h"
+#include "io/reader/openfoam_source.h"
+#include "io/reader/ply_reader.h"
+#include "io/reader/xml_check.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkExodusIIReader.h>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "io/dataset_reader.h"
-#include "io/vtk_sources.h"
+#include "io/reader/vtk_sources.h"
 
 #include <memory>
 #include <string>

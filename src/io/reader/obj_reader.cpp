@@ -1,4 +1,4 @@
-#include "io/obj_reader.h"
+#include "io/reader/obj_reader.h"
 
 #include "core/errors.h"
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "io/dataset_reader.h"
-#include "io/vtk_messages.h"
+#include "io/reader/vtk_messages.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkDataObject.h>

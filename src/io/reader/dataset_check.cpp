@@ -1,4 +1,4 @@
-#include "io/dataset_check.h"
+#include "io/reader/dataset_check.h"
 
 #include "core/errors.h"
 

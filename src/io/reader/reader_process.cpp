@@ -1,7 +1,7 @@
-#include "io/reader_process.h"
+#include "io/reader/reader_process.h"
 
 #include "core/errors.h"
-#include "io/reader_wire.h"
+#include "io/reader/reader_wire.h"
 
 #include <dlfcn.h>
 #include <fcntl.h>

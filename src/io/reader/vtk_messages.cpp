@@ -1,4 +1,4 @@
-#include "io/vtk_messages.h"
+#include "io/reader/vtk_messages.h"
 
 #include "core/errors.h"
 

@@ -1,8 +1,8 @@
 // Sections: case layout · units and VTK's warnings · the source · openOpenFoam.
-#include "io/openfoam_source.h"
+#include "io/reader/openfoam_source.h"
 
 #include "core/errors.h"
-#include "io/surface_pipeline.h"
+#include "io/reader/surface_pipeline.h"
 
 #include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>

@@ -1,4 +1,4 @@
-#include "io/reader_wire.h"
+#include "io/reader/reader_wire.h"
 
 #include <poll.h>
 #include <sys/socket.h>

@@ -3,11 +3,11 @@
 // per request), then answers requests until Quit or end of stream. A crash, abort or
 // limit hit here ends this process only; the library reports it as a FormatError.
 #include "core/errors.h"
-#include "io/file_inspect.h"
-#include "io/reader_wire.h"
-#include "io/surface_pipeline.h"
-#include "io/vtk_messages.h"
-#include "io/vtk_sources.h"
+#include "io/reader/file_inspect.h"
+#include "io/reader/reader_wire.h"
+#include "io/reader/surface_pipeline.h"
+#include "io/reader/vtk_messages.h"
+#include "io/reader/vtk_sources.h"
 
 #include <sys/resource.h>
 

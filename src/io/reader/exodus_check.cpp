@@ -1,7 +1,7 @@
 // The NetCDF classic layout (CDF1/2/5), big-endian throughout:
 //   magic numrecs dim_list gatt_list var_list, var := name dimids vatts type vsize begin
 // (https://docs.unidata.ucar.edu/netcdf-c/current/file_format_specifications.html).
-#include "io/exodus_check.h"
+#include "io/reader/exodus_check.h"
 
 #include "core/errors.h"
 

@@ -1,4 +1,4 @@
-#include "io/xml_check.h"
+#include "io/reader/xml_check.h"
 
 #include "core/errors.h"
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/mesh.h"
-#include "io/vtk_messages.h"
+#include "io/reader/vtk_messages.h"
 
 #include <vtkSmartPointer.h>
 
