@@ -18,6 +18,8 @@ PLUGIN, OUT = sys.argv[1], sys.argv[2]
 W = H = 400
 EYE, TARGET, UP, FOV = np.array([0.0, -4.0, 3.0]), np.zeros(3), np.array([0.0, 0.0, 1.0]), 30.0
 LoadPlugin(PLUGIN, ns=globals())
+from paraview.vtk.vtkCommonCore import vtkLogger  # noqa: E402
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_1)  # the mapper's choice of surface pass
 
 sphere = Sphere(Radius=1.0, ThetaResolution=192, PhiResolution=96)
 spin = Calculator(Input=sphere, ResultArrayName='V', Function='-coordsY*iHat+coordsX*jHat')
@@ -160,6 +162,38 @@ changed = np.abs(shot('sphere_isa_step1') - images['isa']).mean()
 print('FlowSurfStepPx = 1 (isa): mean |difference| %.2f gray levels' % changed)
 if not changed > 2.0:
     failures.append('FlowSurfStepPx did not change the picture (%.2f)' % changed)
+
+# One surface pass: where the composite can reproduce ParaView's look of the surface (solid or
+# point-array colours through the lookup table, ambient + diffuse under ParaView's lights) the
+# plugin skips ParaView's own surface pass. With texture strength 0 the picture must then
+# equal ParaView's plain Surface representation of the same colouring; so must the fallback
+# (a specular highlight: ParaView draws the surface first, the texture is multiplied on).
+rep.FlowSurfMethod = 'hybrid'
+rep.FlowSurfOverlay = 'blend'
+rep.FlowSurfBeta = 0.0
+rep.Ambient, rep.Diffuse = 0.15, 0.85
+for case, coloring, specular in (('magnitude', ('POINTS', 'V', 'Magnitude'), 0.0),
+                                 ('component', ('POINTS', 'V', 'X'), 0.0),
+                                 ('solid', None, 0.0),
+                                 ('specular', ('POINTS', 'V', 'Magnitude'), 0.6)):
+    ColorBy(rep, coloring)
+    if coloring:
+        rep.RescaleTransferFunctionToDataRange(True, False)
+    rep.Specular = specular
+    rep.SetRepresentationType('Surface')
+    ref = shot('look_%s_paraview' % case)
+    rep.SetRepresentationType('FlowSurf')
+    got = shot('look_%s_flowsurf' % case)
+    surf = (ref > 2) | (got > 2)
+    diff = np.abs(got - ref)[surf].mean()
+    print('look %-9s: FlowSurf (beta 0) vs ParaView Surface: mean |difference| %.2f gray levels over %d px'
+          % (case, diff, surf.sum()))
+    if not diff <= 3.0:
+        failures.append('look %s: FlowSurf with beta 0 differs from ParaView\'s colouring by %.2f' % (case, diff))
+ColorBy(rep, None)
+rep.Specular = 0.0
+rep.Ambient, rep.Diffuse = 1.0, 0.0
+rep.FlowSurfBeta = 0.55
 
 # A missing vector array: ParaView's error (checked by the wrapper), the surface still drawn.
 rep.FlowSurfVectors = ['POINTS', 'NoSuchArray']

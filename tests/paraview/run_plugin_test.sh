@@ -26,4 +26,7 @@ cat "$log"
 [ $rc -eq 0 ] || { echo "pvbatch exited with $rc"; exit 1; }
 grep -q "no 3-component point array 'NoSuchArray'" "$log" || { echo "missing array: no ParaView error"; exit 1; }
 grep -q MISSING_ARRAY_SURVIVED "$log" || { echo "missing array: pvbatch did not run on"; exit 1; }
+# The surface pass: one (the look reproduced) by default, ParaView's with a specular highlight.
+grep -q "one surface pass" "$log" || { echo "the one-surface-pass path was never taken"; exit 1; }
+grep -q "ParaView's surface pass, then" "$log" || { echo "the fallback surface pass was never taken"; exit 1; }
 grep -q '^PASSED' "$log"

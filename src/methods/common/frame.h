@@ -40,6 +40,9 @@ public:
     virtual const gl::Texture2D& composite() const = 0;
     // Window depth of the surface for the last frame (1 = background): the surface mask.
     virtual const gl::Texture2D& surfaceDepth() const = 0;
+    // The last frame's surface attributes per pixel (RGBA16F): xyz the eye-space normal, w
+    // the colour value 0..1 (NaN: none): what a host's own colouring of the surface needs.
+    virtual const gl::Texture2D& surfaceShade() const = 0;
     // True if the last renderFrame ran the dynamic case.
     virtual bool lastFrameDynamic() const = 0;
     // True if the method reads FrameInput::levels (the hybrid's pathlines through

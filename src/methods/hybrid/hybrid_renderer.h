@@ -22,6 +22,7 @@ public:
     const gl::Texture2D& flowTexture() const override { return lic_.texture(); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
+    const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
     bool usesTimeLevels() const override { return true; }
     bool historyFree() const override { return true; }

@@ -20,6 +20,7 @@ public:
     const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
+    const gl::Texture2D& surfaceShade() const override { return shade_; }
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
 private:

@@ -11,11 +11,36 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+#include <limits>
+
 namespace flowsurf::paraview {
 
 namespace {
 
-void appendPolyData(vtkPolyData* pd, const std::string& vectors, core::SurfaceMesh& mesh, bool& normalsMissing)
+// The value of tuple i that a lookup table in `component` mode maps.
+float colorValue(vtkDataArray* a, vtkIdType i, int component)
+{
+  const int n = a->GetNumberOfComponents();
+  if (component >= 0)
+  {
+    return float(a->GetComponent(i, component < n ? component : n - 1));
+  }
+  if (n == 1)
+  {
+    return float(a->GetComponent(i, 0));
+  }
+  double sum = 0.0;
+  for (int c = 0; c < n; ++c)
+  {
+    const double v = a->GetComponent(i, c);
+    sum += v * v;
+  }
+  return float(std::sqrt(sum));
+}
+
+void appendPolyData(vtkPolyData* pd, const std::string& vectors, const ColorSource* color,
+  core::SurfaceMesh& mesh, bool& normalsMissing)
 {
   const vtkIdType n = pd->GetNumberOfPoints();
   if (n == 0 || (pd->GetNumberOfPolys() == 0 && pd->GetNumberOfStrips() == 0))
@@ -37,6 +62,19 @@ void appendPolyData(vtkPolyData* pd, const std::string& vectors, core::SurfaceMe
   if (mesh.fields.empty())
   {
     mesh.fields.push_back({ vectors, {} });
+  }
+  if (color)
+  {
+    if (mesh.scalars.empty())
+    {
+      mesh.scalars.push_back({ kColorScalarName, {} });
+    }
+    vtkDataArray* c = pd->GetPointData()->GetArray(color->array.c_str());
+    std::vector<float>& out = mesh.scalars[0].values;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out.push_back(c ? colorValue(c, i, color->component) : std::numeric_limits<float>::quiet_NaN());
+    }
   }
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -82,13 +120,13 @@ void appendPolyData(vtkPolyData* pd, const std::string& vectors, core::SurfaceMe
 
 }  // namespace
 
-core::SurfaceMesh toSurfaceMesh(vtkDataObject* data, const std::string& vectors)
+core::SurfaceMesh toSurfaceMesh(vtkDataObject* data, const std::string& vectors, const ColorSource* color)
 {
   core::SurfaceMesh mesh;
   bool normalsMissing = false;
   if (auto* pd = vtkPolyData::SafeDownCast(data))
   {
-    appendPolyData(pd, vectors, mesh, normalsMissing);
+    appendPolyData(pd, vectors, color, mesh, normalsMissing);
   }
   else if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
   {
@@ -97,7 +135,7 @@ core::SurfaceMesh toSurfaceMesh(vtkDataObject* data, const std::string& vectors)
     {
       if (auto* leaf = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
       {
-        appendPolyData(leaf, vectors, mesh, normalsMissing);
+        appendPolyData(leaf, vectors, color, mesh, normalsMissing);
       }
     }
   }

@@ -1,8 +1,10 @@
-// Index: Internals (state) · options · render: (1) surface (2) method (3) advection
-// frames (4) composite into ParaView's framebuffer.
+// Index: Internals (state) · options · render: (0) ParaView's surface pass, unless its look
+// is reproduced (host_look.h) (1) surface (2) method (3) advection frames (4) composite
+// into ParaView's framebuffer.
 #include "vtkFlowSurfMapper.h"
 
 #include "gl_state_guard.h"
+#include "host_look.h"
 #include "polydata_to_mesh.h"
 #include "vtk_process_group.h"
 
@@ -15,6 +17,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
+#include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -22,7 +25,9 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <algorithm>
 #include <optional>
+#include <vector>
 
 namespace fs = flowsurf;
 
@@ -36,6 +41,7 @@ struct vtkFlowSurfMapper::Internals
 
   vtkMTimeType dataTime = 0;
   std::string dataVectors;
+  std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by `mesh`
   fs::core::SurfaceMesh mesh;
   std::unique_ptr<fs::methods::SurfaceGpu> surface;
   std::unique_ptr<fs::methods::FlowMethod> method;
@@ -50,16 +56,24 @@ struct vtkFlowSurfMapper::Internals
   std::unique_ptr<fs::paraview::VtkProcessGroup> group;
   bool groupChecked = false;
 
-  fs::gl::Program composite;
+  fs::gl::Program composite, compositeHost;
   fs::gl::VertexArray emptyVao;
+  fs::gl::Texture2D hostTable;  // the lookup table's 256 colours, RGBA8
   bool glChecked = false;
+
+  // ParaView's look of the surface when the composite reproduces it (one surface pass per
+  // frame); nullopt: ParaView's own pass drew the surface first. Set by Render.
+  std::optional<fs::paraview::HostLook> host;
+  bool pathLogged = false;
 
   void releaseGl()
   {
     surface.reset();
     method.reset();
     composite = {};
+    compositeHost = {};
     emptyVao = {};
+    hostTable = {};
   }
 
   // The method's parameters: with the blend overlay F_s is ParaView's colouring, so the
@@ -72,10 +86,18 @@ struct vtkFlowSurfMapper::Internals
       p.common.colormap = fs::methods::Colormap::None;
       p.common.lighting = false;
     }
+    // The colour value the composite maps through ParaView's table (over the data's range).
+    if (dataColor)
+    {
+      p.common.colorBy = fs::paraview::kColorScalarName;
+      p.common.colorRange = { 1.0f, 0.0f };
+      p.common.colorRangeAuto = false;
+    }
     return p;
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+  void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
 
   fs::methods::FrameInput frameInput(const fs::core::Camera& camera, uint32_t k) const
   {
@@ -143,20 +165,49 @@ void vtkFlowSurfMapper::ReleaseGraphicsResources(vtkWindow* win)
 
 void vtkFlowSurfMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
-  // ParaView's surface with its own colour mapping: colour and depth.
-  this->Superclass::Render(ren, act);
   auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
   if (ren->GetSelector() || !win)
   {
-    return;  // picking passes draw ids, not colours
+    this->Superclass::Render(ren, act);  // picking passes draw ids, not colours
+    return;
+  }
+  // (0) ParaView's surface with its own colour mapping (colour and depth), unless the
+  // composite reproduces that look from the method's own surface pass. In parallel every
+  // process must take the same road (the decision feeds collective steps).
+  std::optional<fs::paraview::HostLook> look = fs::paraview::hostLook(ren, act, this, input);
+  Internals& impl = *this->Impl;
+  if (!impl.groupChecked)
+  {
+    impl.group = fs::paraview::parallelGroup();
+    impl.groupChecked = true;
+  }
+  if (impl.group && impl.group->any(!look))
+  {
+    look.reset();
+  }
+  if (look.has_value() != impl.host.has_value() || !impl.pathLogged)
+  {
+    vtkLogF(1, "FlowSurf: %s", look ? "one surface pass (ParaView's look reproduced)"
+                                    : "ParaView's surface pass, then the method's");
+    impl.pathLogged = true;
+  }
+  impl.host = look;
+  if (!look)
+  {
+    this->Superclass::Render(ren, act);
   }
   try
   {
-    this->Impl->render(ren, this->GetInputDataObject(0, 0), win);
+    impl.render(ren, input, win);
   }
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
+    if (look)
+    {
+      this->Superclass::Render(ren, act);  // the surface at least, in ParaView's colours
+    }
   }
 }
 
@@ -193,11 +244,6 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     }
     glChecked = true;
   }
-  if (!groupChecked)
-  {
-    group = fs::paraview::parallelGroup();
-    groupChecked = true;
-  }
   if (!input && !group)
   {
     return;  // in parallel an empty piece still takes part
@@ -215,7 +261,15 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
 
   // (1) the surface, converted and uploaded when the data, the array or the options change;
   // in parallel each process holds a piece and scales by the whole surface's statistics
-  bool dataChanged = input ? (input->GetMTime() != dataTime || vectors != dataVectors) : mesh.positions.size() > 0;
+  std::optional<fs::paraview::ColorSource> color;
+  if (host && host->scalars)
+  {
+    color = host->scalars;
+  }
+  const bool colorChanged = color.has_value() != dataColor.has_value() ||
+    (color && (color->array != dataColor->array || color->component != dataColor->component));
+  bool dataChanged = input ? (input->GetMTime() != dataTime || vectors != dataVectors || colorChanged)
+                           : mesh.positions.size() > 0;
   if (group)
   {
     dataChanged = group->any(dataChanged);
@@ -232,7 +286,8 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
       std::string error;
       try
       {
-        mesh = input ? fs::paraview::toSurfaceMesh(input, vectors) : fs::core::SurfaceMesh{};
+        mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr)
+                     : fs::core::SurfaceMesh{};
       }
       catch (const std::exception& e)
       {
@@ -250,6 +305,7 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
       }
       dataTime = input ? input->GetMTime() : 0;
       dataVectors = vectors;
+      dataColor = color;
     }
     surface.reset();
     if (mesh.triangleCount() == 0 && !group)
@@ -260,6 +316,10 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     if (checked.fields.empty())
     {
       checked.fields.push_back({ vectors, {} });  // an empty piece
+    }
+    if (dataColor && checked.scalars.empty())
+    {
+      checked.scalars.push_back({ fs::paraview::kColorScalarName, {} });
     }
     if (checked.triangleCount() > 0)
     {
@@ -275,6 +335,10 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
       checked, vectors, common, options.params.ibfvs.edgeMask, whole ? &*whole : nullptr);
   }
 
+  if (colorChanged && dataChanged)
+  {
+    optionsChanged = true;  // the method's colour value changes with it
+  }
   // (2) the method, made anew when options or the view size change
   bool warmup = dataChanged && !(lastTime && *lastTime != viewTime);
   if (optionsChanged || !method || w != size.width || h != size.height)
@@ -306,27 +370,81 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   lastCamera = camera;
 
   // (4) composite into ParaView's framebuffer by depth
-  if (!composite)
+  drawComposite(guard, x0, y0, w, h);
+}
+
+void vtkFlowSurfMapper::Internals::drawComposite(
+  const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h)
+{
+  const bool blend = options.params.common.overlay == fs::methods::OverlayScheme::Blend;
+  if (emptyVao.id() == 0)
   {
-    composite = fs::gl::Program(
-      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } });
     emptyVao = fs::gl::VertexArray::create();
+  }
+  fs::gl::Program& program = host ? compositeHost : composite;
+  if (!program)
+  {
+    program = fs::gl::Program(
+      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } },
+      host ? "#define HOST_LOOK 1\n#define MAX_LIGHTS " + std::to_string(fs::paraview::kMaxHostLights) + "\n"
+           : std::string());
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, guard.drawFramebuffer());
   glViewport(x0, y0, w, h);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
-  if (options.params.common.overlay == fs::methods::OverlayScheme::Blend)
+  // Without ParaView's pass the surface's depth is ours to write, for what is drawn after.
+  glDepthMask(host ? GL_TRUE : GL_FALSE);
+  if (blend && !host)
   {
     glEnable(GL_BLEND);
     glBlendFunc(GL_DST_COLOR, GL_ZERO);  // ParaView's colour x the method's image
   }
-  composite.use();
-  glUniform2i(composite.uniform("uOrigin"), x0, y0);
-  glUniform1f(composite.uniform("uDepthBias"), 2e-5f);
+  else
+  {
+    glDisable(GL_BLEND);
+  }
+  program.use();
+  glUniform2i(program.uniform("uOrigin"), x0, y0);
+  glUniform1f(program.uniform("uDepthBias"), 2e-5f);
   glBindTextureUnit(0, method->composite().id());
   glBindTextureUnit(1, method->surfaceDepth().id());
+  if (host)
+  {
+    const fs::paraview::HostLook& look = *host;
+    if (!hostTable)
+    {
+      hostTable = fs::gl::Texture2D(GL_RGBA8, 256, 1, GL_LINEAR);
+    }
+    std::vector<unsigned char> rgba(256 * 4, 255);
+    for (size_t i = 0; i < look.table.size() && i < 256; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgba[i * 4 + size_t(c)] = (unsigned char)std::lround(std::clamp(look.table[i][c], 0.0f, 1.0f) * 255.0f);
+      }
+    }
+    glTextureSubImage2D(hostTable.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    glBindTextureUnit(2, method->surfaceShade().id());
+    glBindTextureUnit(3, hostTable.id());
+    glUniform1i(program.uniform("uMultiply"), blend);
+    glUniform1i(program.uniform("uScalars"), look.scalars.has_value());
+    const glm::vec2 valueRange = surface ? surface->colorRange() : glm::vec2(0.0f, 1.0f);
+    glUniform2f(program.uniform("uValueRange"), valueRange.x, valueRange.y);
+    glUniform2f(program.uniform("uTableRange"), look.range.x, look.range.y);
+    glUniform3f(program.uniform("uSolid"), look.solid.x, look.solid.y, look.solid.z);
+    glUniform3f(program.uniform("uNanColor"), look.nanColor.x, look.nanColor.y, look.nanColor.z);
+    glUniform1i(program.uniform("uLighting"), look.lighting);
+    glUniform1f(program.uniform("uAmbient"), look.ambient);
+    glUniform1f(program.uniform("uDiffuse"), look.diffuse);
+    const GLsizei lights = GLsizei(look.lightDirEye.size());
+    glUniform1i(program.uniform("uLightCount"), lights);
+    if (lights > 0)
+    {
+      glUniform3fv(program.uniform("uLightDir"), lights, &look.lightDirEye[0].x);
+      glUniform3fv(program.uniform("uLightColor"), lights, &look.lightColor[0].x);
+    }
+  }
   glBindVertexArray(emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
