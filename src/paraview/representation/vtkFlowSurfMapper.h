@@ -1,6 +1,8 @@
-// flowsurf — a vtkCompositePolyDataMapper2 that draws ParaView's surface (with its own
-// colour mapping) and then runs a flowsurf method in the same OpenGL context and
-// composites the result into ParaView's framebuffer by depth:
+// flowsurf — a vtkCompositePolyDataMapper2 that runs a flowsurf method in ParaView's
+// OpenGL context and composites the result into ParaView's framebuffer by depth. The
+// surface is rasterised once per frame, by the method, where the composite can reproduce
+// ParaView's colouring of it (host_look.h); otherwise ParaView draws the surface with its
+// own colour mapping first. The composite:
 //   blend overlay: ParaView's colour x (beta F_a + (1 - beta)), [L eq. 10] with F_s =
 //   ParaView's colouring; gray, gray-lit, hue-lit, coolwarm: the method's image [W Fig. 6].
 // VTK's cached GL state is saved around the passes and restored after them.
