@@ -16,8 +16,14 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       flow_(viewport),
       composite_(GL_RGBA8, viewport) {}
 
-bool IsaRenderer::isDynamic(const FrameInput& in) const {
-    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
+// The cached advection mesh maps into the source view and carries the frame's dt: it is
+// stale when the view, the geometry or data, the source view (the translate remedy's
+// previous camera: equal to the view one frame after the camera stops) or the freeze
+// changed. A mesh kept from the last moving frame would go on applying that frame's
+// camera motion every frame (a drift after a drag, a radial smear after a zoom).
+bool IsaRenderer::isDynamic(const FrameInput& in, const MotionPlan& plan) const {
+    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_) ||
+           !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
 }
 
 void IsaRenderer::renderFrame(const FrameInput& in) {
@@ -33,7 +39,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     const int target = 1 - source_;
 
     // Dynamic case [L Table II]: view, geometry or data changed. Static: reuse (1)-(2).
-    lastDynamic_ = isDynamic(in);
+    lastDynamic_ = isDynamic(in, plan);
     if (lastDynamic_) {
         const int prevVi = vi_;
         vi_ = 1 - vi_;
@@ -54,6 +60,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         haveCache_ = true;
         cachedGeneration_ = in.surface->generation();
         cachedCamera_ = in.camera;
+        cachedSourceCamera_ = plan.sourceCamera;
+        cachedAdvect_ = plan.advect;
     }
     const SurfaceGBuffer& vel = velocityImage_[vi_];
 

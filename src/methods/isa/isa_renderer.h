@@ -23,7 +23,7 @@ public:
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
 private:
-    bool isDynamic(const FrameInput& in) const;
+    bool isDynamic(const FrameInput& in, const MotionPlan& plan) const;
 
     MethodParams params_;
     core::Viewport viewport_;
@@ -42,7 +42,8 @@ private:
     // What the cached velocity image and advection mesh were made for (static case).
     bool haveCache_ = false;
     uint64_t cachedGeneration_ = 0;
-    core::Camera cachedCamera_;
+    core::Camera cachedCamera_, cachedSourceCamera_;
+    bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
 };
 
