@@ -69,7 +69,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.fbo(target),
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.texture(target),
+                            flow_.fbo(target),
                             params_.isa.edgeBlending, noise);
     current_ = target;
 
