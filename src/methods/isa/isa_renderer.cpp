@@ -6,8 +6,9 @@ namespace flowsurf::methods::isa {
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces),
-                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
+      // Every ISA stage reads the velocity image's colours where its depth is < 1 only.
+      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false),
+                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(viewport, params.isa, params.common),
