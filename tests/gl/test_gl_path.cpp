@@ -65,12 +65,15 @@ TEST_P(GlPathSameImage, DefaultOptions) {
     EXPECT_LE(d.meanGray, 1.0);
 }
 
-// The paper's variants take the same road: bilinear resampling, point noise, gray edge fill.
+// The paper's variants take the same road: bilinear resampling, point noise, gray edge fill,
+// and ISA's mesh warp (a raster pass in both paths, with the compute path's overlay).
 TEST_P(GlPathSameImage, PaperVariants) {
     methods::MethodParams p;
     p.common.resample = methods::Resample::Bilinear;
     p.common.noiseInjection = methods::NoiseInjectionMode::Point;
     p.isa.edgeFill = methods::EdgeFill::Gray;
+    p.isa.warp = methods::IsaWarp::Mesh;
+    p.isa.gridRes = 64;  // the grid draw costs ~ R^2 on llvmpipe
     Difference d = renderBothPaths(GetParam(), p);
     EXPECT_LE(d.meanGray, 1.0);
 }
