@@ -17,14 +17,17 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       flow_(viewport),
       composite_(GL_RGBA8, viewport) {}
 
+bool IsaRenderer::viewChanged(const FrameInput& in) const {
+    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
+}
+
 // The cached advection mesh maps into the source view and carries the frame's dt: it is
 // stale when the view, the geometry or data, the source view (the translate remedy's
 // previous camera: equal to the view one frame after the camera stops) or the freeze
 // changed. A mesh kept from the last moving frame would go on applying that frame's
 // camera motion every frame (a drift after a drag, a radial smear after a zoom).
-bool IsaRenderer::isDynamic(const FrameInput& in, const MotionPlan& plan) const {
-    return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_) ||
-           !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
+bool IsaRenderer::meshStale(const FrameInput& in, const MotionPlan& plan) const {
+    return viewChanged(in) || !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
 }
 
 void IsaRenderer::renderFrame(const FrameInput& in) {
@@ -39,15 +42,18 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
 
-    // Dynamic case [L Table II]: view, geometry or data changed. Static: reuse (1)-(2).
-    lastDynamic_ = isDynamic(in, plan);
+    // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
+    // source view changed). Static: reuse (1)-(2).
+    lastDynamic_ = meshStale(in, plan);
     if (lastDynamic_) {
         const int prevVi = vi_;
-        vi_ = 1 - vi_;
-        // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
-        timer_.begin("velocity image");
-        velocityImage_[vi_].render(*in.surface, in.camera);
-        if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        if (viewChanged(in)) {
+            vi_ = 1 - vi_;
+            // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
+            timer_.begin("velocity image");
+            velocityImage_[vi_].render(*in.surface, in.camera);
+            if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        }
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");
@@ -71,8 +77,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.texture(target),
-                            flow_.fbo(target),
-                            params_.isa.edgeBlending, noise);
+                            flow_.fbo(target), params_.isa.edgeBlending, noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]

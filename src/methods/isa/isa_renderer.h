@@ -23,7 +23,8 @@ public:
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
 private:
-    bool isDynamic(const FrameInput& in, const MotionPlan& plan) const;
+    bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
+    bool meshStale(const FrameInput& in, const MotionPlan& plan) const;
 
     MethodParams params_;
     core::Viewport viewport_;
