@@ -35,5 +35,5 @@ float resampleFlow(sampler2D tex, vec2 uv) {
     return clamp(sum, lo, hi);
 }
 #else
-float resampleFlow(sampler2D tex, vec2 uv) { return texture(tex, uv).r; }
+float resampleFlow(sampler2D tex, vec2 uv) { return textureLod(tex, uv, 0.0).r; }
 #endif

@@ -1,18 +1,21 @@
-// Samples the previous F_a and injects the noise [L eq. 9] (every fragment is on the
-// surface); also writes the overlay's shade (eye normal, colour value) and mask.
-#include "common/resample.glsl"
-#include "common/noise_injection.glsl"
-layout(binding = 0) uniform sampler2D uPrevFlow;  // R32F, linear, clamp to edge
+// Samples the previous F_a and injects the noise [L eq. 9] (ibfvs/polygon_advection.glsl);
+// also writes the overlay's shade (eye normal, colour value) and mask. ADVECT_IN_COMPUTE
+// (the compute path): writes the texture coordinate instead, and polygon_advection.comp
+// does the per-pixel work.
+#include "ibfvs/polygon_advection.glsl"
 noperspective in vec2 vTexcoord;
 in vec3 vNormalEye;
 in float vColor;
 in float vMask;
-layout(location = 0) out vec4 outFlow;
+layout(location = 0) out vec4 outFlow;  // ADVECT_IN_COMPUTE: RG32F texture coordinate
 layout(location = 1) out vec4 outShade;
 layout(location = 2) out float outMask;
 void main() {
-    vec2 motionPx = gl_FragCoord.xy - vTexcoord * vec2(textureSize(uPrevFlow, 0));
-    outFlow = vec4(injectNoise(resampleFlow(uPrevFlow, vTexcoord), gl_FragCoord.xy, motionPx), 0.0, 0.0, 1.0);
+#ifdef ADVECT_IN_COMPUTE
+    outFlow = vec4(vTexcoord, 0.0, 1.0);
+#else
+    outFlow = vec4(polygonAdvectedFlow(gl_FragCoord.xy, vTexcoord), 0.0, 0.0, 1.0);
+#endif
     outShade = vec4(normalize(vNormalEye), vColor);
     outMask = vMask;
 }

@@ -6,7 +6,7 @@
 // reprojects under camera motion. Output per vertex: (texcoord in [0,1]^2, edge flag, 0)
 // in an (R+1)^2 RGBA32F image that the static case reuses.
 #include "isa/edge_detection.glsl"
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uVelocity;     // RGBA32F, xyz P-space velocity
 layout(binding = 1) uniform sampler2D uDepth;        // window depth, 1 = background
 layout(binding = 2) uniform sampler2D uSourceDepth;  // depth where the source texture was made

@@ -1,16 +1,25 @@
 #include "methods/common/overlay.h"
 
-#include "methods/common/shader_interface.h"
 #include "methods/common/colormap.h"
+#include "methods/common/gl_path.h"
 #include "methods/common/legend.h"
+#include "methods/common/shader_interface.h"
 
 #include <algorithm>
 
 namespace flowsurf::methods {
 
+namespace {
+gl::Program makeProgram(GlPath path) {
+    if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "common/overlay.comp"}});
+    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}});
+}
+}  // namespace
+
 Overlay::Overlay(const CommonParams& params)
     : params_(params),
-      program_(program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}})),
+      path_(resolveGlPath(params.glPath)),
+      program_(makeProgram(path_)),
       colormap_(makeColormapTexture(params)),
       emptyVao_(gl::VertexArray::create()) {}
 
@@ -33,10 +42,6 @@ void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) con
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                     const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const {
     if (params_.legend) updateLegend(surface, flow.width(), flow.height());
-    glBindFramebuffer(GL_FRAMEBUFFER, target.id());
-    glViewport(0, 0, flow.width(), flow.height());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
     program_.use();
     glUniform1i(program_.uniform("uScheme"), int(params_.overlay));
     glUniform1f(program_.uniform("uBeta"), params_.beta);
@@ -53,6 +58,22 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glBindTextureUnit(3, colormap_.id());
     glBindTextureUnit(4, mask.id());
     glBindTextureUnit(5, params_.legend ? legend_.id() : colormap_.id());
+    if (path_ == GlPath::Compute) {
+        // The composite is the target's colour attachment (RGBA8, as every method keeps it).
+        GLint composite = 0;
+        glGetNamedFramebufferAttachmentParameteriv(target.id(), GL_COLOR_ATTACHMENT0,
+                                                   GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &composite);
+        glBindImageTexture(0, GLuint(composite), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glDispatchCompute(GLuint((flow.width() + 7) / 8), GLuint((flow.height() + 7) / 8), 1);
+        // Read next as a texture, a read-back or a framebuffer (the edge mask draws on it).
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                        GL_PIXEL_BUFFER_BARRIER_BIT);
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+    glViewport(0, 0, flow.width(), flow.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

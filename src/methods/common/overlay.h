@@ -1,7 +1,8 @@
 // flowsurf — overlay, [L] eq. 10, with texture clipping ([L] Fig. 10), the texture mask
 // (velocity or any scalar) and the colour legend. Inputs: F_a (R32F), depth, shade
 // (RGBA16F: eye normal, colour value), mask (R16F). Output: RGBA8. Applied after
-// advection every frame and never fed back.
+// advection every frame and never fed back. A full-screen fragment pass or a compute pass
+// (CommonParams::glPath): the same image.
 #pragma once
 
 #include "gl/objects.h"
@@ -15,7 +16,8 @@ namespace flowsurf::methods {
 class Overlay {
 public:
     explicit Overlay(const CommonParams& params);
-    // `surface` gives the colour range and name the legend shows.
+    // `surface` gives the colour range and name the legend shows. `target`: the composite
+    // (RGBA8) as the colour attachment 0 of a framebuffer.
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const;
 
@@ -24,6 +26,7 @@ private:
     void updateLegend(const SurfaceGpu& surface, int width, int height) const;
 
     CommonParams params_;
+    GlPath path_;
     gl::Program program_;
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;

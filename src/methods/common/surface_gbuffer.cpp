@@ -8,7 +8,8 @@
 
 namespace flowsurf::methods {
 
-SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces)
+SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces,
+                               bool clearBackground)
     : viewport_(viewport),
       velocity_(GL_RGBA32F, viewport.width, viewport.height, GL_LINEAR),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
@@ -18,7 +19,8 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       program_(program({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : "")),
       targets_(withPosition ? 4 : 3),
-      cullBackFaces_(cullBackFaces) {
+      cullBackFaces_(cullBackFaces),
+      clearBackground_(clearBackground) {
     fbo_.attach(GL_COLOR_ATTACHMENT0, velocity_);
     fbo_.attach(GL_COLOR_ATTACHMENT1, shade_);
     fbo_.attach(GL_COLOR_ATTACHMENT2, mask_);
@@ -43,7 +45,8 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
-    for (int i = 0; i < targets_; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
+    if (clearBackground_)
+        for (int i = 0; i < targets_; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -22,7 +22,11 @@ glm::vec4 layerDepthRow(const core::Camera& camera);
 
 class SurfaceGBuffer {
 public:
-    SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false);
+    // `clearBackground` false: the colour buffers are not cleared, so the background (depth
+    // 1) keeps stale values; for consumers that read them on the surface only (ISA), one
+    // full-image write per buffer less in every dynamic frame.
+    SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false,
+                   bool clearBackground = true);
     void render(const SurfaceGpu& surface, const core::Camera& camera);
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
@@ -40,6 +44,7 @@ private:
     gl::Program program_;
     int targets_;
     bool cullBackFaces_;
+    bool clearBackground_;
 };
 
 }  // namespace flowsurf::methods

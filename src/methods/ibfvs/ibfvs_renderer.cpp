@@ -5,12 +5,13 @@ namespace flowsurf::methods::ibfvs {
 IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      polygonAdvection_(viewport, params.common),
-      overlay_(params.common),
-      motion_(params.common.onCameraMove),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
       mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
+      polygonAdvection_(viewport, params.common,
+                        {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
+      overlay_(params.common),
+      motion_(params.common.onCameraMove),
       flow_(viewport, {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
 
@@ -34,7 +35,8 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
-                            flow_.fbo(target), params_.ibfvs.flowBackground, c.cullBackFaces, noise);
+                            flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
+                            c.cullBackFaces, noise);
     current_ = target;
     // Parallel: the whole surface's advected texture on every process, which is also the
     // next frame's source (the texture lives in the image).

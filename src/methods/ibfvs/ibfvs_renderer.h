@@ -26,11 +26,11 @@ public:
 private:
     MethodParams params_;
     core::Viewport viewport_;
+    gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     PolygonAdvection polygonAdvection_;
     Overlay overlay_;
     EdgeMask edgeMask_;
     CameraMotion motion_;
-    gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     FlowPingPong flow_;            // F_a, R32F (+ shade + mask + depth: the advection draw)
     ColorTarget composite_;        // RGBA8
     int current_ = 0, source_ = 0;

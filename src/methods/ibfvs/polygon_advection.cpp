@@ -1,22 +1,65 @@
 #include "methods/ibfvs/polygon_advection.h"
 
-#include "methods/common/shader_interface.h"
+#include "methods/common/gl_path.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/resample.h"
+#include "methods/common/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 namespace flowsurf::methods::ibfvs {
 
-PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common)
+PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common,
+                                   std::initializer_list<FlowPingPong::Attachment> shared)
     : noise_(common, viewport),
+      path_(resolveGlPath(common.glPath)),
       program_(program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
-               resampleDefine(common.resample) + noise_.defines())) {}
+                       resampleDefine(common.resample) + noise_.defines() +
+                           (path_ == GlPath::Compute ? "#define ADVECT_IN_COMPUTE 1\n" : ""))) {
+    if (path_ != GlPath::Compute) return;
+    advectProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/polygon_advection.comp"}},
+                             resampleDefine(common.resample) + noise_.defines());
+    texcoord_ = gl::Texture2D(GL_RG32F, viewport.width, viewport.height, GL_NEAREST);
+    texcoordFbo_ = gl::Framebuffer::create();
+    texcoordFbo_.attach(GL_COLOR_ATTACHMENT0, texcoord_);
+    int colors = 1;
+    for (const auto& [attachment, texture] : shared) {
+        texcoordFbo_.attach(attachment, *texture);
+        colors += attachment >= GL_COLOR_ATTACHMENT0 && attachment <= GL_COLOR_ATTACHMENT15;
+    }
+    texcoordFbo_.finish(colors);
+}
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
-                             const gl::Framebuffer& target, float flowBackground, bool cullBackFaces,
+                             const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo,
+                             const gl::Texture2D& depth, float flowBackground, bool cullBackFaces,
                              const NoiseStep& noise) const {
+    program_.use();
+    if (path_ != GlPath::Compute) {
+        noise_.bind(program_, noise);
+        glBindTextureUnit(0, prevFlow.id());
+        draw(surface, camera, prevCamera, viewport, dt, nextFlowFbo, flowBackground, cullBackFaces);
+        return;
+    }
+    draw(surface, camera, prevCamera, viewport, dt, texcoordFbo_, flowBackground, cullBackFaces);
+    advectProgram_.use();
+    noise_.bind(advectProgram_, noise);
+    glUniform1f(advectProgram_.uniform("uFlowBackground"), flowBackground);
+    glBindTextureUnit(0, prevFlow.id());
+    glBindTextureUnit(1, texcoord_.id());
+    glBindTextureUnit(2, depth.id());
+    glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glDispatchCompute(GLuint((viewport.width + 7) / 8), GLuint((viewport.height + 7) / 8), 1);
+    // Next read by the overlay, the next frame's draw and a parallel merge (textures,
+    // read-backs) or read back.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_PIXEL_BUFFER_BARRIER_BIT);
+}
+
+void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
+                            const core::Viewport& viewport, float dt, const gl::Framebuffer& target,
+                            float flowBackground, bool cullBackFaces) const {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
@@ -32,7 +75,6 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     else glDisable(GL_CULL_FACE);                // open surfaces are seen from both sides
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    program_.use();
     glm::mat4 view = camera.view();
     glm::mat4 viewProj = camera.projection(viewport.aspect()) * view;
     glm::mat4 prevViewProj = prevCamera.viewProjection(viewport.aspect());
@@ -40,8 +82,6 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glUniformMatrix4fv(program_.uniform("uPrevViewProj"), 1, GL_FALSE, glm::value_ptr(prevViewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform1f(program_.uniform("uDt"), dt);
-    noise_.bind(program_, noise);
-    glBindTextureUnit(0, prevFlow.id());
     surface.draw();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);

@@ -4,29 +4,45 @@
 // into the next F_a (R32F), sampling the previous F_a; also writes shade (RGBA16F) and
 // depth. Cost grows with the triangles N, in the static and the dynamic case alike. F_a
 // is resampled bilinearly (as in [L]) or bicubically (shaders/common/resample.glsl).
+// Compute path (CommonParams::glPath): the draw stays a rasterisation of the surface (any
+// triangles, depth-tested) but only interpolates the texture coordinate (RG32F); a compute
+// pass then resamples and injects per pixel: the same image, the arithmetic off the
+// fragment stage, at the cost of one RG32F write and read.
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
+#include "methods/common/render_targets.h"
 #include "methods/common/surface_gpu.h"
 
 namespace flowsurf::methods::ibfvs {
 
 class PolygonAdvection {
 public:
-    // `common`: the resampling, and the noise injection mode, scale and step.
-    PolygonAdvection(const core::Viewport& viewport, const CommonParams& common);
-    // `prevCamera` projects the pathline points into the previous F_a.
+    // `common`: the resampling, the noise injection mode, scale and step, the GL path.
+    // `shared`: what the draw writes besides F_a (shade, mask, depth; as FlowPingPong's).
+    PolygonAdvection(const core::Viewport& viewport, const CommonParams& common,
+                     std::initializer_list<FlowPingPong::Attachment> shared);
+    // `prevCamera` projects the pathline points into the previous F_a. `nextFlowFbo`:
+    // `nextFlow` at colour attachment 0 with the shared attachments; `depth` the shared depth.
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
-               const gl::Framebuffer& target, float flowBackground, bool cullBackFaces,
-               const NoiseStep& noise) const;
+               const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, const gl::Texture2D& depth,
+               float flowBackground, bool cullBackFaces, const NoiseStep& noise) const;
 
 private:
+    void draw(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
+              const core::Viewport& viewport, float dt, const gl::Framebuffer& target, float flowBackground,
+              bool cullBackFaces) const;
+
     NoiseInjection noise_;
-    gl::Program program_;
+    GlPath path_;
+    gl::Program program_;        // the draw
+    gl::Program advectProgram_;  // compute path: the per-pixel pass
+    gl::Texture2D texcoord_;     // compute path: RG32F, the draw's texture coordinates
+    gl::Framebuffer texcoordFbo_;
 };
 
 }  // namespace flowsurf::methods::ibfvs

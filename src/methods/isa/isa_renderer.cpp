@@ -6,8 +6,9 @@ namespace flowsurf::methods::isa {
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces),
-                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces)},
+      // Every ISA stage reads the velocity image's colours where its depth is < 1 only.
+      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false),
+                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes),
       textureAdvection_(viewport, params.isa, params.common),
@@ -16,8 +17,17 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       flow_(viewport),
       composite_(GL_RGBA8, viewport) {}
 
-bool IsaRenderer::isDynamic(const FrameInput& in) const {
+bool IsaRenderer::viewChanged(const FrameInput& in) const {
     return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
+}
+
+// The cached advection mesh maps into the source view and carries the frame's dt: it is
+// stale when the view, the geometry or data, the source view (the translate remedy's
+// previous camera: equal to the view one frame after the camera stops) or the freeze
+// changed. A mesh kept from the last moving frame would go on applying that frame's
+// camera motion every frame (a drift after a drag, a radial smear after a zoom).
+bool IsaRenderer::meshStale(const FrameInput& in, const MotionPlan& plan) const {
+    return viewChanged(in) || !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
 }
 
 void IsaRenderer::renderFrame(const FrameInput& in) {
@@ -32,15 +42,18 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
 
-    // Dynamic case [L Table II]: view, geometry or data changed. Static: reuse (1)-(2).
-    lastDynamic_ = isDynamic(in);
+    // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
+    // source view changed). Static: reuse (1)-(2).
+    lastDynamic_ = meshStale(in, plan);
     if (lastDynamic_) {
         const int prevVi = vi_;
-        vi_ = 1 - vi_;
-        // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
-        timer_.begin("velocity image");
-        velocityImage_[vi_].render(*in.surface, in.camera);
-        if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        if (viewChanged(in)) {
+            vi_ = 1 - vi_;
+            // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
+            timer_.begin("velocity image");
+            velocityImage_[vi_].render(*in.surface, in.camera);
+            if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        }
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");
@@ -54,6 +67,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         haveCache_ = true;
         cachedGeneration_ = in.surface->generation();
         cachedCamera_ = in.camera;
+        cachedSourceCamera_ = plan.sourceCamera;
+        cachedAdvect_ = plan.advect;
     }
     const SurfaceGBuffer& vel = velocityImage_[vi_];
 
@@ -61,8 +76,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.fbo(target),
-                            params_.isa.edgeBlending, noise);
+    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.texture(target),
+                            flow_.fbo(target), params_.isa.edgeBlending, noise);
     current_ = target;
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]

@@ -24,7 +24,8 @@ public:
     bool lastFrameDynamic() const override { return lastDynamic_; }
 
 private:
-    bool isDynamic(const FrameInput& in) const;
+    bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
+    bool meshStale(const FrameInput& in, const MotionPlan& plan) const;
 
     MethodParams params_;
     core::Viewport viewport_;
@@ -43,7 +44,8 @@ private:
     // What the cached velocity image and advection mesh were made for (static case).
     bool haveCache_ = false;
     uint64_t cachedGeneration_ = 0;
-    core::Camera cachedCamera_;
+    core::Camera cachedCamera_, cachedSourceCamera_;
+    bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
 };
 

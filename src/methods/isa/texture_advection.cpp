@@ -1,5 +1,6 @@
 #include "methods/isa/texture_advection.h"
 
+#include "methods/common/gl_path.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/resample.h"
 #include "methods/common/shader_interface.h"
@@ -9,13 +10,14 @@
 namespace flowsurf::methods::isa {
 
 namespace {
-gl::Program makeProgram(IsaWarp warp, EdgeFill fill, Resample resample, const NoiseInjection& noise) {
+gl::Program makeProgram(IsaWarp warp, GlPath path, EdgeFill fill, Resample resample, const NoiseInjection& noise) {
     const std::string defines =
         resampleDefine(resample) + noise.defines() + "#define EDGE_FILL " + std::to_string(int(fill)) + "\n";
+    if (warp == IsaWarp::Pixel && path == GlPath::Compute)
+        return program({{GL_COMPUTE_SHADER, "isa/texture_advection.comp"}}, defines);
     if (warp == IsaWarp::Pixel)
-        return program({{GL_VERTEX_SHADER, "isa/texture_advection_pixel.vert"},
-                            {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
-                           "#define PER_PIXEL 1\n" + defines);
+        return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+                       "#define PER_PIXEL 1\n" + defines);
     return program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
                    defines);
 }
@@ -24,11 +26,14 @@ gl::Program makeProgram(IsaWarp warp, EdgeFill fill, Resample resample, const No
 TextureAdvection::TextureAdvection(const core::Viewport& viewport, const IsaParams& isa, const CommonParams& common)
     : gridRes_(isa.gridRes),
       warp_(isa.warp),
+      // The mesh warp rasterises the grid's 2 R^2 triangles: the paper's variant, kept as
+      // its cost model (cost ~ M); per pixel in a compute pass it would be the pixel warp.
+      path_(isa.warp == IsaWarp::Pixel ? resolveGlPath(common.glPath) : GlPath::Fragment),
       fill_(isa.edgeFill),
       fillAlpha_(common.alpha),
       noise_(common, viewport),
       vao_(gl::VertexArray::create()),
-      program_(makeProgram(isa.warp, isa.edgeFill, common.resample, noise_)) {
+      program_(makeProgram(isa.warp, path_, isa.edgeFill, common.resample, noise_)) {
     const int gridRes = isa.gridRes;
     if (warp_ != IsaWarp::Mesh) return;
     // Two triangles per grid cell; vertices come from the mesh texture by gl_VertexID.
@@ -46,11 +51,8 @@ TextureAdvection::TextureAdvection(const core::Viewport& viewport, const IsaPara
 }
 
 void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
-                             const gl::Framebuffer& nextFlow, bool edgeBlending, const NoiseStep& noise) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, nextFlow.id());
-    glViewport(0, 0, prevFlow.width(), prevFlow.height());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+                             const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, bool edgeBlending,
+                             const NoiseStep& noise) const {
     program_.use();
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
@@ -59,6 +61,18 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     glBindTextureUnit(0, prevFlow.id());
     glBindTextureUnit(1, mesh.id());
     glBindTextureUnit(2, surfaceDepth.id());
+    if (path_ == GlPath::Compute) {
+        glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glDispatchCompute(GLuint((nextFlow.width() + 7) / 8), GLuint((nextFlow.height() + 7) / 8), 1);
+        // Next read by the overlay and the next frame's advection (textures) or read back.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                        GL_PIXEL_BUFFER_BARRIER_BIT);
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, nextFlowFbo.id());
+    glViewport(0, 0, nextFlow.width(), nextFlow.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
     glBindVertexArray(vao_.id());
     if (warp_ == IsaWarp::Mesh)
         glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);

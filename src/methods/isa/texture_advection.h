@@ -6,6 +6,8 @@
 // texture filter (cost grows with pixels only; equal up to bilinear-vs-triangle
 // interpolation inside a cell), the paper's "per-pixel advection" future work.
 // F_a itself is resampled bilinearly (as in [L]) or bicubically (common/resample.glsl).
+// The pixel warp runs as a fragment or a compute pass (CommonParams::glPath, the same
+// image); the mesh warp is a rasterisation of the grid and stays one.
 #pragma once
 
 #include "core/camera.h"
@@ -20,13 +22,16 @@ public:
     // `common`: the resampling, and the noise injection mode, scale and step.
     // `isa`: grid, warp and edge fill; `common`: resampling, noise injection, alpha.
     TextureAdvection(const core::Viewport& viewport, const IsaParams& isa, const CommonParams& common);
-    // Off the surface (depth 1) the next F_a is the noise mean.
+    // Off the surface (depth 1) the next F_a is the noise mean. `nextFlowFbo` has
+    // `nextFlow` as its only colour attachment (the fragment path draws into it).
     void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
-               const gl::Framebuffer& nextFlow, bool edgeBlending, const NoiseStep& noise) const;
+               const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, bool edgeBlending,
+               const NoiseStep& noise) const;
 
 private:
     int gridRes_;
     IsaWarp warp_;
+    GlPath path_;
     EdgeFill fill_;
     float fillAlpha_;
     NoiseInjection noise_;

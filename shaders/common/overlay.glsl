@@ -1,0 +1,67 @@
+// Overlay, [L] eq. 10, shared by overlay.frag and overlay.comp: F = beta F_a + (1 - beta) F_s with F_s = colour map x lighting;
+// or one of the colour schemes of [W Fig. 6]. Plus texture clipping ([L] Fig. 10:
+// opacity 1 over the background), the optional texture mask (contrast follows speed or
+// any scalar, [L] Fig. 13) and the colour legend on top. Display only: never fed back.
+layout(binding = 0) uniform sampler2D uFlow;       // F_a or the LIC result I, channel r
+layout(binding = 1) uniform sampler2D uDepth;      // 1 = background
+layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: colour value 0..1 (NaN: none)
+layout(binding = 3) uniform sampler2D uColormap;   // 256 x 1 RGBA8
+layout(binding = 4) uniform sampler2D uMaskValue;  // texture mask value 0..1
+layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
+uniform int uScheme;          // OVERLAY_BLEND (eq. 10), OVERLAY_GRAY, ..._GRAY_LIT, ..._HUE_LIT, ..._COOLWARM
+uniform float uBeta;          // texture strength
+uniform float uContrast;      // display gain of the texture about its mean
+uniform int uUseColormap;     // 0: white surface
+uniform int uLighting;
+uniform int uMask;            // texture contrast x sqrt(mask value)
+uniform int uLegend;
+uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
+uniform vec3 uBackground;
+
+// Diffuse key light above-left of the eye, two-sided (open CFD surfaces).
+const vec3 kLight = vec3(-0.35, 0.5, 0.8);
+float diffuse(vec3 n) { return abs(dot(n, normalize(kLight))); }
+
+vec3 surfaceColor(ivec2 px) {
+    vec4 shade = texelFetch(uShade, px, 0);
+    vec3 n = normalize(shade.xyz);
+    float fa = texelFetch(uFlow, px, 0).r;
+    float gain = uContrast * (uMask != 0 ? sqrt(clamp(texelFetch(uMaskValue, px, 0).r, 0.0, 1.0)) : 1.0);
+    fa = clamp(NOISE_MEAN + (fa - NOISE_MEAN) * gain, 0.0, 1.0);
+    float lit = uLighting != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
+    vec3 color;
+    if (uScheme == OVERLAY_GRAY) {
+        color = vec3(fa);
+    } else if (uScheme == OVERLAY_GRAY_LIT) {
+        color = vec3(fa) * (0.3 + 0.7 * diffuse(n));
+    } else if (uScheme == OVERLAY_HUE_LIT) {
+        vec3 blue = vec3(0.15, 0.3, 0.95), yellow = vec3(1.0, 0.9, 0.2);
+        color = mix(blue, yellow, fa) * (0.3 + 0.7 * diffuse(n));
+    } else if (uScheme == OVERLAY_COOLWARM) {
+        float k = 0.5 * (1.0 + dot(n, normalize(kLight)));  // Gooch: cool facing away, warm towards
+        vec3 gooch = mix(vec3(0.25, 0.35, 0.85), vec3(0.95, 0.75, 0.35), k);
+        color = vec3(fa) * gooch * 1.2;
+    } else {
+        float value01 = clamp(shade.w, 0.0, 1.0);
+        vec3 fs = uUseColormap == 0 ? vec3(1.0)
+                  : isnan(shade.w)  ? vec3(0.5)  // no value here (array missing on this patch)
+                                    : textureLod(uColormap, vec2(value01 * (255.0 / 256.0) + 0.5 / 256.0, 0.5), 0.0).rgb;
+        color = uBeta * vec3(fa) + (1.0 - uBeta) * fs * lit;
+        if (uLighting != 0) color = mix(color, color * lit, 0.5);  // the shape reads through the texture
+    }
+    return clamp(color, 0.0, 1.0);
+}
+
+// The displayed colour of pixel `px`.
+vec3 overlayColor(ivec2 px) {
+    vec3 color = texelFetch(uDepth, px, 0).r >= 1.0 ? uBackground  // texture clipping
+                                                   : surfaceColor(px);
+    if (uLegend != 0) {
+        ivec2 q = px - uLegendOrigin;
+        if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uLegendImage, 0)))) {
+            vec4 l = texelFetch(uLegendImage, q, 0);
+            color = mix(color, l.rgb, l.a);
+        }
+    }
+    return color;
+}

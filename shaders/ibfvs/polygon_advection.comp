@@ -1,0 +1,16 @@
+// IBFVS stages 2-3, compute path: per pixel of the surface, the texture coordinate the
+// advection draw interpolated (RG32F) -> resampled F_a with the noise injected
+// (ibfvs/polygon_advection.glsl); the gray flow background elsewhere [L §IV-F.2].
+#include "ibfvs/polygon_advection.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 1) uniform sampler2D uTexcoord;  // RG32F, from the draw
+layout(binding = 2) uniform sampler2D uDepth;     // the draw's depth, 1 = background
+layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
+uniform float uFlowBackground;
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uNextFlow)))) return;
+    float f = uFlowBackground;
+    if (texelFetch(uDepth, p, 0).r < 1.0) f = polygonAdvectedFlow(vec2(p) + 0.5, texelFetch(uTexcoord, p, 0).xy);
+    imageStore(uNextFlow, p, vec4(f));
+}

@@ -1,0 +1,12 @@
+// ISA stages 3-4, compute path, pixel warp (isa/texture_advection.glsl): one invocation
+// per pixel writes the next F_a (R32F image).
+#include "isa/texture_advection.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uNextFlow)))) return;
+    vec2 px = vec2(p) + 0.5;  // pixel centre, as gl_FragCoord
+    vec4 m = meshAtPixel(px);
+    imageStore(uNextFlow, p, vec4(advectedFlow(px, m.xy, m.z)));
+}
