@@ -99,17 +99,24 @@ def origin_runpath(tree, elf):
         os.path.dirname(elf) != lib_dir(tree) else "$ORIGIN"
 
 
-def owner_package(path):
-    """The Debian package that installed PATH (usrmerge: tries /usr/lib and /lib spellings)."""
-    real = os.path.realpath(path)
-    candidates = [path, real]
-    for p in list(candidates):
-        candidates.append(p[4:] if p.startswith("/usr/") else "/usr" + p)
-    for p in candidates:
-        r = subprocess.run(["dpkg", "-S", p], capture_output=True, text=True)
-        if r.returncode == 0:
-            return r.stdout.split(":")[0].strip()
-    raise SystemExit(f"portable_tree: no Debian package owns {path}: cannot find its licence")
+def owner_packages(paths):
+    """path -> the Debian package that installed it, in one dpkg -S (usrmerge: a file under
+    /usr/lib may be registered as /lib, and the other way round)."""
+    spellings = {}
+    for path in paths:
+        for p in {path, os.path.realpath(path)}:
+            for q in (p, p[4:] if p.startswith("/usr/") else "/usr" + p):
+                spellings[q] = path
+    r = subprocess.run(["dpkg", "-S"] + sorted(spellings), capture_output=True, text=True)
+    owners = {}
+    for line in r.stdout.splitlines():
+        pkg, _, file = line.partition(": ")
+        if file in spellings and "," not in pkg:
+            owners[spellings[file]] = pkg.split(":")[0]
+    for path in paths:
+        if path not in owners:
+            raise SystemExit(f"portable_tree: no Debian package owns {path}: cannot find its licence")
+    return owners
 
 
 def bundle(tree):
@@ -141,14 +148,12 @@ def write_licences(tree, wanted):
     doc = os.path.join(tree, "share/doc/flowsurf")
     lic = os.path.join(doc, "licenses")
     os.makedirs(lic, exist_ok=True)
-    rows, packages = [], {}
-    for soname, path in sorted(wanted.items()):
-        pkg = owner_package(path)
-        version = run("dpkg-query", "-W", "-f=${Version}", pkg)
-        rows.append(f"{soname}\t{pkg}\t{version}")
-        packages[pkg] = version
-    for extra in sys_extra_packages(tree):
-        packages[extra] = run("dpkg-query", "-W", "-f=${Version}", extra)
+    owners = owner_packages(list(wanted.values()))
+    names = sorted(set(owners.values()) | set(extra_packages(tree)))
+    versions = dict(line.split(" ", 1) for line in
+                    run("dpkg-query", "-W", "-f=${Package} ${Version}\n", *names).splitlines())
+    rows = [f"{soname}\t{owners[path]}\t{versions[owners[path]]}" for soname, path in sorted(wanted.items())]
+    packages = {name: versions[name] for name in names}
     for pkg in sorted(packages):
         src = f"/usr/share/doc/{pkg}/copyright"
         if not os.path.exists(src):
@@ -159,7 +164,7 @@ def write_licences(tree, wanted):
         f.write("\n".join(rows) + "\n")
 
 
-def sys_extra_packages(tree):
+def extra_packages(tree):
     """Packages of bundled files that are not libraries (the label font)."""
     return ["fonts-dejavu-core"] if os.path.isdir(os.path.join(tree, "share/flowsurf/fonts")) else []
 
