@@ -35,13 +35,16 @@ if ls "$TREE"/lib | grep -Eq '^(libc\.so|libstdc\+\+|libEGL|libGL|libOpenGL)'; t
 else ok "no C library, libstdc++ or GL loader in lib/"; fi
 
 # The check must fail on a tree that is not self-contained.
-cp -a "$TREE" "$WORK/leak"
+# (Hard-linked copies; the file patchelf edits is a copy of its own.)
+cp -al "$TREE" "$WORK/leak"
+rm "$WORK/leak/bin/flowsurf"
+cp "$TREE/bin/flowsurf" "$WORK/leak/bin/flowsurf"
 patchelf --set-rpath /usr/lib/x86_64-linux-gnu "$WORK/leak/bin/flowsurf"
 python3 "$TOOL" check "$WORK/leak" > "$WORK/leak.log" 2>&1 && bad "RUNPATH outside the tree not caught" \
   || { grep -q "bin/flowsurf: RUNPATH entry /usr/lib/x86_64-linux-gnu is not \$ORIGIN-relative" "$WORK/leak.log" \
          && ok "RUNPATH outside the tree caught" || { bad "leak message"; cat "$WORK/leak.log"; }; }
 rm -rf "$WORK/leak"
-cp -a "$TREE" "$WORK/hole"
+cp -al "$TREE" "$WORK/hole"
 rm "$WORK/hole/lib/libpng16.so.16"
 python3 "$TOOL" check "$WORK/hole" > "$WORK/hole.log" 2>&1 && bad "missing library not caught" \
   || { grep -q "bin/flowsurf: needs libpng16.so.16, not found through its RUNPATH" "$WORK/hole.log" \
