@@ -7,8 +7,9 @@
 #   scripts/check-package.sh [TARBALL [DEB]]    defaults: the newest in dist/ (scripts/package.sh)
 # Tarball, from a random folder: render builtin:tori, a .vtp through the reader process, a
 # legend (the bundled font), bin/ on PATH, MP4 (must fail with the ffmpeg message, no file),
-# view --headless. Then, on a fresh copy of the root: apt-get install ./flowsurf_*.deb, the
-# same renders, an MP4 (ffmpeg comes as a Recommends) and `import flowsurf` in python3.
+# view --headless, bench/gpu/run.sh on a quick grid. Then, on a fresh copy of the root:
+# apt-get install ./flowsurf_*.deb, the same renders, an MP4 (ffmpeg comes as a Recommends)
+# and `import flowsurf` in python3. FLOWSURF_CHECK_ONLY=tar or deb runs one half.
 # The PNGs land in out/check-package/ to be looked at. Exit status: the number of failures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,7 +21,12 @@ DEB=${2:-$(ls -t dist/flowsurf_*_amd64.deb 2>/dev/null | head -1)}
 [ "$(id -u)" -eq 0 ] || { echo "check-package: needs root (debootstrap, chroot)" >&2; exit 2; }
 CACHE=${FLOWSURF_ROOT_CACHE:-/var/cache/flowsurf-root}
 MIRROR=${FLOWSURF_DEBIAN_MIRROR:-http://deb.debian.org/debian}
-DATA=${FLOWSURF_CHECK_VTP:-$ROOT/../shared/data/windAroundBuildings_wss.vtp}
+# The .vtp read through the reader: OpenFOAM's windAroundBuildings wall shear stress when the
+# shared data is at hand, else a generated wavy sheet with a vortex (ASCII VTK XML).
+DATA=${FLOWSURF_CHECK_VTP:-}
+for d in "$ROOT/../shared/data" "$ROOT/../../shared/data"; do
+  [ -z "$DATA" ] && [ -f "$d/windAroundBuildings_wss.vtp" ] && DATA=$d/windAroundBuildings_wss.vtp
+done
 OUT=$ROOT/out/check-package
 GL_PACKAGES=(libegl1 libgl1 libopengl0 libgl1-mesa-dri libegl-mesa0)
 scripts/apt-install.sh debootstrap
@@ -61,8 +67,34 @@ new_root() {  # new_root NAME -> path in $R
   mount --bind "$CACHE/archives" "$R/var/cache/apt/archives" && MOUNTS+=("$R/var/cache/apt/archives")
   cp /etc/resolv.conf "$R/etc/resolv.conf"
   mkdir -p "$R/data"
-  cp "$DATA" "$R/data/case.vtp"
+  if [ -n "$DATA" ]; then cp "$DATA" "$R/data/case.vtp"; else make_vtp >"$R/data/case.vtp"; fi
   printf '# flowsurf events 1\nat 0 set method hybrid\nat 20 screenshot view.png\n' >"$R/data/events.txt"
+}
+make_vtp() {  # a 60x60 wavy sheet, point vectors "wallShearStress" circling its centre
+  python3 - <<'PY'
+import math
+n = 60
+pts, vec, tri = [], [], []
+for j in range(n):
+    for i in range(n):
+        x, y = i / (n - 1) - 0.5, j / (n - 1) - 0.5
+        pts.append((x, y, 0.08 * math.sin(6 * x) * math.cos(5 * y)))
+        vec.append((-y + 0.2 * x, x + 0.2 * y, 0.0))
+for j in range(n - 1):
+    for i in range(n - 1):
+        a = j * n + i
+        tri += [(a, a + 1, a + n + 1), (a, a + n + 1, a + n)]
+f = lambda rows: " ".join("%g" % v for r in rows for v in r)
+print('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">'
+      '<PolyData><Piece NumberOfPoints="%d" NumberOfPolys="%d">' % (len(pts), len(tri)))
+print('<PointData><DataArray type="Float32" Name="wallShearStress" NumberOfComponents="3" format="ascii">%s'
+      '</DataArray></PointData>' % f(vec))
+print('<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">%s</DataArray></Points>' % f(pts))
+print('<Polys><DataArray type="Int32" Name="connectivity" format="ascii">%s</DataArray>' % f(tri))
+print('<DataArray type="Int32" Name="offsets" format="ascii">%s</DataArray></Polys>'
+      % " ".join(str(3 * (k + 1)) for k in range(len(tri))))
+print('</Piece></PolyData></VTKFile>')
+PY
 }
 rm -rf "$OUT"
 mkdir -p "$OUT"
@@ -96,9 +128,10 @@ expect_png() {  # expect_png FILE "W H"
 }
 
 # 2. The tarball, unpacked in /opt, nothing else installed.
+if [ "${FLOWSURF_CHECK_ONLY:-tar}" = tar ]; then
 echo "== tarball $(basename "$TARBALL") ($(($(stat -c %s "$TARBALL") / 1024 / 1024)) MiB) in a root with only: ${GL_PACKAGES[*]}"
 new_root tar
-tar -C "$R/opt" -xf "$TARBALL"
+tar -C "$R/opt" -xf "$TARBALL"   # here: minbase has no xz
 F=$(cd "$R/opt" && ls -d flowsurf-*)
 F=/opt/$F/bin/flowsurf
 check tar-tori "$F render builtin:tori --size 512x384 -o tori.png"
@@ -106,14 +139,19 @@ check tar-vtp "$F render /data/case.vtp --field wallShearStress --size 512x384 -
 check tar-path "PATH=$(dirname "$F"):\$PATH flowsurf info /data/case.vtp"
 check tar-mp4 "! $F render builtin:tori --size 128x128 --frames 4 -o tori.mp4 2>err.txt && grep -q 'ffmpeg not found' err.txt && ! ls *.mp4 && cat err.txt"
 check tar-view "$F view builtin:sphere --headless --size 320x240 --play /data/events.txt"
+cp bench/gpu/run.sh "$R/data/gpu-bench.sh"
+check tar-bench "FLOWSURF_BENCH_QUICK=1 FLOWSURF_BENCH_FRAMES=1 bash /data/gpu-bench.sh ${F%/bin/flowsurf} out \
+  && grep -q '^GL driver: .*Mesa' out/bench.txt && test \$(wc -l < out/bench.csv) -eq 25"
 expect_png "$OUT/tar-tori-tori.png" "512 384"
 expect_png "$OUT/tar-vtp-wind.png" "512 384"
 expect_png "$OUT/tar-view-view.png" "320 240"
 grep -h "ffmpeg not found" "$OUT/tar-mp4.log" | sed 's/^/      message: /' || true
+umount -l "$R/proc" "$R/dev" "$R/var/cache/apt/archives" 2>/dev/null || true
+fi
 
 # 3. The .deb on a fresh root: apt resolves its Depends (and Recommends) from Debian 12.
+if [ "${FLOWSURF_CHECK_ONLY:-deb}" = deb ]; then
 echo "== $(basename "$DEB"): apt-get install on a fresh copy of the root"
-umount -l "$R/proc" "$R/dev" "$R/var/cache/apt/archives" 2>/dev/null || true
 new_root deb
 cp "$DEB" "$R/tmp/"
 if chroot "$R" /bin/bash -c "apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq /tmp/$(basename "$DEB")" \
@@ -132,6 +170,7 @@ img = flowsurf.render(s, size=(320, 240), frames=8); open(\"py.png\", \"wb\").wr
 expect_png "$OUT/deb-tori-tori.png" "512 384"
 expect_png "$OUT/deb-vtp-wind.png" "512 384"
 expect_png "$OUT/deb-python-py.png" "320 240"
+fi
 
 echo "check-package: $failures failed; images in $OUT"
 exit "$failures"
