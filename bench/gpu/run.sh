@@ -6,6 +6,7 @@
 #   bench/gpu/run.sh TARBALL|UNPACKED_DIR [OUT]
 #   FLOWSURF_BENCH_QUICK=1   a small grid (a smoke run: minutes on llvmpipe)
 #   FLOWSURF_BENCH_FRAMES=N  timed frames per row (default 20)
+#   FLOWSURF_BENCH_TRIANGLES="10000 100000", FLOWSURF_BENCH_SIZES="512x512"   a part of the grid
 #   FLOWSURF_GLVND=DIR       glvnd's loaders (libEGL.so.1, libOpenGL.so.0, libGLdispatch.so.0),
 #                            brought along for a machine whose driver came without them
 # Needs only bash, tar (with xz, or python3 to unpack) and coreutils besides the driver.
@@ -23,6 +24,9 @@ SIZES=(512x512 1920x1080 3840x2160)
 LENGTHS=(21 51 81 101)
 GRIDS=(256 512 1024)
 FRAMES=${FLOWSURF_BENCH_FRAMES:-20}
+# A part of the grid (e.g. one size per run, to fit a time limit): space-separated lists.
+[ -n "${FLOWSURF_BENCH_TRIANGLES:-}" ] && read -ra TRIANGLES <<<"$FLOWSURF_BENCH_TRIANGLES"
+[ -n "${FLOWSURF_BENCH_SIZES:-}" ] && read -ra SIZES <<<"$FLOWSURF_BENCH_SIZES"
 if [ "${FLOWSURF_BENCH_QUICK:-0}" = 1 ]; then
   TRIANGLES=(10000 100000)
   SIZES=(256x256 512x512)
