@@ -128,49 +128,54 @@ expect_png() {  # expect_png FILE "W H"
 }
 
 # 2. The tarball, unpacked in /opt, nothing else installed.
-if [ "${FLOWSURF_CHECK_ONLY:-tar}" = tar ]; then
-echo "== tarball $(basename "$TARBALL") ($(($(stat -c %s "$TARBALL") / 1024 / 1024)) MiB) in a root with only: ${GL_PACKAGES[*]}"
-new_root tar
-tar -C "$R/opt" -xf "$TARBALL"   # here: minbase has no xz
-F=$(cd "$R/opt" && ls -d flowsurf-*)
-F=/opt/$F/bin/flowsurf
-check tar-tori "$F render builtin:tori --size 512x384 -o tori.png"
-check tar-vtp "$F render /data/case.vtp --field wallShearStress --size 512x384 --legend -o wind.png"
-check tar-path "PATH=$(dirname "$F"):\$PATH flowsurf info /data/case.vtp"
-check tar-mp4 "! $F render builtin:tori --size 128x128 --frames 4 -o tori.mp4 2>err.txt && grep -q 'ffmpeg not found' err.txt && ! ls *.mp4 && cat err.txt"
-check tar-view "$F view builtin:sphere --headless --size 320x240 --play /data/events.txt"
-cp bench/gpu/run.sh "$R/data/gpu-bench.sh"
-check tar-bench "FLOWSURF_BENCH_QUICK=1 FLOWSURF_BENCH_FRAMES=1 bash /data/gpu-bench.sh ${F%/bin/flowsurf} out \
-  && grep -q '^GL driver: .*Mesa' out/bench.txt && test \$(wc -l < out/bench.csv) -eq 25"
-expect_png "$OUT/tar-tori-tori.png" "512 384"
-expect_png "$OUT/tar-vtp-wind.png" "512 384"
-expect_png "$OUT/tar-view-view.png" "320 240"
-grep -h "ffmpeg not found" "$OUT/tar-mp4.log" | sed 's/^/      message: /' || true
-umount -l "$R/proc" "$R/dev" "$R/var/cache/apt/archives" 2>/dev/null || true
-fi
+check_tarball() {
+  echo "== tarball $(basename "$TARBALL") ($(($(stat -c %s "$TARBALL") / 1024 / 1024)) MiB) in a root with only: ${GL_PACKAGES[*]}"
+  new_root tar
+  tar -C "$R/opt" -xf "$TARBALL"   # here: minbase has no xz
+  F=$(cd "$R/opt" && ls -d flowsurf-*)
+  F=/opt/$F/bin/flowsurf
+  check tar-tori "$F render builtin:tori --size 512x384 -o tori.png"
+  check tar-vtp "$F render /data/case.vtp --field wallShearStress --size 512x384 --legend -o wind.png"
+  check tar-path "PATH=$(dirname "$F"):\$PATH flowsurf info /data/case.vtp"
+  check tar-mp4 "! $F render builtin:tori --size 128x128 --frames 4 -o tori.mp4 2>err.txt && grep -q 'ffmpeg not found' err.txt && ! ls *.mp4 && cat err.txt"
+  check tar-view "$F view builtin:sphere --headless --size 320x240 --play /data/events.txt"
+  cp bench/gpu/run.sh "$R/data/gpu-bench.sh"
+  check tar-bench "FLOWSURF_BENCH_QUICK=1 FLOWSURF_BENCH_FRAMES=1 bash /data/gpu-bench.sh ${F%/bin/flowsurf} out \
+    && grep -q '^GL driver: .*Mesa' out/bench.txt && test \$(wc -l < out/bench.csv) -eq 25"
+  expect_png "$OUT/tar-tori-tori.png" "512 384"
+  expect_png "$OUT/tar-vtp-wind.png" "512 384"
+  expect_png "$OUT/tar-view-view.png" "320 240"
+  grep -h "ffmpeg not found" "$OUT/tar-mp4.log" | sed 's/^/      message: /' || true
+  umount -l "$R/proc" "$R/dev" "$R/var/cache/apt/archives" 2>/dev/null || true
+}
 
 # 3. The .deb on a fresh root: apt resolves its Depends (and Recommends) from Debian 12.
-if [ "${FLOWSURF_CHECK_ONLY:-deb}" = deb ]; then
-echo "== $(basename "$DEB"): apt-get install on a fresh copy of the root"
-new_root deb
-cp "$DEB" "$R/tmp/"
-if chroot "$R" /bin/bash -c "apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq /tmp/$(basename "$DEB")" \
-    >"$OUT/deb-install.log" 2>&1; then
-  echo "PASS  deb-install: apt-get install ./$(basename "$DEB") ($(grep -c '^Setting up' "$OUT/deb-install.log") packages set up)"
-else
-  echo "FAIL  deb-install (log: $OUT/deb-install.log)"
-  tail -5 "$OUT/deb-install.log" | sed 's/^/      /'
-  failures=$((failures + 1))
-fi
-check deb-tori "flowsurf render builtin:tori --size 512x384 -o tori.png"
-check deb-vtp "flowsurf render /data/case.vtp --field wallShearStress --size 512x384 --legend -o wind.png"
-check deb-mp4 "flowsurf render builtin:tori --size 128x128 --frames 12 -o tori.mp4 && test -s tori.mp4"
-check deb-python "python3 -c 'import flowsurf; s = flowsurf.read(\"/data/case.vtp\", field=\"wallShearStress\"); \
-img = flowsurf.render(s, size=(320, 240), frames=8); open(\"py.png\", \"wb\").write(flowsurf.to_png(img)); print(img.shape)'"
-expect_png "$OUT/deb-tori-tori.png" "512 384"
-expect_png "$OUT/deb-vtp-wind.png" "512 384"
-expect_png "$OUT/deb-python-py.png" "320 240"
-fi
+check_deb() {
+  echo "== $(basename "$DEB"): apt-get install on a fresh copy of the root"
+  new_root deb
+  cp "$DEB" "$R/tmp/"
+  if chroot "$R" /bin/bash -c "apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq /tmp/$(basename "$DEB")" \
+      >"$OUT/deb-install.log" 2>&1; then
+    echo "PASS  deb-install: apt-get install ./$(basename "$DEB") ($(grep -c '^Setting up' "$OUT/deb-install.log") packages set up)"
+  else
+    echo "FAIL  deb-install (log: $OUT/deb-install.log)"
+    tail -5 "$OUT/deb-install.log" | sed 's/^/      /'
+    failures=$((failures + 1))
+  fi
+  check deb-tori "flowsurf render builtin:tori --size 512x384 -o tori.png"
+  check deb-vtp "flowsurf render /data/case.vtp --field wallShearStress --size 512x384 --legend -o wind.png"
+  check deb-mp4 "flowsurf render builtin:tori --size 128x128 --frames 12 -o tori.mp4 && test -s tori.mp4"
+  check deb-python "python3 -c 'import flowsurf; s = flowsurf.read(\"/data/case.vtp\", field=\"wallShearStress\"); \
+  img = flowsurf.render(s, size=(320, 240), frames=8); open(\"py.png\", \"wb\").write(flowsurf.to_png(img)); print(img.shape)'"
+  expect_png "$OUT/deb-tori-tori.png" "512 384"
+  expect_png "$OUT/deb-vtp-wind.png" "512 384"
+  expect_png "$OUT/deb-python-py.png" "320 240"
+}
 
+case "${FLOWSURF_CHECK_ONLY:-}" in
+  tar) check_tarball ;;
+  deb) check_deb ;;
+  *) check_tarball; check_deb ;;
+esac
 echo "check-package: $failures failed; images in $OUT"
 exit "$failures"
