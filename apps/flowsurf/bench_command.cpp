@@ -5,6 +5,8 @@
 #include "gl/context.h"
 #include "cli_options.h"
 
+#include <epoxy/gl.h>
+
 #include <cstdio>
 #include <fstream>
 
@@ -30,6 +32,9 @@ int runBench(const BenchOptions& o) {
     gl::HeadlessContext context(false);
     std::printf("flowsurf bench on %s (ms per frame; stages synchronised, frame pipelined)\n",
                 context.description().c_str());
+    // The driver and its version, for figures from several machines (bench/gpu/run.sh).
+    std::printf("GL driver: %s; %s\n", reinterpret_cast<const char*>(glGetString(GL_VENDOR)),
+                reinterpret_cast<const char*>(glGetString(GL_VERSION)));
     std::vector<bench::BenchRow> rows = bench::runBench(b);
     if (!o.csv.empty()) {
         std::string tmp = o.csv + ".tmp";

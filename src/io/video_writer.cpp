@@ -95,7 +95,8 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, const V
                       " and crf " + std::to_string(options.crf) + " (fps > 0, crf 0..51)");
     const std::string ffmpeg = findProgram("ffmpeg");
     if (ffmpeg.empty())
-        throw IoError(path + ": ffmpeg not found: install the Debian package ffmpeg");
+        throw IoError(path + ": ffmpeg not found: install the Debian package ffmpeg (MP4 output runs the "
+                      "ffmpeg program found on PATH), or write PNG frames (a path with %04d)");
 
     // Reserve the temporary name (also checks that the folder is writable).
     tmpPath_ = detail::TempFile(path, ".mp4").release();

@@ -1,9 +1,9 @@
 #include "io/reader/reader_process.h"
 
 #include "core/errors.h"
+#include "core/program_dirs.h"
 #include "io/reader/reader_wire.h"
 
-#include <dlfcn.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -73,16 +73,9 @@ void printWarnings(wire::Reader& r) {
 std::string readerExecutable() {
     if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
     // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
-    Dl_info info{};
-    if (dladdr(reinterpret_cast<void*>(&readerExecutable), &info) && info.dli_fname) {
-        std::error_code ec;
-        fs::path self = fs::canonical(info.dli_fname, ec);
-        if (!ec) {
-            const fs::path dir = self.parent_path();
-            for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
-                if (access(p.c_str(), X_OK) == 0) return p.string();
-        }
-    }
+    for (const fs::path& dir : core::programDirs())
+        for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
+            if (access(p.c_str(), X_OK) == 0) return p.string();
 #ifdef FLOWSURF_READER_BUILD_PATH
     if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
 #endif

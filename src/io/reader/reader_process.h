@@ -5,10 +5,11 @@
 // allocation bomb ends the child and becomes a one-line FormatError naming the file.
 // One ReaderProcess serves many requests: a time series keeps its child alive.
 //
-// Environment: FLOWSURF_READER (the executable; default: next to the library, in
-// ../libexec/flowsurf/, else the build tree's), FLOWSURF_READER_MEMORY_MB (address space,
-// default 3/4 of physical memory), FLOWSURF_READER_TIMEOUT_S (wall clock per request,
-// default 300; CPU time gets the same budget).
+// Environment: FLOWSURF_READER (the executable; default: next to the library or program, in
+// its ../libexec/flowsurf/ (core/program_dirs.h), else the build tree's),
+// FLOWSURF_READER_MEMORY_MB (address space, default 3/4 of physical memory),
+// FLOWSURF_READER_TIMEOUT_S (wall clock per request, default 300; CPU time gets the same
+// budget).
 #pragma once
 
 #include "core/mesh.h"

@@ -1,12 +1,14 @@
 #include "methods/common/text.h"
 
 #include "core/errors.h"
+#include "core/program_dirs.h"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
 
 namespace flowsurf::methods {
 
@@ -14,13 +16,21 @@ namespace {
 const char* kFonts[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
                         "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"};
 
+// The system's font, else the copy a portable tree carries in PREFIX/share/flowsurf/fonts/.
+std::vector<std::string> fontFiles() {
+    std::vector<std::string> files(std::begin(kFonts), std::end(kFonts));
+    for (const auto& dir : core::programDirs())
+        files.push_back((dir.parent_path() / "share/flowsurf/fonts/DejaVuSans.ttf").string());
+    return files;
+}
+
 // Calls `glyph` for each rendered character with its pen position; returns the advance.
 int layout(const std::string& text, int sizePx, const std::function<void(FT_GlyphSlot, int)>& glyph) {
     FT_Library lib = nullptr;
     if (FT_Init_FreeType(&lib)) throw IoError("FreeType could not be initialised");
     FT_Face face = nullptr;
-    for (const char* f : kFonts)
-        if (!FT_New_Face(lib, f, 0, &face)) break;
+    for (const std::string& f : fontFiles())
+        if (!FT_New_Face(lib, f.c_str(), 0, &face)) break;
     if (!face) {
         FT_Done_FreeType(lib);
         throw IoError(std::string(kFonts[0]) + ": cannot load the label font (install fonts-dejavu-core)");

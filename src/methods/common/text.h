@@ -1,5 +1,6 @@
 // flowsurf — text burnt into images (compare sheets' labels, the legend), rasterised with
-// FreeType from a system font (Debian's fonts-dejavu-core). CPU only, no GL.
+// FreeType from a system font (Debian's fonts-dejavu-core) or the copy a portable tree carries
+// (share/flowsurf/fonts/). CPU only, no GL.
 #pragma once
 
 #include <cstdint>
