@@ -5,10 +5,43 @@
 #include "gl/context.h"
 #include "cli_options.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
 namespace flowsurf::app {
+
+namespace {
+
+methods::GlPath glPathNamed(const std::string& name) {
+    for (const auto& [value, n] : methods::kGlPathNames)
+        if (n == name) return value;
+    throw ConfigError("--gl-paths: unknown path '" + name + "'");
+}
+
+// --slowdown METHOD:K (hidden): K renders per timed frame of METHOD.
+void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
+    const size_t colon = text.find(':');
+    const std::string method = text.substr(0, colon);
+    const bool known = std::find(methods::kMethodNames.begin(), methods::kMethodNames.end(), method) !=
+                       methods::kMethodNames.end();
+    int factor = 0;
+    if (colon != std::string::npos) {
+        try {
+            size_t used = 0;
+            factor = std::stoi(text.substr(colon + 1), &used);
+            if (used != text.size() - colon - 1) factor = 0;
+        } catch (const std::exception&) {
+            factor = 0;
+        }
+    }
+    if (!known || factor < 1 || factor > 100)
+        throw ConfigError("--slowdown: '" + text + "' is not METHOD:K (a method name, K renders per frame, 1..100)");
+    b.slowdownMethod = method;
+    b.slowdownFactor = factor;
+}
+
+}  // namespace
 
 int runBench(const BenchOptions& o) {
     bench::BenchOptions b;
@@ -21,6 +54,10 @@ int runBench(const BenchOptions& o) {
     b.filterLengths = o.lengths;
     b.dynamicOnly = o.dynamicOnly;
     b.camera = o.camera;
+    b.glPaths.clear();
+    for (const auto& p : o.glPaths) b.glPaths.push_back(glPathNamed(p));
+    b.stageTimes = !o.noStageTimes;
+    if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);
     if (o.quick) {
         b.triangles = {10'000, 220'000};
         b.imageSizes = {{512, 512}};
