@@ -1,5 +1,7 @@
 #include "bench.h"
 
+#include "calibration.h"
+
 #include "core/builtin_scenes.h"
 #include "methods/common/frame.h"
 #include "methods/common/gl_path.h"
@@ -110,6 +112,7 @@ std::vector<methods::GlPath> resolvedGlPaths(const std::vector<methods::GlPath>&
 
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<BenchRow> rows;
+    std::vector<double> calibration;  // ms, one per method group
     std::fputs(tableHeader().c_str(), stdout);
     for (long tris : o.triangles) {
         core::Dataset data = core::makeBuiltin("builtin:sphere:" + std::to_string(tris));
@@ -123,7 +126,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                 camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));
                 core::fitClipPlanes(camera, data.bounds());
             }
-            for (const std::string& name : o.methods)
+            for (const std::string& name : o.methods) {
+                if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
                 for (const auto& [param, variantParams] : variants(name, o))
                     for (methods::GlPath path : resolvedGlPaths(o.glPaths)) {
                         methods::MethodParams params = variantParams;
@@ -144,7 +148,19 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                             rows.push_back(std::move(r));
                         }
                     }
+            }
         }
+    }
+    if (!calibration.empty()) {
+        BenchRow r;
+        r.caseName = r.param = r.glPath = "-";
+        r.method = "calib";
+        r.image = {512, 512};
+        r.triangles = 80'000;
+        std::nth_element(calibration.begin(), calibration.begin() + calibration.size() / 2, calibration.end());
+        r.frameMs = calibration[calibration.size() / 2];
+        std::fputs(formatRow(r).c_str(), stdout);
+        rows.push_back(std::move(r));
     }
     return rows;
 }
@@ -164,7 +180,9 @@ std::string formatRow(const BenchRow& r) {
     int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s %-8s | %9.2f %7.1f |", r.method.c_str(),
                           r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.glPath.c_str(), r.frameMs,
                           1000.0 / r.frameMs);
-    for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
+    for (const auto& c : kColumns)
+        n += r.stageMs.empty() ? std::snprintf(line + n, sizeof line - n, " %9s", "-")
+                               : std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
 }
@@ -177,7 +195,10 @@ std::string formatCsv(const std::vector<BenchRow>& rows) {
     for (const auto& r : rows) {
         s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.image.width << ',' << r.image.height
           << ',' << r.param << ',' << r.glPath << ',' << r.frameMs << ',' << 1000.0 / r.frameMs;
-        for (const auto& c : kColumns) s << ',' << columnMs(r, c);
+        for (const auto& c : kColumns) {
+            s << ',';
+            if (!r.stageMs.empty()) s << columnMs(r, c);  // empty: stages not timed
+        }
         s << '\n';
     }
     return s.str();

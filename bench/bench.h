@@ -29,6 +29,9 @@ struct BenchOptions {
     // named here is rendered `slowdownFactor` times, as if it had become that much slower.
     std::string slowdownMethod;
     int slowdownFactor = 1;
+    // Also time the fixed calibration frame (calibration.h) before each method's rows and
+    // add one row, method "calib", with the median: the machine's speed in this run.
+    bool calibration = false;
     // Camera placement: "fit" (our default framing) or "paraview" (ParaView's ResetCamera:
     // the bounding box's sphere fills a 30 degree view), for like-for-like comparisons.
     std::string camera = "fit";

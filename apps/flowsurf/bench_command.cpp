@@ -57,6 +57,7 @@ int runBench(const BenchOptions& o) {
     b.glPaths.clear();
     for (const auto& p : o.glPaths) b.glPaths.push_back(glPathNamed(p));
     b.stageTimes = !o.noStageTimes;
+    b.calibration = o.calibration;
     if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);
     if (o.quick) {
         b.triangles = {10'000, 220'000};
@@ -67,6 +68,9 @@ int runBench(const BenchOptions& o) {
     gl::HeadlessContext context(false);
     std::printf("flowsurf bench on %s (ms per frame; stages synchronised, frame pipelined)\n",
                 context.description().c_str());
+    if (b.slowdownFactor > 1)
+        std::printf("--slowdown: every frame of %s rendered %d times (a test of the speed check, not a measurement)\n",
+                    b.slowdownMethod.c_str(), b.slowdownFactor);
     std::vector<bench::BenchRow> rows = bench::runBench(b);
     if (!o.csv.empty()) {
         std::string tmp = o.csv + ".tmp";

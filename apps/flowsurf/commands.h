@@ -27,6 +27,7 @@ struct BenchOptions {
     std::string camera = "fit";
     std::vector<std::string> glPaths{"auto"};
     bool noStageTimes = false;
+    bool calibration = false;
     std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails
 };
 int runBench(const BenchOptions& options);

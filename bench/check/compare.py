@@ -3,14 +3,22 @@
 committed baseline of the same rows.
 
     compare.py BASELINE CURRENT [CURRENT ...] [--threshold 2.0] [--failing-methods]
+    compare.py --median CURRENT [CURRENT ...]      (the per-row median as CSV, a new baseline)
 
 A row is (method, case, triangles, width, height, param, gl_path); its time is frame_ms.
-Where several CURRENT files hold a row (repeats), its time is their median. Prints one
-line per row: baseline ms, current ms, how many measurements, ratio = current / baseline,
-and the verdict. A row fails when its ratio exceeds the threshold, when the baseline has
-it and no CURRENT file does (a row the check stopped measuring), or when a CURRENT file
-has it and the baseline does not (the baseline is out of date). Lines starting with '#'
-(the baseline's machine and commit) are skipped.
+Where several CURRENT files hold a row (repeats), its time is their median.
+
+The machine's speed: the row of method "calib" (`flowsurf bench --calibration`, a fixed GL
+frame no flowsurf change touches) gives machine = calib now / calib in the baseline, and
+each row is judged by ratio / machine, its slowdown on equal machines: a machine (or a
+moment of load) that is twice as slow makes every row twice as slow and is not a
+regression. Without a calib row in both files, machine = 1.
+
+Prints one line per row: baseline ms, current ms, how many measurements, ratio = current /
+baseline, that ratio / machine, and the verdict. A row fails when ratio / machine exceeds
+the threshold, when the baseline has it and no CURRENT file does (a row the check stopped
+measuring), or when a CURRENT file has it and the baseline does not (the baseline is out of
+date). Lines starting with '#' (the baseline's machine and commit) are skipped.
 
 Exit status: 0 all rows pass, 1 some row fails, 2 a file cannot be read or lacks a column.
 --failing-methods prints only the methods with a failing row, comma-separated (for a retry).
@@ -21,6 +29,7 @@ import statistics
 import sys
 
 KEY = ("method", "case", "triangles", "width", "height", "param", "gl_path")
+CALIB = "calib"
 
 
 class InputError(Exception):
@@ -50,46 +59,77 @@ def read_rows(path):
     return rows
 
 
-def compare(baseline, currents, threshold):
-    """[(key, baseline_ms or None, current_ms or None, repeats, ratio or None, verdict)]."""
+def medians(currents):
+    """{key: (median ms, number of measurements)} over the CURRENT files."""
     measured = {}
     for rows in currents:
         for key, ms in rows.items():
             measured.setdefault(key, []).append(ms)
+    return {key: (statistics.median(times), len(times)) for key, times in measured.items()}
+
+
+def machine_factor(baseline, now):
+    """calib now / calib in the baseline, or 1 where either lacks the row."""
+    base = [ms for key, ms in baseline.items() if key[0] == CALIB]
+    cur = [ms for key, (ms, _) in now.items() if key[0] == CALIB]
+    return cur[0] / base[0] if base and cur else 1.0
+
+
+def compare(baseline, currents, threshold):
+    """(machine, [(key, baseline_ms or None, current_ms or None, repeats, ratio or None, verdict)])."""
+    now = medians(currents)
+    machine = machine_factor(baseline, now)
     result = []
-    for key in list(baseline) + [k for k in measured if k not in baseline]:
+    for key in list(baseline) + [k for k in now if k not in baseline]:
+        if key[0] == CALIB:
+            continue
         base = baseline.get(key)
-        times = measured.get(key, [])
-        now = statistics.median(times) if times else None
+        ms, n = now.get(key, (None, 0))
         if base is None:
-            result.append((key, None, now, len(times), None, "FAIL: not in the baseline"))
-        elif now is None:
+            result.append((key, None, ms, n, None, "FAIL: not in the baseline"))
+        elif ms is None:
             result.append((key, base, None, 0, None, "FAIL: not measured"))
         else:
-            ratio = now / base
-            verdict = f"FAIL: more than {threshold:g}x slower" if ratio > threshold else "ok"
-            result.append((key, base, now, len(times), ratio, verdict))
-    return result
+            ratio = ms / base
+            slow = ratio / machine > threshold
+            result.append((key, base, ms, n, ratio, f"FAIL: more than {threshold:g}x slower" if slow else "ok"))
+    return machine, result
 
 
-def print_table(result, threshold):
+def print_table(machine, result, threshold):
+    print(f"machine: calib now / calib in the baseline = {machine:.2f} (each ratio is divided by it)")
     print(f"{'method':6} {'case':7} {'triangles':>9} {'image':>9} {'param':>6} {'gl_path':8} "
-          f"{'base ms':>8} {'now ms':>8} {'n':>2} {'ratio':>6}  verdict (fails above {threshold:g}x)")
+          f"{'base ms':>8} {'now ms':>8} {'n':>2} {'ratio':>6} {'/machine':>8}  verdict (fails above {threshold:g}x)")
     for (method, case, tris, w, h, param, path), base, now, n, ratio, verdict in result:
         fmt = lambda v, spec: format(v, spec) if v is not None else "-"
+        norm = ratio / machine if ratio is not None else None
         print(f"{method:6} {case:7} {tris:>9} {w + 'x' + h:>9} {param:>6} {path:8} "
-              f"{fmt(base, '8.2f'):>8} {fmt(now, '8.2f'):>8} {n:>2} {fmt(ratio, '6.2f'):>6}  {verdict}")
+              f"{fmt(base, '8.2f'):>8} {fmt(now, '8.2f'):>8} {n:>2} {fmt(ratio, '6.2f'):>6} {fmt(norm, '8.2f'):>8}  "
+              f"{verdict}")
+
+
+def write_median(currents):
+    """The per-row median of the CURRENT files, as CSV on stdout."""
+    out = csv.writer(sys.stdout, lineterminator="\n")
+    out.writerow(KEY + ("frame_ms", "repeats"))
+    for key, (ms, n) in medians(currents).items():
+        out.writerow(key + (f"{ms:.3f}", n))
 
 
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("baseline")
-    p.add_argument("current", nargs="+")
-    p.add_argument("--threshold", type=float, default=2.0, help="fail above this ratio (default 2.0)")
+    p.add_argument("files", nargs="+", metavar="FILE", help="BASELINE CURRENT [CURRENT ...], or with --median CURRENT ...")
+    p.add_argument("--threshold", type=float, default=2.0, help="fail above this ratio / machine (default 2.0)")
     p.add_argument("--failing-methods", action="store_true", help="print only the failing rows' methods")
+    p.add_argument("--median", action="store_true", help="print the per-row median of the files as CSV")
     a = p.parse_args(argv)
+    if not a.median and len(a.files) < 2:
+        p.error("give BASELINE and at least one CURRENT file")
     try:
-        result = compare(read_rows(a.baseline), [read_rows(c) for c in a.current], a.threshold)
+        if a.median:
+            write_median([read_rows(c) for c in a.files])
+            return 0
+        machine, result = compare(read_rows(a.files[0]), [read_rows(c) for c in a.files[1:]], a.threshold)
     except InputError as e:
         print(f"compare.py: {e}", file=sys.stderr)
         return 2
@@ -97,11 +137,11 @@ def main(argv):
     if a.failing_methods:
         print(",".join(dict.fromkeys(r[0][0] for r in failing)))
     else:
-        print_table(result, a.threshold)
-        ratios = [r[4] for r in result if r[4] is not None]
-        if ratios:
-            print(f"ratios: min {min(ratios):.2f}, median {statistics.median(ratios):.2f}, max {max(ratios):.2f}; "
-                  f"{len(failing)} of {len(result)} rows fail")
+        print_table(machine, result, a.threshold)
+        norms = [r[4] / machine for r in result if r[4] is not None]
+        if norms:
+            print(f"ratio / machine: min {min(norms):.2f}, median {statistics.median(norms):.2f}, "
+                  f"max {max(norms):.2f}; {len(failing)} of {len(result)} rows fail")
     return 1 if failing else 0
 
 

@@ -27,13 +27,16 @@ class CompareTest(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
-    def csv(self, name, times, comment=""):
-        """Writes rows {key: ms} as `flowsurf bench --csv` would; returns the path."""
+    def csv(self, name, times, comment="", calib=None):
+        """Writes rows {key: ms} as `flowsurf bench --csv` would, with the calibration row
+        when `calib` (ms) is given; returns the path."""
         path = os.path.join(self.dir.name, name)
         with open(path, "w") as f:
             f.write(comment + HEADER)
             for (method, case, tris, param, path_), ms in times.items():
                 f.write(f"{method},{case},{tris},512,512,{param},{path_},{ms},{1000 / ms},1.5\n")
+            if calib is not None:
+                f.write(f"calib,-,80000,512,512,-,-,{calib},{1000 / calib},\n")
         return path
 
     def run_compare(self, *args):
@@ -101,6 +104,40 @@ class CompareTest(unittest.TestCase):
         rc, out, _ = self.run_compare(self.csv("base.csv", base), self.csv("now.csv", BASE))
         self.assertEqual(rc, 1)
         self.assertIn("FAIL: not in the baseline", out)
+
+    def test_a_machine_twice_as_slow_is_not_a_regression(self):
+        slow = {k: 1.9 * ms for k, ms in BASE.items()}
+        rc, out, _ = self.run_compare(self.csv("base.csv", BASE, calib=50.0), self.csv("now.csv", slow, calib=100.0),
+                                      "--threshold", "1.5")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("= 2.00", out.splitlines()[0])
+
+    def test_a_slowdown_on_a_faster_machine_fails(self):
+        # The rows took as long as in the baseline on a machine twice as fast: 2x slower code.
+        rc, out, _ = self.run_compare(self.csv("base.csv", BASE, calib=50.0), self.csv("now.csv", BASE, calib=25.0),
+                                      "--threshold", "1.5")
+        self.assertEqual(rc, 1, out)
+        self.assertEqual(sum("FAIL" in line for line in out.splitlines()), len(BASE), out)
+
+    def test_without_calibration_in_both_files_the_machine_is_1(self):
+        slow = {k: 1.9 * ms for k, ms in BASE.items()}
+        rc, out, _ = self.run_compare(self.csv("base.csv", BASE), self.csv("now.csv", slow, calib=100.0),
+                                      "--threshold", "1.5")
+        self.assertEqual(rc, 1, out)
+        self.assertIn("= 1.00", out.splitlines()[0])
+
+    def test_median_writes_a_baseline_of_the_per_row_medians(self):
+        runs = [self.csv(f"{k}.csv", {kk: f * ms for kk, ms in BASE.items()}, calib=50.0 * f)
+                for k, f in enumerate([1.0, 3.0, 1.2])]
+        rc, out, _ = self.run_compare("--median", *runs)
+        self.assertEqual(rc, 0)
+        median = os.path.join(self.dir.name, "median.csv")
+        with open(median, "w") as f:
+            f.write(out)
+        self.assertIn("calib,-,80000,512,512,-,-,60.000,3", out)
+        rc, out, _ = self.run_compare(median, self.csv("now.csv", {k: 1.2 * ms for k, ms in BASE.items()}, calib=60.0))
+        self.assertEqual(rc, 0, out)
+        self.assertEqual(out.count(" 1.00 ") >= len(BASE), True, out)
 
     def test_a_file_without_frame_ms_is_an_input_error(self):
         bad = os.path.join(self.dir.name, "bad.csv")
