@@ -16,17 +16,18 @@
 # that is 2x slower than the baseline's is not a regression.
 #
 # Environment: FLOWSURF (default build/apps/flowsurf), BASELINE (bench/baseline/llvmpipe.csv),
-# THRESHOLD (1.5), PASSES (3), RETRY_PASSES (2), FRAMES (10 per row),
+# THRESHOLD (1.6), PASSES (3), RETRY_PASSES (2), FRAMES (8 per row),
 # BENCH_CHECK_SLOWDOWN=METHOD:K renders every frame of METHOD K times: proves the check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 F=${FLOWSURF:-build/apps/flowsurf}
 BASELINE=${BASELINE:-bench/baseline/llvmpipe.csv}
-THRESHOLD=${THRESHOLD:-1.5}
+THRESHOLD=${THRESHOLD:-1.6}
 PASSES=${PASSES:-3}
 RETRY_PASSES=${RETRY_PASSES:-2}
-FRAMES=${FRAMES:-10}
+FRAMES=${FRAMES:-8}
 COMPARE=bench/check/compare.py
+. bench/machine.sh
 ROWS=(--triangles 10000,220000 --sizes 512x512 --grids 256 --lengths 31 --gl-paths fragment,compute
       --no-stage-times --calibration --frames "$FRAMES")
 update=0
@@ -51,9 +52,8 @@ run() {
 }
 
 for ((k = 0; k < PASSES; k++)); do run isa,ibfvs,hybrid; done
-renderer=$(sed -n '1s/^flowsurf bench on \(.*\) (ms per frame.*$/\1/p' "$WORK/run1.txt")
-machine="$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) cores, $renderer"
-commit="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)')"
+machine=$(bench_machine "$(sed -n '1s/^flowsurf bench on \(.*\) (ms per frame.*$/\1/p' "$WORK/run1.txt")")
+commit=$(bench_commit)
 
 if [ "$update" = 1 ]; then
     [ -z "${BENCH_CHECK_SLOWDOWN:-}" ] || { echo "bench-check: no baseline with BENCH_CHECK_SLOWDOWN set" >&2; exit 2; }
