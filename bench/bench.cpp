@@ -48,7 +48,8 @@ BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surfac
                   bool dynamic, int frames, bool stageTimes, int renders, uint32_t& clock) {
     auto frame = [&](int k) {
         for (int r = 0; r < renders; ++r) {
-            core::Camera cam = dynamic ? core::orbitCamera(camera0, 0.5f * (float(k) + float(r) / float(renders))) : camera0;
+            const float degrees = 0.5f * (float(k) + float(r) / float(renders));
+            core::Camera cam = dynamic ? core::orbitCamera(camera0, degrees) : camera0;
             method.renderFrame({&surface, cam, clock++});
         }
     };
@@ -137,7 +138,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                         uint32_t clock = 0;
                         for (bool dynamic : {false, true}) {
                             if (o.dynamicOnly && !dynamic) continue;
-                            BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, o.stageTimes, renders, clock);
+                            BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, o.stageTimes,
+                                                  renders, clock);
                             r.method = name;
                             r.triangles = long(mesh.triangleCount());
                             r.image = vp;
