@@ -52,7 +52,8 @@ header() {
 }
 # The line above a README table.
 note() {
-    echo "*Measured by \`scripts/bench-tables.sh $1\` on $MACHINE; commit $COMMIT, $(date -u +%Y-%m-%d).*"
+    echo "*Measured by \`scripts/bench-tables.sh $1\` on $MACHINE; commit $COMMIT, $(date -u +%Y-%m-%d);" \
+         "load average $(load) at the end (other jobs on the same cores slow every row).*"
 }
 # Writes stdin to FILE only when it is complete (no partial table on failure).
 publish() {
