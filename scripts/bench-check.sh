@@ -40,6 +40,12 @@ esac
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 start=$(date +%s)
+# Other jobs on the cores slow the rows unevenly (the calibration frame does not follow
+# every method), so a busy machine is said out loud, above all when taking a baseline.
+busy() {
+    awk -v n="$(nproc)" '$1 > n { printf "bench-check: NOTE: load average %s on %d cores: other jobs share the CPU, ratios vary more than on a quiet machine%s\n", $1, n, extra }' \
+        extra="$1" /proc/loadavg
+}
 
 # One run of the rows of METHODS (comma list) into $WORK/run<N>.csv; prints its table.
 runs=0
@@ -66,6 +72,7 @@ if [ "$update" = 1 ]; then
     } > "$WORK/baseline.csv"
     mv "$WORK/baseline.csv" "$BASELINE"
     echo "bench-check: wrote $BASELINE ($machine, commit $commit) in $(($(date +%s) - start)) s"
+    busy "; take the baseline again on a quiet machine"
     exit 0
 fi
 
@@ -82,5 +89,6 @@ echo "bench-check: $machine, commit $commit, load average $(cut -d' ' -f1-3 /pro
 echo "baseline $BASELINE: $(sed -n 's/^# machine: //p' "$BASELINE"); $(sed -n 's/^# commit: //p' "$BASELINE")"
 rc=0
 python3 "$COMPARE" "$BASELINE" "$WORK"/run*.csv --threshold "$THRESHOLD" || rc=$?
+busy ""
 echo "bench-check: $runs runs in $(($(date +%s) - start)) s: $([ "$rc" = 0 ] && echo passed || echo FAILED)"
 exit "$rc"
