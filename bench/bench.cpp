@@ -1,11 +1,15 @@
 #include "bench.h"
 
+#include "calibration.h"
+
 #include "core/builtin_scenes.h"
 #include "methods/common/frame.h"
+#include "methods/common/gl_path.h"
 #include "methods/make_renderer.h"
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -37,12 +41,17 @@ double columnMs(const BenchRow& r, const Column& c) {
     return sum;
 }
 
-// Times `frames` frames of one case: first pipelined (total), then per stage.
+// Times `frames` frames of one case: first pipelined (total), then per stage. Each frame is
+// rendered `renders` times (1; more only to prove the speed check fails), the extra
+// renders of a dynamic frame from cameras between it and the next, so all stay dynamic.
 BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surface, const core::Camera& camera0,
-                  bool dynamic, int frames, uint32_t& clock) {
+                  bool dynamic, int frames, bool stageTimes, int renders, uint32_t& clock) {
     auto frame = [&](int k) {
-        core::Camera cam = dynamic ? core::orbitCamera(camera0, 0.5f * float(k)) : camera0;
-        method.renderFrame({&surface, cam, clock++});
+        for (int r = 0; r < renders; ++r) {
+            const float degrees = 0.5f * (float(k) + float(r) / float(renders));
+            core::Camera cam = dynamic ? core::orbitCamera(camera0, degrees) : camera0;
+            method.renderFrame({&surface, cam, clock++});
+        }
     };
     // Warm-up: shader compilation, first-touch allocations, and the static cache.
     for (int k = 0; k < 3; ++k) frame(dynamic ? k : 0);
@@ -54,6 +63,7 @@ BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surfac
     BenchRow row;
     row.caseName = dynamic ? "dynamic" : "static";
     row.frameMs = std::chrono::duration<double, std::milli>(t1 - t0).count() / frames;
+    if (!stageTimes) return row;
     method.timer().reset();
     method.timer().setEnabled(true);
     for (int k = 0; k < frames; ++k) frame(dynamic ? k + 3 + frames : 0);
@@ -83,10 +93,27 @@ std::vector<std::pair<std::string, methods::MethodParams>> variants(const std::s
     return v;
 }
 
+std::string glPathName(methods::GlPath path) {
+    for (const auto& [value, name] : methods::kGlPathNames)
+        if (value == path) return std::string(name);
+    return "?";
+}
+
+// The paths asked for as they resolve on this renderer, each once, in the order asked.
+std::vector<methods::GlPath> resolvedGlPaths(const std::vector<methods::GlPath>& requested) {
+    std::vector<methods::GlPath> paths;
+    for (methods::GlPath p : requested) {
+        methods::GlPath r = methods::resolveGlPath(p);
+        if (std::find(paths.begin(), paths.end(), r) == paths.end()) paths.push_back(r);
+    }
+    return paths;
+}
+
 }  // namespace
 
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<BenchRow> rows;
+    std::vector<double> calibration;  // ms, one per method group
     std::fputs(tableHeader().c_str(), stdout);
     for (long tris : o.triangles) {
         core::Dataset data = core::makeBuiltin("builtin:sphere:" + std::to_string(tris));
@@ -100,31 +127,50 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                 camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));
                 core::fitClipPlanes(camera, data.bounds());
             }
-            for (const std::string& name : o.methods)
-                for (const auto& [param, params] : variants(name, o)) {
-                    auto method = methods::makeMethod(name, params, vp);
-                    uint32_t clock = 0;
-                    for (bool dynamic : {false, true}) {
-                        if (o.dynamicOnly && !dynamic) continue;
-                        BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, clock);
-                        r.method = name;
-                        r.triangles = long(mesh.triangleCount());
-                        r.image = vp;
-                        r.param = param;
-                        std::fputs(formatRow(r).c_str(), stdout);
-                        std::fflush(stdout);
-                        rows.push_back(std::move(r));
+            for (const std::string& name : o.methods) {
+                if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
+                for (const auto& [param, variantParams] : variants(name, o))
+                    for (methods::GlPath path : resolvedGlPaths(o.glPaths)) {
+                        methods::MethodParams params = variantParams;
+                        params.common.glPath = path;
+                        auto method = methods::makeMethod(name, params, vp);
+                        const int renders = name == o.slowdownMethod ? o.slowdownFactor : 1;
+                        uint32_t clock = 0;
+                        for (bool dynamic : {false, true}) {
+                            if (o.dynamicOnly && !dynamic) continue;
+                            BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, o.stageTimes,
+                                                  renders, clock);
+                            r.method = name;
+                            r.triangles = long(mesh.triangleCount());
+                            r.image = vp;
+                            r.param = param;
+                            r.glPath = glPathName(path);
+                            std::fputs(formatRow(r).c_str(), stdout);
+                            std::fflush(stdout);
+                            rows.push_back(std::move(r));
+                        }
                     }
-                }
+            }
         }
+    }
+    if (!calibration.empty()) {
+        BenchRow r;
+        r.caseName = r.param = r.glPath = "-";
+        r.method = "calib";
+        r.image = {512, 512};
+        r.triangles = 80'000;
+        std::nth_element(calibration.begin(), calibration.begin() + calibration.size() / 2, calibration.end());
+        r.frameMs = calibration[calibration.size() / 2];
+        std::fputs(formatRow(r).c_str(), stdout);
+        rows.push_back(std::move(r));
     }
     return rows;
 }
 
 std::string tableHeader() {
     char line[512];
-    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s | %9s %7s |", "method", "case", "triangles",
-                          "image", "param", "ms/frame", "fps");
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s %-8s | %9s %7s |", "method", "case",
+                          "triangles", "image", "param", "gl path", "ms/frame", "fps");
     for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9s", c.title);
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
@@ -133,22 +179,28 @@ std::string tableHeader() {
 std::string formatRow(const BenchRow& r) {
     char line[512], image[32];
     std::snprintf(image, sizeof image, "%dx%d", r.image.width, r.image.height);
-    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s | %9.2f %7.1f |", r.method.c_str(),
-                          r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.frameMs, 1000.0 / r.frameMs);
-    for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s %-8s | %9.2f %7.1f |", r.method.c_str(),
+                          r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.glPath.c_str(), r.frameMs,
+                          1000.0 / r.frameMs);
+    for (const auto& c : kColumns)
+        n += r.stageMs.empty() ? std::snprintf(line + n, sizeof line - n, " %9s", "-")
+                               : std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
 }
 
 std::string formatCsv(const std::vector<BenchRow>& rows) {
     std::ostringstream s;
-    s << "method,case,triangles,width,height,param,frame_ms,fps";
+    s << "method,case,triangles,width,height,param,gl_path,frame_ms,fps";
     for (const auto& c : kColumns) s << ',' << c.title << "_ms";
     s << '\n';
     for (const auto& r : rows) {
         s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.image.width << ',' << r.image.height
-          << ',' << r.param << ',' << r.frameMs << ',' << 1000.0 / r.frameMs;
-        for (const auto& c : kColumns) s << ',' << columnMs(r, c);
+          << ',' << r.param << ',' << r.glPath << ',' << r.frameMs << ',' << 1000.0 / r.frameMs;
+        for (const auto& c : kColumns) {
+            s << ',';
+            if (!r.stageMs.empty()) s << columnMs(r, c);  // empty: stages not timed
+        }
         s << '\n';
     }
     return s.str();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "methods/common/params.h"
 
 #include <string>
 #include <vector>
@@ -20,6 +21,17 @@ struct BenchOptions {
     std::vector<int> gridRes{128, 256, 512, 1024};   // ISA
     std::vector<int> filterLengths{10, 25, 50, 100};  // hybrid
     bool dynamicOnly = false;            // skip the static case (animation cost only)
+    bool stageTimes = true;              // also time each stage (a second, synchronised pass)
+    // Per-pixel passes as compute or fragment shaders: each path asked for; a path that
+    // resolves (auto -> the renderer's) to one already run is not run again.
+    std::vector<methods::GlPath> glPaths{methods::GlPath::Auto};
+    // Proof that the speed check fails (scripts/bench-check.sh): every frame of the method
+    // named here is rendered `slowdownFactor` times, as if it had become that much slower.
+    std::string slowdownMethod;
+    int slowdownFactor = 1;
+    // Also time the fixed calibration frame (calibration.h) before each method's rows and
+    // add one row, method "calib", with the median: the machine's speed in this run.
+    bool calibration = false;
     // Camera placement: "fit" (our default framing) or "paraview" (ParaView's ResetCamera:
     // the bounding box's sphere fills a 30 degree view), for like-for-like comparisons.
     std::string camera = "fit";
@@ -30,6 +42,7 @@ struct BenchRow {
     long triangles = 0;
     core::Viewport image;
     std::string param;                   // "R=256" (ISA), "L=50" (hybrid), "-"
+    std::string glPath;                  // the path that ran: "fragment" or "compute"
     double frameMs = 0;                  // whole frame, pipelined (timer off)
     std::vector<std::pair<std::string, double>> stageMs;  // per stage (synchronised)
 };

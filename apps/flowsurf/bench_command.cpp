@@ -7,10 +7,43 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
 namespace flowsurf::app {
+
+namespace {
+
+methods::GlPath glPathNamed(const std::string& name) {
+    for (const auto& [value, n] : methods::kGlPathNames)
+        if (n == name) return value;
+    throw ConfigError("--gl-paths: unknown path '" + name + "'");
+}
+
+// --slowdown METHOD:K (hidden): K renders per timed frame of METHOD.
+void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
+    const size_t colon = text.find(':');
+    const std::string method = text.substr(0, colon);
+    const bool known = std::find(methods::kMethodNames.begin(), methods::kMethodNames.end(), method) !=
+                       methods::kMethodNames.end();
+    int factor = 0;
+    if (colon != std::string::npos) {
+        try {
+            size_t used = 0;
+            factor = std::stoi(text.substr(colon + 1), &used);
+            if (used != text.size() - colon - 1) factor = 0;
+        } catch (const std::exception&) {
+            factor = 0;
+        }
+    }
+    if (!known || factor < 1 || factor > 100)
+        throw ConfigError("--slowdown: '" + text + "' is not METHOD:K (a method name, K renders per frame, 1..100)");
+    b.slowdownMethod = method;
+    b.slowdownFactor = factor;
+}
+
+}  // namespace
 
 int runBench(const BenchOptions& o) {
     bench::BenchOptions b;
@@ -23,6 +56,11 @@ int runBench(const BenchOptions& o) {
     b.filterLengths = o.lengths;
     b.dynamicOnly = o.dynamicOnly;
     b.camera = o.camera;
+    b.glPaths.clear();
+    for (const auto& p : o.glPaths) b.glPaths.push_back(glPathNamed(p));
+    b.stageTimes = !o.noStageTimes;
+    b.calibration = o.calibration;
+    if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);
     if (o.quick) {
         b.triangles = {10'000, 220'000};
         b.imageSizes = {{512, 512}};
@@ -35,6 +73,9 @@ int runBench(const BenchOptions& o) {
     // The driver and its version, for figures from several machines (bench/gpu/run.sh).
     std::printf("GL driver: %s; %s\n", reinterpret_cast<const char*>(glGetString(GL_VENDOR)),
                 reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+    if (b.slowdownFactor > 1)
+        std::printf("--slowdown: every frame of %s rendered %d times (a test of the speed check, not a measurement)\n",
+                    b.slowdownMethod.c_str(), b.slowdownFactor);
     std::vector<bench::BenchRow> rows = bench::runBench(b);
     if (!o.csv.empty()) {
         std::string tmp = o.csv + ".tmp";

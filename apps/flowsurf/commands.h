@@ -25,6 +25,10 @@ struct BenchOptions {
     std::vector<int> lengths{10, 25, 50, 100};
     bool dynamicOnly = false;
     std::string camera = "fit";
+    std::vector<std::string> glPaths{"auto"};
+    bool noStageTimes = false;
+    bool calibration = false;
+    std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails
 };
 int runBench(const BenchOptions& options);
 

@@ -106,6 +106,20 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::IsMember({"fit", "paraview"}));
     benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(1, 1001));
+    {
+        std::vector<std::string> paths;
+        for (const auto& [value, name] : methods::kGlPathNames) paths.emplace_back(name);
+        benchCmd->add_option("--gl-paths", bench.glPaths, "Per-pixel passes as compute or fragment shaders: each "
+                                                         "path listed, one gl_path column (auto: the renderer's)")
+            ->delimiter(',')->capture_default_str()->check(CLI::IsMember(paths));
+    }
+    benchCmd->add_flag("--no-stage-times", bench.noStageTimes,
+                       "Time whole frames only (skips the second, synchronised pass per stage)");
+    benchCmd->add_flag("--calibration", bench.calibration, "Also time a fixed GL frame no flowsurf change touches "
+                                                            "(the machine's speed; scripts/bench-check.sh)");
+    benchCmd->add_option("--slowdown", bench.slowdown, "METHOD:K renders each frame of METHOD K times (tests the "
+                                                       "speed check, scripts/bench-check.sh)")
+        ->group("");  // hidden: not a measurement
 
     // --config FILE: the file's options first, the command line's on top of them.
     for (CLI::App* cmd : {renderCmd, compareCmd, viewCmd})

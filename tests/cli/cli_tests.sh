@@ -144,6 +144,17 @@ if "$FLOWSURF" render builtin:double-gyre --method hybrid --time 2:4 --frames 3 
 else
     bad "hybrid over a time range"
 fi
+# bench: one row per GL path asked for (auto is the renderer's, run once), the calibration
+# row, and the speed check's hidden slowdown refused when malformed.
+expect_fail "bench unknown gl path" 2 "gl-paths"            "$WORK/b1.csv" -- bench --gl-paths vulkan --csv "$WORK/b1.csv"
+expect_fail "bench bad slowdown"    2 "slowdown: 'hybrid:0'" "$WORK/b2.csv" -- bench --slowdown hybrid:0 --csv "$WORK/b2.csv"
+if "$FLOWSURF" bench --methods ibfvs --triangles 8 --sizes 64x64 --frames 1 --gl-paths fragment,compute,auto \
+       --calibration --no-stage-times --csv "$WORK/b.csv" >/dev/null &&
+   [ "$(cut -d, -f1,7 "$WORK/b.csv" | sort | tr '\n' ' ')" = "calib,- ibfvs,compute ibfvs,compute ibfvs,fragment ibfvs,fragment method,gl_path " ]; then
+    ok "bench gl_path column and calibration row"
+else
+    bad "bench gl_path column and calibration row: $(cut -d, -f1,7 "$WORK/b.csv" 2>&1 | tr '\n' ' ')"
+fi
 if "$FLOWSURF" info builtin:double-gyre | grep -q "time values: 0 1 2"; then ok "info lists time values"; else bad "info lists time values"; fi
 if command -v ffmpeg >/dev/null; then
     if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 4 --orbit 2 -q -o "$WORK/a.mp4" && [ -s "$WORK/a.mp4" ]; then
