@@ -2,7 +2,8 @@
 """The comparison behind scripts/bench-check.sh: `flowsurf bench --csv` rows against a
 committed baseline of the same rows.
 
-    compare.py BASELINE CURRENT [CURRENT ...] [--threshold 2.0] [--failing-methods]
+    compare.py BASELINE CURRENT [CURRENT ...] [--threshold 2.0] [--method-threshold 1.5]
+               [--failing-methods]
     compare.py --median CURRENT [CURRENT ...]      (the per-row median as CSV, a new baseline)
 
 A row is (method, case, triangles, width, height, param, gl_path); its time is frame_ms.
@@ -18,13 +19,18 @@ Prints one line per row: baseline ms, current ms, how many measurements, ratio =
 baseline, that ratio / machine, and the verdict. A row fails when ratio / machine exceeds
 the threshold, when the baseline has it and no CURRENT file does (a row the check stopped
 measuring), or when a CURRENT file has it and the baseline does not (the baseline is out of
-date). Lines starting with '#' (the baseline's machine and commit) are skipped.
+date). A method fails when the geometric mean of its rows' ratio / machine exceeds the
+method threshold: a method made 2x slower is 2x slower in every row, and the mean over its
+rows has a fraction of one row's noise, so this catches it even where single rows land under
+the row threshold (noise here is about +-30 % per row). Lines starting with '#' (the
+baseline's machine and commit) are skipped.
 
 Exit status: 0 all rows pass, 1 some row fails, 2 a file cannot be read or lacks a column.
 --failing-methods prints only the methods with a failing row, comma-separated (for a retry).
 """
 import argparse
 import csv
+import math
 import statistics
 import sys
 
@@ -96,6 +102,15 @@ def compare(baseline, currents, threshold):
     return machine, result
 
 
+def method_means(machine, result):
+    """{method: geometric mean of ratio / machine over its measured rows}."""
+    logs = {}
+    for key, _, _, _, ratio, _ in result:
+        if ratio is not None:
+            logs.setdefault(key[0], []).append(math.log(ratio / machine))
+    return {m: math.exp(sum(v) / len(v)) for m, v in logs.items()}
+
+
 def print_table(machine, result, threshold):
     print(f"machine: calib now / calib in the baseline = {machine:.2f} (each ratio is divided by it)")
     print(f"{'method':6} {'case':7} {'triangles':>9} {'image':>9} {'param':>6} {'gl_path':8} "
@@ -120,7 +135,9 @@ def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("files", nargs="+", metavar="FILE", help="BASELINE CURRENT [CURRENT ...], or with --median CURRENT ...")
     p.add_argument("--threshold", type=float, default=2.0, help="fail above this ratio / machine (default 2.0)")
-    p.add_argument("--failing-methods", action="store_true", help="print only the failing rows' methods")
+    p.add_argument("--method-threshold", type=float, default=1.5,
+                   help="fail a method whose rows' geometric mean ratio / machine exceeds this (default 1.5)")
+    p.add_argument("--failing-methods", action="store_true", help="print only the failing methods")
     p.add_argument("--median", action="store_true", help="print the per-row median of the files as CSV")
     a = p.parse_args(argv)
     if not a.median and len(a.files) < 2:
@@ -134,15 +151,22 @@ def main(argv):
         print(f"compare.py: {e}", file=sys.stderr)
         return 2
     failing = [r for r in result if r[5] != "ok"]
+    means = method_means(machine, result)
+    slow_methods = [m for m, g in means.items() if g > a.method_threshold]
     if a.failing_methods:
-        print(",".join(dict.fromkeys(r[0][0] for r in failing)))
+        print(",".join(dict.fromkeys([r[0][0] for r in failing] + slow_methods)))
     else:
         print_table(machine, result, a.threshold)
+        for m, g in means.items():
+            verdict = f"FAIL: more than {a.method_threshold:g}x slower" if m in slow_methods else "ok"
+            print(f"method {m}: geometric mean of ratio / machine {g:.2f}  {verdict} "
+                  f"(fails above {a.method_threshold:g}x)")
         norms = [r[4] / machine for r in result if r[4] is not None]
         if norms:
             print(f"ratio / machine: min {min(norms):.2f}, median {statistics.median(norms):.2f}, "
-                  f"max {max(norms):.2f}; {len(failing)} of {len(result)} rows fail")
-    return 1 if failing else 0
+                  f"max {max(norms):.2f}; {len(failing)} of {len(result)} rows fail, "
+                  f"{len(slow_methods)} of {len(means)} methods")
+    return 1 if failing or slow_methods else 0
 
 
 if __name__ == "__main__":
