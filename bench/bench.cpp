@@ -3,9 +3,9 @@
 #include "calibration.h"
 
 #include "core/builtin_scenes.h"
-#include "methods/common/frame.h"
 #include "methods/common/gl_path.h"
 #include "methods/make_renderer.h"
+#include "session/playback.h"
 
 #include <epoxy/gl.h>
 
@@ -44,13 +44,14 @@ double columnMs(const BenchRow& r, const Column& c) {
 // Times `frames` frames of one case: first pipelined (total), then per stage. Each frame is
 // rendered `renders` times (1; more only to prove the speed check fails), the extra
 // renders of a dynamic frame from cameras between it and the next, so all stay dynamic.
-BenchRow timeCase(methods::FlowMethod& method, const methods::SurfaceGpu& surface, const core::Camera& camera0,
-                  bool dynamic, int frames, bool stageTimes, int renders, uint32_t& clock) {
+BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool dynamic, int frames,
+                  bool stageTimes, int renders) {
+    methods::FlowMethod& method = playback.view(0);
     auto frame = [&](int k) {
         for (int r = 0; r < renders; ++r) {
             const float degrees = 0.5f * (float(k) + float(r) / float(renders));
             core::Camera cam = dynamic ? core::orbitCamera(camera0, degrees) : camera0;
-            method.renderFrame({&surface, cam, clock++});
+            playback.render({cam});  // the frame loop every front end runs; its clock counts on
         }
     };
     // Warm-up: shader compilation, first-touch allocations, and the static cache.
@@ -116,16 +117,16 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<double> calibration;  // ms, one per method group
     std::fputs(tableHeader().c_str(), stdout);
     for (long tris : o.triangles) {
-        core::Dataset data = core::makeBuiltin("builtin:sphere:" + std::to_string(tris));
-        const core::SurfaceMesh& mesh = data.steps.front().mesh;
-        methods::SurfaceGpu surface(mesh, "velocity");
+        core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:" + std::to_string(tris)));
+        const core::Bounds bounds = steps.bounds();
+        const long triangles = long(steps.load(0).triangleCount());
         for (const core::Viewport& vp : o.imageSizes) {
-            core::Camera camera = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+            core::Camera camera = core::fitCamera(bounds, vp, {0.3f, 0.4f, 1.0f});
             if (o.camera == "paraview") {
-                const float r = data.bounds().radius();
+                const float r = bounds.radius();
                 camera.fovDeg = 30.0f;
                 camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));
-                core::fitClipPlanes(camera, data.bounds());
+                core::fitClipPlanes(camera, bounds);
             }
             for (const std::string& name : o.methods) {
                 if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
@@ -133,15 +134,17 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                     for (methods::GlPath path : resolvedGlPaths(o.glPaths)) {
                         methods::MethodParams params = variantParams;
                         params.common.glPath = path;
-                        auto method = methods::makeMethod(name, params, vp);
+                        session::RenderOptions options;
+                        options.method = methods::methodFromName(name);
+                        options.params = params;
+                        options.size = vp;
+                        session::Playback playback(options, steps);
                         const int renders = name == o.slowdownMethod ? o.slowdownFactor : 1;
-                        uint32_t clock = 0;
                         for (bool dynamic : {false, true}) {
                             if (o.dynamicOnly && !dynamic) continue;
-                            BenchRow r = timeCase(*method, surface, camera, dynamic, o.frames, o.stageTimes,
-                                                  renders, clock);
+                            BenchRow r = timeCase(playback, camera, dynamic, o.frames, o.stageTimes, renders);
                             r.method = name;
-                            r.triangles = long(mesh.triangleCount());
+                            r.triangles = triangles;
                             r.image = vp;
                             r.param = param;
                             r.glPath = glPathName(path);

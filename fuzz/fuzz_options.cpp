@@ -1,7 +1,7 @@
 // The option value parsers: --size, vectors, colours, numbers, and every row of the
 // option table through setOption. Input: option index byte, then the value text.
 #include "core/errors.h"
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include <string>
 

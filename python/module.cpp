@@ -128,8 +128,11 @@ PYBIND11_MODULE(_flowsurf, m) {
                    std::to_string(s.stepCount()) + " step(s)>";
         });
 
-    m.def("read", &Surface::read, py::arg("path"), py::arg("field") = "", py::call_guard<py::gil_scoped_release>(),
+    m.def("_read", &Surface::read, py::arg("path"), py::arg("field") = "",
+          py::arg("options") = std::vector<std::pair<std::string, std::string>>{},
+          py::call_guard<py::gil_scoped_release>(),
           "Read a surface: any format the command line reads, a file series, or builtin:NAME");
+    m.def("read_option_names", &Surface::readOptionNames, "The options of read(): how the input is read");
 
     py::class_<Renderer>(m, "_Renderer")
         .def(py::init([]() { return std::make_unique<Renderer>(); }), py::call_guard<py::gil_scoped_release>())
@@ -157,7 +160,7 @@ PYBIND11_MODULE(_flowsurf, m) {
         .def_property_readonly("height", &Renderer::height)
         .def("gl_renderer", &Renderer::glRenderer);
 
-    m.def("option_names", &Renderer::optionNames, "Every render option's command-line name, in --help order");
+    m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
     m.def("_write_png", [](const std::string& path, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {
         if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("image must have shape (h, w, 3)");
         writePng(path, int(rgb.shape(1)), int(rgb.shape(0)), rgb.data());

@@ -25,8 +25,8 @@ methods::GlPath glPathNamed(const std::string& name) {
 void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
     const size_t colon = text.find(':');
     const std::string method = text.substr(0, colon);
-    const bool known = std::find(methods::kMethodNames.begin(), methods::kMethodNames.end(), method) !=
-                       methods::kMethodNames.end();
+    methods::Method named{};
+    const bool known = methods::valueOf(methods::kMethodNames, method, &named);
     int factor = 0;
     if (colon != std::string::npos) {
         try {

@@ -17,7 +17,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
             std::string list;
             for (const auto& c : s->choices) list += (list.empty() ? "" : "|") + c;
             help += " [" + list + "]";
-        } else if (s->kind == OptionKind::Int || s->kind == OptionKind::Float) {
+        } else if (s->kind == OptionKind::Int || s->kind == OptionKind::Float || s->kind == OptionKind::Size) {
             auto bound = [](double v) {
                 return v == std::floor(v) && std::abs(v) < 1e15 ? std::to_string(static_cast<long long>(v))
                                                                  : formatDouble(v);

@@ -1,8 +1,8 @@
-// flowsurf — the option table (session/options.h) as CLI11 options of a subcommand:
+// flowsurf — the option table (session/options/options.h) as CLI11 options of a subcommand:
 // --help shows each option's group, kind, range and default from the table.
 #pragma once
 
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,15 +1,13 @@
 #include "commands.h"
+#include "io/series_reader.h"
 
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "io/image_writer.h"
 #include "methods/common/text.h"
-#include "methods/common/frame.h"
-#include "session/animated_surface.h"
 #include "progress.h"
-#include "session/scene_setup.h"
-#include "methods/make_renderer.h"
+#include "session/playback.h"
 
 #include <epoxy/gl.h>
 
@@ -21,11 +19,15 @@ namespace flowsurf::app {
 
 namespace {
 
-std::vector<std::string> splitMethods(const std::string& list) {
-    std::vector<std::string> out;
+std::vector<methods::Method> splitMethods(const std::string& list) {
+    std::vector<methods::Method> out;
     std::stringstream ss(list);
-    for (std::string m; std::getline(ss, m, ',');)
-        if (!m.empty()) out.push_back(m);
+    for (std::string m; std::getline(ss, m, ',');) {
+        if (m.empty()) continue;
+        out.emplace_back();
+        if (!methods::valueOf(methods::kMethodNames, m, &out.back()))
+            throw ConfigError("--methods: '" + m + "' is not one of " + methods::nameList(methods::kMethodNames));
+    }
     if (out.empty()) throw ConfigError("--methods: give at least one method, e.g. isa,ibfvs");
     return out;
 }
@@ -35,10 +37,10 @@ std::vector<std::string> splitMethods(const std::string& list) {
 int runCompare(const RenderOptions& o, const std::string& methodList) {
     validateRenderOptions(o);
     if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
-    const std::vector<std::string> names = splitMethods(methodList);
+    const std::vector<methods::Method> names = splitMethods(methodList);
 
-    std::unique_ptr<core::StepProvider> steps = openInput(o);
-    const FrameCameras cameras(o, steps->bounds());
+    std::unique_ptr<core::StepProvider> steps = io::openInput(o.input, sourceOptions(o));
+    (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
 
     // Same camera path, frame count and seed for every method ([L] Fig. 1).
@@ -48,32 +50,31 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     sheet.height = o.size.height + label;
     sheet.pixels.assign(size_t(sheet.width) * sheet.height * 3, 255);
     ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
+    int done = 0;
     for (size_t m = 0; m < names.size(); ++m) {
-        AnimatedSurface surface(o, *steps);  // each method sees the same data times
-        auto method = methods::makeMethod(names[m], surface.paramsFor(o.params), o.size);
+        // One method at a time, each timed alone; each sees the same data times.
+        Playback playback(o, *steps, {names[m]});
+        playback.onFrame([&] { progress.update(++done); });
         glFinish();
         auto t0 = std::chrono::steady_clock::now();
-        for (int k = 0; k <= o.frames; ++k) {
-            const methods::SurfaceGpu& frameSurface = surface.at(k);
-            method->renderFrame({&frameSurface, cameras.at(k), uint32_t(k),
-                                 method->usesTimeLevels() ? surface.levelsAt(k) : nullptr});
-            progress.update(int(m) * (o.frames + 1) + k + 1);
-        }
+        playback.start(false);  // every frame 0..frames is timed, as a PNG render without warm-up
+        for (int k = 0; k <= o.frames; ++k) playback.advance();
         glFinish();
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
                     (o.frames + 1);
+        const methods::FlowMethod* method = &playback.view(0);
         std::vector<uint8_t> img = gl::readRgb8TopDown(method->composite());
         const int x0 = int(m) * (o.size.width + gap);
         for (int y = 0; y < o.size.height; ++y)
             std::copy_n(&img[size_t(y) * o.size.width * 3], size_t(o.size.width) * 3,
                         &sheet.pixels[(size_t(y + label) * sheet.width + x0) * 3]);
         char text[128];
-        std::string upper = names[m];
+        std::string upper(methods::nameOf(methods::kMethodNames, names[m]));
         for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
         std::snprintf(text, sizeof text, "%s  %.1f ms/frame (%.0f fps)", upper.c_str(), ms, 1000.0 / ms);
         const uint8_t black[3] = {20, 20, 20};
         methods::drawText(sheet, text, x0 + 8, label * 3 / 4, label * 3 / 5, black);
-        if (!o.quiet) std::fprintf(stderr, "\nflowsurf: %s %.2f ms/frame\n", names[m].c_str(), ms);
+        if (!o.quiet) std::fprintf(stderr, "\nflowsurf: %s %.2f ms/frame\n", method->name(), ms);
     }
     progress.finish();
     io::writePngRgb8(o.output, sheet.width, sheet.height, 3, sheet.pixels);

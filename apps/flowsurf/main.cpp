@@ -1,7 +1,8 @@
 // flowsurf — command-line program: render, info, bench. One catch here maps each error
 // type to its exit code (exit_codes.h); the library never exits the process.
 #include "commands.h"
-#include "session/config_file.h"
+#include "session/options/config_file.h"
+#include "session/scene_setup.h"
 #include "core/errors.h"
 #include "exit_codes.h"
 #include "view_app.h"
@@ -77,17 +78,16 @@ int main(int argc, char** argv) {
     }
 
     std::string infoPath;
-    io::SourceOptions infoSource;
     CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, "
                                                    "bounds, OpenFOAM patches with their fields");
     infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
-    // The two reading options of the render table, with its help.
+    // How info reads the file: the table's options of reading an input (effect Reload),
+    // but the input itself and the field.
+    session::RenderOptions infoRead;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.name == "patches" || spec.name == "foam-case") {
-            auto* opt = infoCmd->add_option("--" + spec.name, spec.name == "patches" ? infoSource.patches
-                                                                                     : infoSource.foamCase, spec.help);
-            if (!spec.choices.empty()) opt->check(CLI::IsMember(spec.choices));
-        }
+        if (spec.effect == session::OptionEffect::Reload && spec.name != "input" && spec.name != "field")
+            infoCmd->add_option_function<std::string>(
+                "--" + spec.name, [&infoRead, s = &spec](const std::string& v) { s->set(infoRead, v); }, spec.help);
 
     app::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Print ms/frame per stage, static and dynamic case");
@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*renderCmd) return app::runRender(render);
-        if (*infoCmd) return app::runInfo(infoPath, infoSource);
+        if (*infoCmd) return app::runInfo(infoPath, session::sourceOptions(infoRead));
         if (*viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
             if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "io/series_reader.h"
 
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
@@ -6,11 +7,8 @@
 #include "gl/readback.h"
 #include "io/image_writer.h"
 #include "io/video_writer.h"
-#include "methods/common/frame.h"
-#include "session/animated_surface.h"
 #include "progress.h"
-#include "session/scene_setup.h"
-#include "methods/make_renderer.h"
+#include "session/playback.h"
 
 #include <epoxy/gl.h>
 
@@ -42,58 +40,62 @@ int runRender(const RenderOptions& o) {
     const OutputKind kind = outputKind(o.output);
 
     // Data: load and check the field before any GL work.
-    std::unique_ptr<core::StepProvider> steps = openInput(o);
-    const FrameCameras cameras(o, steps->bounds());
+    std::unique_ptr<core::StepProvider> steps = io::openInput(o.input, sourceOptions(o));
+    (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
-    AnimatedSurface surface(o, *steps);
-    std::unique_ptr<methods::FlowMethod> method = methods::makeMethod(o.method, surface.paramsFor(o.params), o.size);
+    Playback playback(o, *steps);
+    AnimatedSurface& surface = playback.surface();
 
     std::unique_ptr<io::VideoWriter> video;
     if (kind == OutputKind::Mp4) video = std::make_unique<io::VideoWriter>(o.output, o.size.width, o.size.height,
                                                                            io::VideoOptions{o.fps, o.crf});
     if (!o.quiet && o.verbose)
         std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", o.input.c_str(),
-                     surface.field().c_str(), surface.at(0).triangleCount(), method->name(),
+                     surface.field().c_str(), surface.at(0).triangleCount(), playback.view(0).name(),
                      surface.unsteady() ? ", time series" : "");
 
-    // Movies start converged: --warmup frames of frame 0's data and camera are advected
-    // before the first written frame (the clock, which drives the noise, keeps counting).
-    const int warmup = kind == OutputKind::Png ? 0 : warmupFrames(o);
-    // --frames advection frames, then the output frame.
+    // --frames advection frames, then the output frame. One PNG is the image after them;
+    // movies and sequences start converged (the warm-up, see playback.h for the clock).
     const int total = o.frames + 1;
-    ProgressBar progress("render", warmup + total, !o.quiet);
     const auto start = std::chrono::steady_clock::now();
-    for (int w = 0; w < warmup; ++w) {
-        const methods::SurfaceGpu& frameSurface = surface.at(0);
-        method->renderFrame({&frameSurface, cameras.at(0), uint32_t(w),
-                             method->usesTimeLevels() ? surface.levelsAt(0) : nullptr});
-        progress.update(w + 1, "warm-up");
+    int rendered = 0;
+    if (kind == OutputKind::Png) {
+        ProgressBar progress("render", playback.historyFree() ? 1 : total, !o.quiet);
+        playback.onFrame([&] { progress.update(++rendered); });
+        playback.still(o.frames);
+        progress.finish();
+    } else {
+        const int warmup = playback.warmupFrames();
+        ProgressBar progress("render", warmup + total, !o.quiet);
+        playback.onFrame([&] {
+            ++rendered;
+            progress.update(rendered, rendered <= warmup ? "warm-up" : "");
+        });
+        playback.start(true);
+        for (int k = 0; k < total; ++k) {
+            playback.advance();
+            const gl::Texture2D& image = playback.view(0).composite();
+            if (video) video->addFrame(gl::readRgb8TopDown(image));
+            if (kind == OutputKind::PngSequence)
+                io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3, gl::readRgb8TopDown(image));
+            if (surface.unsteady()) progress.update(rendered, "t = " + std::to_string(playback.lastTime()));
+        }
+        progress.finish();
+        rendered -= warmup;
     }
-    // One PNG of a history-free method (the hybrid) needs only its last frame.
-    const int first = kind == OutputKind::Png && method->historyFree() ? total - 1 : 0;
-    for (int k = first; k < total; ++k) {
-        const methods::SurfaceGpu& frameSurface = surface.at(k);
-        method->renderFrame({&frameSurface, cameras.at(k), uint32_t(warmup + k),
-                             method->usesTimeLevels() ? surface.levelsAt(k) : nullptr});
-        if (video) video->addFrame(gl::readRgb8TopDown(method->composite()));
-        if (kind == OutputKind::PngSequence)
-            io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3,
-                             gl::readRgb8TopDown(method->composite()));
-        progress.update(warmup + k + 1, surface.unsteady() ? "t = " + std::to_string(surface.timeAt(k)) : "");
-    }
-    progress.finish();
+    const methods::FlowMethod& method = playback.view(0);
     if (o.verbose) {
         glFinish();
         double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "flowsurf: %d frames in %.2f s: %.1f ms/frame (%.1f fps), data loading and output included\n",
-                     total - first, s, 1000.0 * s / (total - first), (total - first) / s);
+                     rendered, s, 1000.0 * s / rendered, rendered / s);
     }
 
     if (video) video->finish();
     if (kind == OutputKind::Png)
-        io::writePngRgb8(o.output, o.size.width, o.size.height, 3, gl::readRgb8TopDown(method->composite()));
+        io::writePngRgb8(o.output, o.size.width, o.size.height, 3, gl::readRgb8TopDown(method.composite()));
     if (!o.flowTexture.empty())
-        io::writePngGray16(o.flowTexture, o.size.width, o.size.height, gl::readGray16TopDown(method->flowTexture()));
+        io::writePngGray16(o.flowTexture, o.size.width, o.size.height, gl::readGray16TopDown(method.flowTexture()));
     if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
     return 0;
 }

@@ -45,10 +45,14 @@ public:
 
     // An option by its command-line name without dashes ("method", "size", "alpha",
     // "filter-length", "overlay", "eye", "orbit", "time-per-frame", ...) and its value as
-    // text. Throws ConfigError naming the option for an unknown name or a bad value.
+    // text. Throws ConfigError naming the option for an unknown name or a bad value, and
+    // for the options read with the input ("patches", "foam-case": Surface::read's) or
+    // the command line's output files ("output", "fps", ...). After begin(), a camera
+    // option keeps the animation going; any other starts it over at frame 0 (with the
+    // warm-up) on the next advance().
     void set(const std::string& option, const std::string& value);
     std::string get(const std::string& option) const;
-    // Every option name, in `--help` order.
+    // The names set() takes, in `--help` order.
     static std::vector<std::string> optionNames();
 
     // The camera: explicit, or (default, and after fitCamera) fitted to the surface's
@@ -61,8 +65,10 @@ public:
     // Renders frames 0..frames of `surface` from a fresh start (the image after them is
     // what `flowsurf render --frames N` writes). Throws what loading a step throws.
     void render(const Surface& surface, int frames);
-    // Starts an animation of `surface` without rendering; then advance() renders frame
-    // 0, 1, 2, ... (the camera path and data time follow the frame as in batch).
+    // Starts an animation of `surface`: the warm-up ("warmup", default 3 / alpha frames
+    // for ISA and IBFVS) runs now, then advance() renders frame 0, 1, 2, ... as `flowsurf
+    // render -o movie.mp4` writes them (camera path, orbit and data time follow the frame;
+    // frame f has noise clock W + f).
     void begin(const Surface& surface);
     void advance();
     // Frames rendered since render()/begin(); the frame on screen is frame() - 1.
@@ -78,7 +84,8 @@ public:
     // (float) or 0..65535 (as the command line's 16-bit --flow-texture PNG).
     void readFlowTexture(float* values) const;
     void readFlowTexture16(uint16_t* values) const;
-    // Milliseconds per stage of the last frame, in the method's stage order.
+    // Milliseconds per stage (mean over the frames of the last render() or advance()), in
+    // the method's stage order.
     std::vector<std::pair<std::string, double>> stageMs() const;
     // GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     std::string glRenderer() const;

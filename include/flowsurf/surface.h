@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flowsurf {
@@ -26,9 +27,13 @@ public:
     // Any input the command line reads: a file (.vtp .vtu .vtk .ply .obj .stl .foam .e
     // .case .pvd), a file series (surf_%04d.vtp, surf_*.vtp) or builtin:NAME. `field`
     // chooses the vector array (empty: the first one that is not zero everywhere). A
-    // series is streamed step by step while rendering. Throws IoError, FormatError,
-    // FieldError, naming the file.
-    static Surface read(const std::string& path, const std::string& field = "");
+    // series is streamed step by step while rendering. `options`: how the file is read, by
+    // the command line's names (readOptionNames(): "patches", "foam-case"). Throws IoError,
+    // FormatError, FieldError naming the file, ConfigError naming a bad option.
+    static Surface read(const std::string& path, const std::string& field = "",
+                        const std::vector<std::pair<std::string, std::string>>& options = {});
+    // The options read() takes: those of the command line that say how the input is read.
+    static std::vector<std::string> readOptionNames();
 
     // Another n x 3 per-vertex vector array (copied), e.g. to switch fields later.
     // Throws FormatError (NaN/Inf) or ConfigError (name taken). In-memory surfaces only.

@@ -24,13 +24,16 @@ import zlib as _zlib
 
 import numpy as _np
 
-from ._flowsurf import FieldError, FormatError, GlError, Surface, option_names, read
-from ._flowsurf import _Renderer
+from ._flowsurf import FieldError, FormatError, GlError, Surface, option_names, read_option_names
+from ._flowsurf import _Renderer, _read
 
 __all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "FormatError", "FieldError",
-           "GlError", "option_names"]
+           "GlError", "option_names", "read_option_names"]
 
+# The keywords, from the C++ option table: a Renderer's (what the frame loop applies) and
+# read()'s (how the input is read).
 _OPTIONS = set(option_names())
+_READ_OPTIONS = set(read_option_names())
 
 
 def _option_text(name, value):
@@ -53,19 +56,35 @@ def _option_text(name, value):
     return str(value)
 
 
-def _apply(renderer, options):
+def _keywords(options, allowed, what):
+    """(name, text) pairs of keyword options, checked against the option names `allowed`."""
+    pairs = []
     for key, value in options.items():
         name = key.replace("_", "-")
-        if name not in _OPTIONS or name in ("input", "field", "output", "flow-texture"):
-            raise ValueError("unknown keyword %r (render options: %s)" % (
-                key, ", ".join(sorted(o.replace("-", "_") for o in _OPTIONS - {"input", "field", "output",
-                                                                                "flow-texture"}))))
-        if value is None:
-            continue
+        if name not in allowed:
+            hint = " (%s is read with the surface: flowsurf.read(path, %s=...))" % (key, key) \
+                if name in _READ_OPTIONS else ""
+            raise ValueError("unknown keyword %r%s (%s: %s)" % (
+                key, hint, what, ", ".join(sorted(o.replace("-", "_") for o in allowed))))
+        if value is not None:
+            pairs.append((key, name, _option_text(name, value)))
+    return pairs
+
+
+def _apply(renderer, options):
+    for key, name, text in _keywords(options, _OPTIONS, "render options"):
         try:
-            renderer.set(name, _option_text(name, value))
+            renderer.set(name, text)
         except ValueError as e:
-            raise ValueError("%s=%r: %s" % (key, value, e)) from None
+            raise ValueError("%s=%r: %s" % (key, options[key], e)) from None
+
+
+def read(path, field=None, **options):
+    """Reads a surface: any format the command line reads, a file series, or builtin:NAME.
+    `field` picks the vector array (default: the first that is not zero everywhere);
+    keywords say how the input is read (read_option_names(): patches, foam_case)."""
+    pairs = [(name, text) for _, name, text in _keywords(options, _READ_OPTIONS, "read options")]
+    return _read(path, field or "", pairs)
 
 
 def _triangles_from_faces(faces):
@@ -147,8 +166,9 @@ class Renderer:
         return self._r.image()
 
     def frames(self, surface, n, field=None, **options):
-        """Yields the image of frames 0..n-1 of an animation (camera path, orbit and data time
-        follow the frame as on the command line)."""
+        """Yields the image of frames 0..n-1 of an animation, as the command line's movie
+        writes them: converged from frame 0 (the warm-up option), camera path, orbit and data
+        time following the frame."""
         _apply(self._r, options)
         self._r.begin(_as_surface(surface, field))
         for _ in range(int(n)):

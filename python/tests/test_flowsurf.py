@@ -258,3 +258,25 @@ def test_png_for_notebooks(tmp_path):
     assert png.startswith(b"\x89PNG")
     (tmp_path / "a.png").write_bytes(flowsurf.to_png(img))
     assert np.array_equal(read_png(tmp_path / "a.png"), img)
+
+
+def test_animation_frames_are_the_command_lines_movie_frames(tmp_path):
+    # Same warm-up and noise clock as `render -o seq_%02d.png` (frame f at k = W + f).
+    subprocess.run([FLOWSURF, "render", "builtin:sphere", "--method", "ibfvs", "--size", "64x48", "--alpha", "0.1",
+                    "--orbit", "1", "--frames", "3", "-q", "-o", str(tmp_path / "seq_%02d.png")], check=True)
+    r = flowsurf.Renderer(method="ibfvs", size=(64, 48), alpha=0.1)
+    frames = list(r.frames(flowsurf.read("builtin:sphere"), n=4, orbit=1.0))
+    for f, img in enumerate(frames):
+        assert np.array_equal(img, read_png(tmp_path / ("seq_%02d.png" % f))), "frame %d" % f
+
+
+def test_input_options_go_to_read_not_to_the_renderer():
+    # Once accepted by a Renderer and silently ignored.
+    with pytest.raises(ValueError, match="flowsurf.read"):
+        flowsurf.Renderer(patches="wall.*")
+    with pytest.raises(ValueError, match="foam_case"):
+        flowsurf.Renderer(foam_case="decomposed")
+    with pytest.raises(ValueError, match="alpha"):
+        flowsurf.read("builtin:sphere", alpha=0.1)
+    assert set(flowsurf.read_option_names()) == {"patches", "foam-case"}
+    assert flowsurf.read("builtin:sphere", patches="wall.*").triangle_count > 0

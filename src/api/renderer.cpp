@@ -4,11 +4,8 @@
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
-#include "methods/common/frame.h"
-#include "methods/make_renderer.h"
-#include "session/animated_surface.h"
-#include "session/options.h"
-#include "session/scene_setup.h"
+#include "session/options/options.h"
+#include "session/playback.h"
 
 #include <epoxy/gl.h>
 
@@ -33,14 +30,7 @@ struct Renderer::Impl {
     session::RenderOptions options;
     std::shared_ptr<const detail::SurfaceData> data;
     std::unique_ptr<core::StepProvider> steps;
-    std::unique_ptr<session::AnimatedSurface> surface;
-    std::unique_ptr<session::FrameCameras> cameras;
-    std::unique_ptr<methods::FlowMethod> method;
-    int frame = 0;
-    double time = 0.0;
-    core::Camera lastCamera;
-    bool optionsChanged = false;   // since begin(): the next advance() starts over
-    bool cameraChanged = false;    // since begin(): new FrameCameras, same frame count
+    std::unique_ptr<session::Playback> playback;  // the frame loop of the command line
 
     // Holds the lock and the context for one public call.
     struct Scope {
@@ -54,41 +44,22 @@ struct Renderer::Impl {
         }
     };
 
-    void start(std::shared_ptr<const detail::SurfaceData> d) {
+    void open(std::shared_ptr<const detail::SurfaceData> d) {
         // Release the old stream before the new one starts (its prefetch thread reads).
-        surface.reset();
-        method.reset();
+        playback.reset();
         data = std::move(d);
         options.input = data->source;
         options.field = data->field;
         session::validateRenderOptions(options);
         steps = data->provider();
-        cameras = std::make_unique<session::FrameCameras>(options, data->bounds);
-        surface = std::make_unique<session::AnimatedSurface>(options, *steps);
-        method = methods::makeMethod(options.method, surface->paramsFor(options.params), options.size);
-        method->timer().setEnabled(true);
-        frame = 0;
-        optionsChanged = cameraChanged = false;
-    }
-
-    void step() {
-        if (!data) throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
-        if (optionsChanged) start(data);
-        if (cameraChanged) {
-            cameras = std::make_unique<session::FrameCameras>(options, data->bounds);
-            cameraChanged = false;
-        }
-        const methods::SurfaceGpu& s = surface->at(frame);
-        lastCamera = cameras->at(frame);
-        time = surface->unsteady() ? surface->timeAt(frame) : 0.0;
-        method->timer().reset();
-        method->renderFrame({&s, lastCamera, uint32_t(frame), method->usesTimeLevels() ? surface->levelsAt(frame) : nullptr});
-        ++frame;
+        playback = std::make_unique<session::Playback>(options, *steps);
+        playback->setStageTiming(true);
     }
 
     const methods::FlowMethod& rendered() const {
-        if (!method || frame == 0) throw ConfigError("nothing rendered yet: call render() or advance() first");
-        return *method;
+        if (!playback || playback->frame() == 0)
+            throw ConfigError("nothing rendered yet: call render() or advance() first");
+        return playback->view(0);
     }
 };
 
@@ -104,20 +75,24 @@ Renderer::Renderer(ContextMode mode) : impl_(std::make_unique<Impl>()) {
 Renderer::~Renderer() {
     if (!impl_) return;
     Impl::Scope scope(*impl_);
-    impl_->surface.reset();
-    impl_->method.reset();  // GL objects go while the context is current
+    impl_->playback.reset();  // GL objects go while the context is current
 }
 
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 void Renderer::set(const std::string& option, const std::string& value) {
-    if (option == "input" || option == "field")
-        throw ConfigError("'" + option + "' is the surface's: use Surface::read / Surface::setField");
-    const bool camera = option == "eye" || option == "target" || option == "up" || option == "fov" ||
-                        option == "ortho" || option == "orbit" || option == "camera-path";
+    // What the table says a change means: the input's options belong to the Surface, the
+    // command line's output files to the command line; the rest the frame loop applies.
+    const session::OptionEffect effect = session::effectOf(option);
+    if (effect == session::OptionEffect::Reload)
+        throw ConfigError("'" + option + "' is read with the surface: use Surface::read(path, field, {{\"" + option +
+                          "\", value}}) or Surface::setField");
+    if (effect == session::OptionEffect::Output)
+        throw ConfigError("'" + option + "' is an output file setting of the command line; a Renderer returns its "
+                          "images (readImage, readFlowTexture)");
     session::setOption(impl_->options, option, value);
-    (camera ? impl_->cameraChanged : impl_->optionsChanged) = true;
+    if (impl_->playback) impl_->playback->set(option, value);
 }
 
 std::string Renderer::get(const std::string& option) const {
@@ -129,7 +104,8 @@ std::string Renderer::get(const std::string& option) const {
 std::vector<std::string> Renderer::optionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.name != "input") names.push_back(spec.name);
+        if (spec.effect != session::OptionEffect::Reload && spec.effect != session::OptionEffect::Output)
+            names.push_back(spec.name);
     return names;
 }
 
@@ -143,19 +119,19 @@ void Renderer::setCamera(const CameraView& v) {
     if (!(v.fovDeg >= 1.0f && v.fovDeg <= 170.0f)) throw ConfigError("camera: fov must be 1..170 degrees");
     o.fov = v.fovDeg;
     o.ortho = std::max(0.0f, v.orthoHeight);
-    impl_->cameraChanged = true;
+    if (impl_->playback) impl_->playback->setOptions(o);
 }
 
 void Renderer::fitCamera() {
     impl_->options.eye.reset();
     impl_->options.target.reset();
     impl_->options.up.reset();
-    impl_->cameraChanged = true;
+    if (impl_->playback) impl_->playback->setOptions(impl_->options);
 }
 
 CameraView Renderer::camera() const {
     CameraView v;
-    const core::Camera& c = impl_->lastCamera;
+    const core::Camera c = impl_->playback ? impl_->playback->lastCamera() : core::Camera{};
     for (int a = 0; a < 3; ++a) v.eye[a] = c.eye[a], v.target[a] = c.target[a], v.up[a] = c.up[a];
     v.fovDeg = c.fovDeg;
     v.orthoHeight = c.orthoHeight;
@@ -165,24 +141,26 @@ CameraView Renderer::camera() const {
 void Renderer::render(const Surface& surface, int frames) {
     if (frames < 0) throw ConfigError("render: frames must not be negative");
     Impl::Scope scope(*impl_);
-    impl_->start(surface.data_shared());
-    // A history-free method (the hybrid) renders frame N alone: the same image.
-    if (impl_->method->historyFree()) impl_->frame = frames;
-    for (int k = impl_->frame; k <= frames; ++k) impl_->step();
+    impl_->open(surface.data_shared());
+    impl_->playback->still(frames);
 }
 
 void Renderer::begin(const Surface& surface) {
     Impl::Scope scope(*impl_);
-    impl_->start(surface.data_shared());
+    impl_->open(surface.data_shared());
+    impl_->playback->start(true);  // converged from frame 0, as the command line's movies
 }
 
 void Renderer::advance() {
     Impl::Scope scope(*impl_);
-    impl_->step();
+    if (!impl_->playback || !impl_->data)
+        throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
+    for (size_t i = 0; i < impl_->playback->viewCount(); ++i) impl_->playback->view(i).timer().reset();
+    impl_->playback->advance();
 }
 
-int Renderer::frame() const { return impl_->frame; }
-double Renderer::time() const { return impl_->time; }
+int Renderer::frame() const { return impl_->playback ? impl_->playback->frame() : 0; }
+double Renderer::time() const { return impl_->playback ? impl_->playback->lastTime() : 0.0; }
 int Renderer::width() const { return impl_->options.size.width; }
 int Renderer::height() const { return impl_->options.size.height; }
 
@@ -209,8 +187,8 @@ void Renderer::readFlowTexture16(uint16_t* values) const {
 }
 
 std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
-    if (!impl_->method) return {};
-    return impl_->method->timer().meanMs();
+    if (!impl_->playback) return {};
+    return impl_->playback->view(0).timer().meanMs();
 }
 
 std::string Renderer::glRenderer() const {

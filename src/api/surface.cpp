@@ -1,8 +1,10 @@
 #include <flowsurf/surface.h>
 
 #include "api/surface_data.h"
+#include "io/series_reader.h"
 #include "core/errors.h"
 #include "methods/common/surface_gpu.h"
+#include "session/options/options.h"
 #include "session/scene_setup.h"
 
 #include <algorithm>
@@ -34,7 +36,7 @@ private:
 
 std::unique_ptr<core::StepProvider> SurfaceData::provider() const {
     if (dataset) return std::make_unique<SharedSteps>(dataset);
-    return session::openInput(source);
+    return io::openInput(source, read);
 }
 
 }  // namespace detail
@@ -100,10 +102,32 @@ Surface Surface::fromArrays(const float* points, size_t pointCount, const uint32
     return Surface(describe(d, steps, field));
 }
 
-Surface Surface::read(const std::string& path, const std::string& field) {
-    std::unique_ptr<core::StepProvider> steps = session::openInput(path);
+std::vector<std::string> Surface::readOptionNames() {
+    std::vector<std::string> names;
+    for (const auto& spec : session::renderOptionTable())
+        if (spec.effect == session::OptionEffect::Reload && spec.name != "input" && spec.name != "field")
+            names.push_back(spec.name);
+    return names;
+}
+
+Surface Surface::read(const std::string& path, const std::string& field,
+                      const std::vector<std::pair<std::string, std::string>>& options) {
+    session::RenderOptions o;
+    const std::vector<std::string> allowed = readOptionNames();
+    for (const auto& [name, value] : options) {
+        if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+            throw ConfigError("Surface::read: '" + name + "' is not an option of reading (" +
+                              [&] {
+                                  std::string list;
+                                  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+                                  return list;
+                              }() + ")");
+        session::setOption(o, name, value);
+    }
     auto d = std::make_shared<detail::SurfaceData>();
     d->source = path;
+    d->read = session::sourceOptions(o);
+    std::unique_ptr<core::StepProvider> steps = io::openInput(path, d->read);
     if (steps->count() == 1) {  // read once, shared by every render
         auto data = std::make_shared<core::Dataset>();
         data->source = path;

@@ -5,6 +5,7 @@
 
 #include "core/mesh.h"
 #include "core/time_series.h"
+#include "io/dataset_reader.h"
 
 #include <memory>
 #include <string>
@@ -15,6 +16,7 @@ namespace flowsurf::detail {
 struct SurfaceData {
     std::string source;                        // path, builtin:NAME or "arrays"
     std::string field;                         // the vector array to show
+    io::SourceOptions read;                    // how `source` is read (OpenFOAM patches, case)
     std::shared_ptr<const core::Dataset> dataset;  // in memory, or null: stream `source`
     std::vector<double> times;
     core::Bounds bounds;

@@ -1,5 +1,6 @@
 #include "io/series_reader.h"
 
+#include "core/builtin_scenes.h"
 #include "core/errors.h"
 #include "io/reader/reader_process.h"
 
@@ -110,6 +111,11 @@ std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const S
             throw FormatError(input + ": " + files[i - 1] + " and " + files[i] + " have the same time " +
                               std::to_string(times[i]));
     return std::make_unique<PatternSteps>(std::move(files), std::move(times));
+}
+
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const SourceOptions& options) {
+    if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
+    return openSeries(input, options);
 }
 
 }  // namespace flowsurf::io

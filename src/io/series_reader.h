@@ -20,5 +20,8 @@ bool isSeriesPattern(const std::string& input);
 // Throws IoError (no file matches, unreadable) or FormatError.
 // `options`: OpenFOAM's boundary patches and case layout (single files only).
 std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const SourceOptions& options = {});
+// Any input of the command line as steps loaded on demand: builtin:NAME (made in memory),
+// a file or a file series (openSeries).
+std::unique_ptr<core::StepProvider> openInput(const std::string& input, const SourceOptions& options = {});
 
 }  // namespace flowsurf::io

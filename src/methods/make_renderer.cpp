@@ -22,9 +22,10 @@ std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params,
 }  // namespace
 
 Method methodFromName(const std::string& name) {
-    for (size_t i = 0; i < kMethodNames.size(); ++i)
-        if (name == kMethodNames[i]) return Method(i);
-    throw ConfigError("unknown method '" + name + "' (available: isa, ibfvs, hybrid)");
+    Method m{};
+    if (!valueOf(kMethodNames, name, &m))
+        throw ConfigError("unknown method '" + name + "' (available: " + nameList(kMethodNames) + ")");
+    return m;
 }
 
 std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
@@ -33,7 +34,7 @@ std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodPara
 }
 
 std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& params, const core::Viewport& viewport) {
-    const std::string name(kMethodNames[size_t(method)]);
+    const std::string name(nameOf(kMethodNames, method));
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (viewport.width > maxSize || viewport.height > maxSize)

@@ -9,9 +9,7 @@
 
 namespace flowsurf::methods {
 
-enum class Method { Isa, Ibfvs, Hybrid };
-
-// "isa", "ibfvs", "hybrid" (kMethodNames) -> Method. Throws ConfigError.
+// A name of kMethodNames -> Method. Throws ConfigError listing the names.
 Method methodFromName(const std::string& name);
 
 // A renderer of `method` for `viewport`. Throws ConfigError (bad parameters) or GlError

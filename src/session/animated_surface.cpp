@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace flowsurf::session {
 
@@ -24,12 +25,13 @@ core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<doub
     return m;
 }
 
-AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& steps)
+AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& steps, methods::ProcessGroup* group)
     : options_(o),
       common_(o.params.common),
       field_(selectSeriesField(steps, o.field)),
       prepared_(steps, field_, core::DerivedFieldOptions{o.curvatureRadius}),
-      provider_(prepared_) {
+      provider_(prepared_),
+      group_(group) {
     const bool series = steps.count() > 1 && !o.timeStepGiven;
     if (!series) {
         if (o.timeStep >= steps.count())
@@ -101,8 +103,10 @@ const methods::TimeLevels* AnimatedSurface::levelsAtTime(double t, double perFra
 void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& where) {
     if (!mesh.findField(field_))
         throw FieldError(where + ": no vector field '" + field_ + "' in this step");
-    surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, common_,
-                                                     options_.params.ibfvs.edgeMask);
+    std::optional<methods::SurfaceStatistics> whole;
+    if (group_) whole = methods::wholeSurfaceStatistics(*group_, mesh, field_, common_);
+    surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, common_, options_.params.ibfvs.edgeMask,
+                                                     whole ? &*whole : nullptr);
 }
 
 const methods::SurfaceGpu& AnimatedSurface::atTime(double t) {

@@ -4,9 +4,10 @@
 #pragma once
 
 #include "core/step_stream.h"
+#include "methods/common/process_group.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
-#include "session/options.h"
+#include "session/options/options.h"
 #include "session/prepared_steps.h"
 
 #include <map>
@@ -17,8 +18,10 @@ namespace flowsurf::session {
 class AnimatedSurface {
 public:
     // Reads steps from `steps` (which must outlive this); needs a current GL context.
-    // Throws ConfigError/FieldError, and what loading a step throws.
-    AnimatedSurface(const RenderOptions& o, core::StepProvider& steps);
+    // Throws ConfigError/FieldError, and what loading a step throws. `group`: the
+    // processes that each hold a piece of a steady surface (its statistics are the whole
+    // surface's), or null.
+    AnimatedSurface(const RenderOptions& o, core::StepProvider& steps, methods::ProcessGroup* group = nullptr);
     // The surface for frame k (uploaded when the data changed since the last call).
     const methods::SurfaceGpu& at(int frame) { return atTime(mapping_.at(frame)); }
     // The surface at data time t (the viewer's clock runs apart from the frame count).
@@ -59,6 +62,7 @@ private:
     core::TimeMapping mapping_;
     std::unique_ptr<methods::SurfaceGpu> surface_;
     std::unique_ptr<methods::TimeLevelSource> levels_;
+    methods::ProcessGroup* group_ = nullptr;
     size_t uploadedTopology_ = 0;  // step whose triangles surface_ holds
     std::map<std::string, std::string> units_;  // of the data's arrays, from the first step read
 };

@@ -1,35 +1,13 @@
 #include "session/scene_setup.h"
 
-#include "core/builtin_scenes.h"
 #include "core/errors.h"
 
 #include <algorithm>
 #include "session/camera_path_file.h"
-#include "io/dataset_reader.h"
-#include "io/series_reader.h"
 
 namespace flowsurf::session {
 
-core::Dataset loadInput(const std::string& input) {
-    if (core::isBuiltinSpec(input)) return core::makeBuiltin(input);
-    return io::readDataset(input);
-}
-
-std::unique_ptr<core::StepProvider> openInput(const RenderOptions& o) {
-    return openInput(o.input, io::SourceOptions{o.patches, o.foamCase});
-}
-
-std::unique_ptr<core::StepProvider> openInput(const std::string& input, const io::SourceOptions& options) {
-    if (core::isBuiltinSpec(input)) return std::make_unique<core::DatasetSteps>(core::makeBuiltin(input));
-    return io::openSeries(input, options);
-}
-
-const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step) {
-    if (step >= data.steps.size())
-        throw ConfigError("--time-step " + std::to_string(step) + ": " + data.source + " has " +
-                          std::to_string(data.steps.size()) + " time step(s)");
-    return data.steps[step].mesh;
-}
+io::SourceOptions sourceOptions(const RenderOptions& o) { return io::SourceOptions{o.patches, o.foamCase}; }
 
 ViewFrame viewFrame(int upAxis) {
     ViewFrame f;

@@ -1,25 +1,21 @@
-// flowsurf — what every subcommand does before rendering: load the data (file or
-// builtin), pick the field and the time step, and set up the camera.
+// flowsurf — the camera every front end frames the data with (the options' camera, the
+// --view presets and --up-axis, orbit and camera paths per frame), and how the options
+// read the input.
 #pragma once
 
 #include "core/camera.h"
 #include "core/camera_path.h"
 #include "core/mesh.h"
-#include "core/time_series.h"
 #include "io/dataset_reader.h"
 
 #include <memory>
-#include "session/options.h"
+#include "session/options/options.h"
 
 namespace flowsurf::session {
 
-core::Dataset loadInput(const std::string& input);
-// The input as time steps loaded on demand: builtin:NAME, a file, or a file series
-// pattern (surf_%04d.vtp, surf_*.vtp); OpenFOAM's --patches and --foam-case applied.
-std::unique_ptr<core::StepProvider> openInput(const RenderOptions& o);
-std::unique_ptr<core::StepProvider> openInput(const std::string& input, const io::SourceOptions& options = {});
-// The mesh of the requested step with its field selected; throws ConfigError/FieldError.
-const core::SurfaceMesh& selectStep(const core::Dataset& data, size_t step);
+// How the options read a file made of parts (--patches, --foam-case): the options of
+// io::openInput.
+io::SourceOptions sourceOptions(const RenderOptions& o);
 // Camera from the options, or fitted to the bounds; clip planes always fitted.
 // The data's axes for --up-axis 0/1/2 (x/y/z): up, right, and front (toward the
 // default camera).

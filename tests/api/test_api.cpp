@@ -6,6 +6,7 @@
 #include <EGL/eglext.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -92,13 +93,14 @@ TEST(Api, OwnAndCallerContextsRenderTheSameImage) {
 }
 
 // begin + advance animate frame by frame: the frame count, the orbit turning the camera,
-// and frame N equal to render(N).
+// and without a warm-up frame N equal to render(N).
 TEST(Api, AnimationFrameByFrameEqualsOneRender) {
     const flowsurf::Surface s = surfaceOf(vortexPlane());
     flowsurf::Renderer r;
     r.set("size", "64x64");
     r.set("method", "ibfvs");
     r.set("orbit", "2");
+    r.set("warmup", "0");
     r.begin(s);
     for (int k = 0; k <= 10; ++k) r.advance();
     EXPECT_EQ(r.frame(), 11);
@@ -133,4 +135,64 @@ TEST(Api, BadArraysAndOptionsThrowTypedErrorsNamingTheItem) {
     EXPECT_THROW(r.advance(), flowsurf::ConfigError);  // nothing begun
     EXPECT_THROW(flowsurf::Surface::read("/nonexistent/case.vtp"), flowsurf::IoError);
     EXPECT_EQ(r.get("filter-length"), "31");  // the CLI's default
+}
+
+// An animation starts converged, as the command line's movie: the warm-up (3 / alpha
+// frames by default) runs at frame 0's camera before frame 0, whose noise clock is then
+// W. With a fixed camera, frame 0 is the image render(W) writes (frames 0..W at k = 0..W).
+TEST(Api, AnimationStartsConvergedAsTheCommandLinesMovie) {
+    const flowsurf::Surface s = surfaceOf(vortexPlane());
+    flowsurf::Renderer r;
+    r.set("size", "64x48");
+    r.set("method", "isa");
+    r.set("alpha", "0.1");  // W = 3 / alpha = 30
+    r.begin(s);
+    r.advance();
+    EXPECT_EQ(r.frame(), 1);
+    const std::vector<uint8_t> first = image(r);
+    r.render(s, 30);
+    EXPECT_EQ(image(r), first);
+    r.render(s, 0);
+    EXPECT_NE(image(r), first);  // an unconverged start looks different
+    // The hybrid is history free: no warm-up; its animation's frame 0 is render(0).
+    r.set("method", "hybrid");
+    r.begin(s);
+    r.advance();
+    const std::vector<uint8_t> hybrid = image(r);
+    r.render(s, 0);
+    EXPECT_EQ(image(r), hybrid);
+}
+
+// What an option change means is the option table's: options read with the input belong
+// to the Surface (they were once accepted here and silently ignored), output files to the
+// command line; a camera change keeps the frame count; a parameter change starts over.
+TEST(Api, OptionsAreAppliedAsTheTableSays) {
+    flowsurf::Renderer r;
+    for (const char* input : {"patches", "foam-case", "field", "input"}) {
+        try {
+            r.set(input, "auto");
+            FAIL() << input << " accepted by a Renderer";
+        } catch (const flowsurf::ConfigError& e) {
+            EXPECT_NE(std::string(e.what()).find("Surface"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(r.set("output", "a.png"), flowsurf::ConfigError);
+    EXPECT_THROW(flowsurf::Surface::read("builtin:sphere", "", {{"alpha", "0.1"}}), flowsurf::ConfigError);
+    EXPECT_THROW(flowsurf::Surface::read("builtin:sphere", "", {{"foam-case", "sideways"}}), flowsurf::ConfigError);
+    EXPECT_NO_THROW(flowsurf::Surface::read("builtin:sphere", "", {{"patches", "wall.*"}}));
+    const std::vector<std::string> names = flowsurf::Renderer::optionNames();
+    EXPECT_EQ(std::count(names.begin(), names.end(), "patches"), 0);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "alpha"), 1);
+
+    const flowsurf::Surface s = surfaceOf(vortexPlane());
+    r.set("size", "48x48");
+    r.set("warmup", "0");
+    r.begin(s);
+    for (int k = 0; k < 3; ++k) r.advance();
+    r.set("orbit", "5");  // the camera: frames go on
+    r.advance();
+    EXPECT_EQ(r.frame(), 4);
+    r.set("alpha", "0.2");  // new renderers: the animation starts over
+    r.advance();
+    EXPECT_EQ(r.frame(), 1);
 }

@@ -1,7 +1,8 @@
 // Option parsing of `flowsurf render`: the names scripts depend on, and refusals.
 #include "core/errors.h"
 #include "session/camera_path_file.h"
-#include "session/config_file.h"
+#include "session/options/config_file.h"
+#include "io/text_writer.h"
 #include "cli_options.h"
 
 #include <gtest/gtest.h>
@@ -127,7 +128,7 @@ TEST(CliOptions, TableDefaultsRoundTrip) {
 TEST(CliOptions, ConfigFileRoundTrip) {
     RenderOptions a;
     a.input = "builtin:tori";
-    a.method = "hybrid";
+    a.method = methods::Method::Hybrid;
     a.size = {321, 123};
     a.eye = glm::vec3(1.0f / 3.0f, -2.7182817f, 12345.678f);
     a.target = glm::vec3(0.1f, 0.2f, 0.3f);
@@ -140,7 +141,7 @@ TEST(CliOptions, ConfigFileRoundTrip) {
     a.params.ibfvs.edgeMask = true;
     a.params.common.normalize = false;
     const std::string path = ::testing::TempDir() + "flowsurf_config_roundtrip.json";
-    writeConfigFile(path, a);
+    io::writeTextFile(path, configJson(a));
     RenderOptions b;
     applyConfigFile(path, b);
     for (const OptionSpec& spec : renderOptionTable())
@@ -188,4 +189,46 @@ TEST(CliOptions, JsonFileThatIsAFolderIsAnIoError) {
     RenderOptions o;
     EXPECT_THROW(applyConfigFile(::testing::TempDir(), o), IoError);
     EXPECT_THROW(setOption(o, "colormap-file", ::testing::TempDir()), IoError);
+}
+
+// What a change of each option means is declared once, in the table; the front ends (the
+// viewer, flowsurf::Renderer, Python, ParaView) read it from there.
+TEST(CliOptions, EachOptionDeclaresItsEffect) {
+    EXPECT_EQ(effectOf("patches"), OptionEffect::Reload);  // once silently ignored after the first load
+    EXPECT_EQ(effectOf("foam-case"), OptionEffect::Reload);
+    EXPECT_EQ(effectOf("input"), OptionEffect::Reload);
+    EXPECT_EQ(effectOf("alpha"), OptionEffect::Rebuild);
+    EXPECT_EQ(effectOf("method"), OptionEffect::Rebuild);
+    EXPECT_EQ(effectOf("warmup"), OptionEffect::Rebuild);
+    EXPECT_EQ(effectOf("eye"), OptionEffect::Camera);
+    EXPECT_EQ(effectOf("orbit"), OptionEffect::Camera);
+    EXPECT_EQ(effectOf("fps"), OptionEffect::Output);
+    EXPECT_EQ(effectOf("quiet"), OptionEffect::None);
+    EXPECT_THROW(effectOf("no-such-option"), ConfigError);
+    // Several changes need the largest effect among them.
+    RenderOptions a, b;
+    EXPECT_EQ(changeEffect(a, b), OptionEffect::None);
+    setOption(b, "fov", "40");
+    EXPECT_EQ(changeEffect(a, b), OptionEffect::Camera);
+    setOption(b, "kernel", "box");
+    EXPECT_EQ(changeEffect(a, b), OptionEffect::Rebuild);
+    setOption(b, "patches", "wall.*");
+    EXPECT_EQ(changeEffect(a, b), OptionEffect::Reload);
+}
+
+// Lists of names in messages and --help come from the tables.
+TEST(CliOptions, NameListsComeFromTheTables) {
+    try {
+        parse({"x", "--method", "lic"});
+        FAIL();
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("'lic' is not one of " + methods::nameList(methods::kMethodNames)),
+                  std::string::npos) << e.what();
+    }
+    EXPECT_EQ(methods::nameList(methods::kMethodNames), "isa, ibfvs, hybrid");
+    methods::Method m{};
+    EXPECT_TRUE(methods::valueOf(methods::kMethodNames, "hybrid", &m));
+    EXPECT_EQ(m, methods::Method::Hybrid);
+    EXPECT_EQ(methods::nameOf(methods::kMethodNames, methods::Method::Ibfvs), "ibfvs");
+    EXPECT_EQ(parse({"x", "-m", "ibfvs"}).method, methods::Method::Ibfvs);
 }

@@ -7,7 +7,7 @@
 #include "io/dataset_reader.h"
 #include "io/series_reader.h"
 #include "session/animated_surface.h"
-#include "session/colormap_file.h"
+#include "session/options/colormap_file.h"
 #include "session/scene_setup.h"
 #include "test_io_common.h"
 

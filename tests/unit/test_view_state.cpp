@@ -27,7 +27,10 @@ ViewerState loaded(RenderOptions o = {}, std::vector<double> times = {}, double 
     o.input = "builtin:sphere";
     o.size = {400, 300};
     ViewerState s(o);
-    s.dataLoaded(unitBox(), times, perFrame);
+    core::TimeMapping m;
+    if (!times.empty()) m = {o.timeRange ? o.timeRange->first : times.front(),
+                             o.timeRange ? o.timeRange->second : times.back(), perFrame};
+    s.dataLoaded(unitBox(), times, m);
     return s;
 }
 
@@ -149,7 +152,7 @@ TEST(ViewState, PanZoomAndViewKeys) {
 TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     ViewerState s = loaded();
     s.handle({0, EventType::Key, "m"});
-    EXPECT_EQ(s.options.method, "ibfvs");
+    EXPECT_EQ(s.options.method, methods::Method::Ibfvs);
     EXPECT_TRUE(s.takeRequests().rebuild);
     s.handle({0, EventType::Set, "alpha", "0.2"});
     EXPECT_FLOAT_EQ(s.options.params.common.alpha, 0.2f);
@@ -157,9 +160,18 @@ TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     s.handle({0, EventType::Set, "field", "wallShearStress"});
     Requests r = s.takeRequests();
     EXPECT_TRUE(r.reload);
+    // OpenFOAM's patches and case kind are read with the input: set after the first load
+    // they read it again (they were once silently ignored).
+    s.handle({0, EventType::Set, "patches", "wall.*"});
+    EXPECT_TRUE(s.takeRequests().reload);
+    s.handle({0, EventType::Set, "foam-case", "decomposed"});
+    EXPECT_TRUE(s.takeRequests().reload);
     s.handle({0, EventType::Set, "fov", "45"});
     r = s.takeRequests();
     EXPECT_FALSE(r.rebuild || r.reload);  // a camera change needs no new renderers
+    s.handle({0, EventType::Set, "fps", "60"});
+    r = s.takeRequests();
+    EXPECT_FALSE(r.rebuild || r.reload);  // an output setting needs nothing
     s.handle({0, EventType::Set, "alpha", "7"});
     EXPECT_NE(s.error.find("--alpha"), std::string::npos) << s.error;
     EXPECT_FLOAT_EQ(s.options.params.common.alpha, 0.2f);  // unchanged

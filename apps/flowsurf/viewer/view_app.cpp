@@ -6,8 +6,8 @@
 #include "view_app.h"
 
 #include "session/camera_path_file.h"
-#include "session/config_file.h"
-#include "session/json_file.h"
+#include "session/options/config_file.h"
+#include "session/options/json_file.h"
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
@@ -35,14 +35,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::vector<std::string> splitList(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream ss(list);
-    for (std::string m; std::getline(ss, m, ',');)
-        if (!m.empty()) out.push_back(m);
-    return out;
-}
-
 // Appends the camera as a keyframe to a --camera-path file (created if missing).
 void appendKeyframe(const std::string& path, const core::Camera& c, uint32_t frame) {
     nlohmann::ordered_json doc = {{"keyframes", nlohmann::json::array()}};
@@ -66,10 +58,10 @@ void appendKeyframe(const std::string& path, const core::Camera& c, uint32_t fra
 class Session {
 public:
     Session(const RenderOptions& o, const ViewOptions& v) : view_(v), state_(o) {
-        state_.compare = splitList(v.compare);
-        for (const auto& m : state_.compare)
-            if (m != "isa" && m != "ibfvs" && m != "hybrid")
-                throw ConfigError("--compare: '" + m + "' is not one of isa, ibfvs, hybrid");
+        if (!v.compare.empty()) {
+            state_.set("compare", v.compare);  // throws ConfigError naming a method it does not know
+            state_.takeRequests();             // the first build comes with the data
+        }
         if (!v.play.empty()) replay_ = readEventLog(v.play);
         if (v.headless && v.play.empty()) throw ConfigError("view --headless needs --play FILE (an event log)");
         const int n = int(state_.shownMethods().size());
@@ -141,31 +133,43 @@ private:
 
     // Reads `o`'s input; the state takes it only on success.
     void loadData(const RenderOptions& o) {
-        pipeline_.load(o);
+        RenderOptions sized = o;
+        sized.size = state_.viewSize();
+        pipeline_.load(sized, state_.shownMethods());
         loaded_ = o;
         state_.options = o;  // a newly opened file comes with its own camera and time
-        state_.dataLoaded(pipeline_.bounds(), pipeline_.times(), pipeline_.defaultPerFrame());
-        build();
+        state_.dataLoaded(pipeline_.bounds(), pipeline_.times(), pipeline_.mapping());
+        seenTimes_ = pipeline_.times();
+        seenMapping_ = pipeline_.mapping();
+        warmUp();
         if (window_) window_->setTitle("flowsurf view — " + o.input);
     }
 
-    // New renderers; ISA and IBFVS then advect --warmup frames (default 3/alpha) out of
-    // sight, so the first frame shown looks converged, as a batch movie's does.
+    // New renderers for the state's options, methods and view size.
     void build() {
-        pipeline_.build(state_.options, state_.shownMethods(), state_.viewSize());
+        RenderOptions o = state_.options;
+        o.size = state_.viewSize();
+        pipeline_.build(o, state_.shownMethods());
+        // Time options (--time, --time-per-frame, --time-step) change the time range.
+        const core::TimeMapping& m = pipeline_.mapping();
+        if (pipeline_.times() != seenTimes_ || m.start != seenMapping_.start || m.end != seenMapping_.end ||
+            m.perFrame != seenMapping_.perFrame) {
+            state_.setTimes(pipeline_.times(), m);
+            seenTimes_ = pipeline_.times();
+            seenMapping_ = m;
+        }
+        warmUp();
+    }
+
+    // ISA and IBFVS advect the warm-up frames (--warmup, default 3/alpha) out of sight, so
+    // the first frame shown looks converged, as a batch movie's does (session/playback.h).
+    void warmUp() {
         state_.restartClock();
         mustRender_ = true;
-        int warmup = 0;
-        for (const std::string& m : state_.shownMethods()) {
-            RenderOptions o = state_.options;
-            o.method = m;
-            warmup = std::max(warmup, warmupFrames(o));
-        }
-        const core::Camera camera = state_.camera();
-        for (int k = 0; k < warmup; ++k)
-            pipeline_.render(camera, uint32_t(k), state_.time, state_.timePerFrame);
-        state_.advanceClock(uint32_t(warmup));
-        warmedUp_ = uint32_t(warmup);
+        session::Playback& playback = pipeline_.playback();
+        playback.warmUp({state_.camera(), state_.time, state_.timePerFrame});
+        state_.advanceClock(playback.clock());
+        warmedUp_ = playback.clock();
     }
 
     void applyRequests(const Requests& req) {
@@ -192,14 +196,9 @@ private:
                 loadData(state_.options);
             }
         } catch (const std::exception& e) {
-            // Keep the data that was loaded: restore the options that describe it.
-            state_.options.input = loaded_.input;
-            state_.options.field = loaded_.field;
-            state_.options.timeRange = loaded_.timeRange;
-            state_.options.timeStep = loaded_.timeStep;
-            state_.options.timeStepGiven = loaded_.timeStepGiven;
-            state_.options.timePerFrame = loaded_.timePerFrame;
-            state_.options.framesPerStep = loaded_.framesPerStep;
+            // Keep the data that was loaded: restore the options it was read with.
+            for (const OptionSpec& spec : renderOptionTable())
+                if (spec.effect == OptionEffect::Reload) spec.set(state_.options, spec.get(loaded_));
             report(e.what());
         }
         const bool sizeChanged = pipeline_.ready() && (pipeline_.viewSize().width != state_.viewSize().width ||
@@ -242,7 +241,7 @@ private:
         const bool changed = mustRender_ || !core::sameCamera(camera, lastCamera_) || state_.time != lastTime_;
         if (!state_.advancing() && !changed) return false;
         try {
-            pipeline_.render(camera, state_.clock(), state_.time, state_.timePerFrame);
+            pipeline_.render({camera, state_.time, state_.timePerFrame}, state_.advancing());
         } catch (const std::exception& e) {
             report(e.what());
             state_.paused = true;  // a corrupt step: stop where it is rather than repeat the error
@@ -303,7 +302,7 @@ private:
                 io::writePngGray16(e.value, v.width, v.height, gl::readGray16TopDown(pipeline_.method(0).flowTexture()));
                 break;
             }
-            case EventType::SaveConfig: writeConfigFile(e.value, state_.batchOptions()); break;
+            case EventType::SaveConfig: io::writeTextFile(e.value, configJson(state_.batchOptions())); break;
             // Keyframes count the frames shown (a movie's warm-up comes before its frame 0).
             case EventType::SaveKeyframe: appendKeyframe(e.value, state_.camera(), state_.clock() - warmedUp_); break;
             default: return;
@@ -351,6 +350,8 @@ private:
     bool mustRender_ = true;
     bool lastRendered_ = true;
     uint32_t warmedUp_ = 0;  // warm-up frames on the clock since the last build
+    std::vector<double> seenTimes_;  // the steps' times and mapping the state was given
+    core::TimeMapping seenMapping_;
     int timerFrames_ = 0;
     std::unique_ptr<io::VideoWriter> recorder_;
     std::vector<double> frameMs_;

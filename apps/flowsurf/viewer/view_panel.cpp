@@ -119,14 +119,16 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
                 state.clock(), state.paused ? ", paused" : "");
 
     // Method.
-    for (auto m : methods::kMethodNames) {
-        if (m != methods::kMethodNames.front()) ImGui::SameLine();
-        if (ImGui::RadioButton(upper(std::string(m)).c_str(), state.compare.empty() && state.options.method == m))
-            emitSet("method", std::string(m)), emitSet("compare", "off");
+    std::string all;
+    for (const auto& [m, name] : methods::kMethodNames) {
+        if (!all.empty()) ImGui::SameLine();
+        all += (all.empty() ? "" : ",") + std::string(name);
+        if (ImGui::RadioButton(upper(std::string(name)).c_str(), state.compare.empty() && state.options.method == m))
+            emitSet("method", std::string(name)), emitSet("compare", "off");
     }
     bool side = !state.compare.empty();
     ImGui::SameLine();
-    if (ImGui::Checkbox("side by side", &side)) emitSet("compare", side ? "isa,ibfvs,hybrid" : "off");
+    if (ImGui::Checkbox("side by side", &side)) emitSet("compare", side ? all : "off");
     bool paused = state.paused;
     if (ImGui::Checkbox("paused", &paused)) emitSet("paused", paused ? "true" : "false");
     ImGui::SameLine();

@@ -1,8 +1,7 @@
 #include "view_pipeline.h"
+#include "io/series_reader.h"
 
 #include "core/errors.h"
-#include "methods/make_renderer.h"
-#include "gl/readback.h"
 #include "session/scene_setup.h"
 
 #include <epoxy/gl.h>
@@ -38,86 +37,59 @@ private:
 
 }  // namespace
 
-void ViewPipeline::load(const RenderOptions& o) {
-    std::unique_ptr<core::StepProvider> steps = openInput(o);
+void ViewPipeline::load(const RenderOptions& o, const std::vector<methods::Method>& views) {
+    std::unique_ptr<core::StepProvider> steps = io::openInput(o.input, session::sourceOptions(o));
     if (steps->count() == 1) steps = std::make_unique<CachedStep>(std::move(steps));
-    auto options = std::make_unique<RenderOptions>(o);
-    // The surface checks the field and loads the first step: errors surface here.
-    auto surface = std::make_unique<AnimatedSurface>(*options, *steps);
     const core::Bounds bounds = steps->bounds();
     const core::SurfaceMesh first = steps->load(o.timeStepGiven ? o.timeStep : 0);
     std::vector<std::string> fields;
     for (const auto& f : first.fields) fields.push_back(f.name);
-
-    methods_.clear();
-    names_.clear();
-    surface_.reset();
+    // The playback checks the field and loads the first step: errors surface here, and
+    // the old data and its playback stay.
+    auto playback = std::make_unique<session::Playback>(o, *steps, views);
+    playback->setStageTiming(true);
+    playback_ = std::move(playback);
     steps_ = std::move(steps);
-    options_ = std::move(options);
-    surface_ = std::move(surface);
+    lastViews_ = views;
     bounds_ = bounds;
-    times_ = surface_->times();
-    perFrame_ = surface_->unsteady() ? surface_->mapping().perFrame : 0.0;
     fields_ = std::move(fields);
-    field_ = surface_->field();
     input_ = o.input;
     triangles_ = first.triangles.size();
+    framebuffers();
 }
 
-void ViewPipeline::build(const RenderOptions& o, const std::vector<std::string>& methodNames,
-                         const core::Viewport& size) {
-    if (!steps_) throw ConfigError("no data loaded");
-    auto options = std::make_unique<RenderOptions>(o);
-    options->size = size;
-    // One surface streams from the provider at a time (its prefetch thread reads it).
-    surface_.reset();
-    std::vector<std::unique_ptr<methods::FlowMethod>> made;
+void ViewPipeline::build(const RenderOptions& o, const std::vector<methods::Method>& views) {
+    if (!playback_) throw ConfigError("no data loaded");
+    playback_->setViews(views);
     try {
-        surface_ = std::make_unique<AnimatedSurface>(*options, *steps_);
-        for (const std::string& name : methodNames) {
-            made.push_back(methods::makeMethod(name, surface_->paramsFor(options->params), size));
-            made.back()->timer().setEnabled(true);
-        }
+        playback_->setOptions(o);
+        playback_->rebuild();
     } catch (...) {
-        surface_.reset();
-        if (options_) surface_ = std::make_unique<AnimatedSurface>(*options_, *steps_);
+        playback_->setViews(lastViews_);
+        framebuffers();
         throw;
     }
-    options_ = std::move(options);
-    methods_ = std::move(made);
+    lastViews_ = views;
+    framebuffers();
+}
+
+void ViewPipeline::framebuffers() {
     readFbos_.clear();
-    for (const auto& m : methods_) {
+    for (size_t i = 0; playback_ && i < playback_->viewCount(); ++i) {
         readFbos_.push_back(gl::Framebuffer::create());
-        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, m->composite());
+        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, playback_->view(i).composite());
         glNamedFramebufferReadBuffer(readFbos_.back().id(), GL_COLOR_ATTACHMENT0);
     }
-    names_ = methodNames;
-    size_ = size;
-    field_ = surface_->field();
 }
 
-void ViewPipeline::render(const core::Camera& camera, uint32_t clock, double time, double perFrame) {
-    if (!surface_) return;
-    const methods::SurfaceGpu& s = surface_->atTime(time);
-    triangles_ = s.triangleCount();
-    for (auto& m : methods_) {
-        const methods::TimeLevels* levels = m->usesTimeLevels() ? surface_->levelsAtTime(time, perFrame) : nullptr;
-        m->renderFrame({&s, camera, clock, levels});
-    }
+std::string ViewPipeline::methodName(size_t i) const {
+    return std::string(methods::nameOf(methods::kMethodNames, playback_->viewMethod(i)));
 }
 
-std::vector<uint8_t> ViewPipeline::readImage(int* width, int* height) {
-    const int n = int(methods_.size());
-    *width = n * size_.width;
-    *height = size_.height;
-    std::vector<uint8_t> out(size_t(*width) * size_t(*height) * 3);
-    for (int i = 0; i < n; ++i) {
-        std::vector<uint8_t> img = gl::readRgb8TopDown(methods_[size_t(i)]->composite());
-        for (int y = 0; y < size_.height; ++y)
-            std::copy_n(&img[size_t(y) * size_.width * 3], size_t(size_.width) * 3,
-                        &out[(size_t(y) * size_t(*width) + size_t(i) * size_.width) * 3]);
-    }
-    return out;
+void ViewPipeline::render(const session::Playback::LiveFrame& f, bool advance) {
+    if (!playback_) return;
+    playback_->render(f, advance);
+    triangles_ = playback_->surface().atTime(f.time).triangleCount();
 }
 
 }  // namespace flowsurf::app::view

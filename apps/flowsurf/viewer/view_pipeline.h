@@ -1,14 +1,11 @@
-// flowsurf view — the GL side of the viewer: the data, the surface of the current data
-// time and one renderer per view, built from the same library calls as `render`
-// (openInput, AnimatedSurface, methods::makeMethod). Needs a current GL 4.5 context:
-// a GLFW window's or a headless EGL one.
+// flowsurf view — the GL side of the viewer: the data and session::Playback, the frame
+// loop `render` and the library run, with one method per view. Needs a current GL 4.5
+// context: a GLFW window's or a headless EGL one.
 #pragma once
 
-#include "session/animated_surface.h"
-#include "core/time_series.h"
-#include "methods/common/frame.h"
 #include "cli_options.h"
-#include "methods/make_renderer.h"
+#include "core/time_series.h"
+#include "session/playback.h"
 
 #include <memory>
 #include <string>
@@ -18,48 +15,46 @@ namespace flowsurf::app::view {
 
 class ViewPipeline {
 public:
-    // Opens the input of `o` and checks its field; on failure throws and keeps what was
-    // loaded before.
-    void load(const RenderOptions& o);
-    // A new surface and one renderer per method at `size` (the clock restarts). Throws;
-    // on failure the previous renderers stay.
-    void build(const RenderOptions& o, const std::vector<std::string>& methodNames, const core::Viewport& size);
-    bool ready() const { return !methods_.empty(); }
-    // Runs every renderer's stage list for one frame.
-    void render(const core::Camera& camera, uint32_t clock, double time, double perFrame);
+    // Opens the input of `o` and makes the playback of `views` at o.size; on failure
+    // throws and keeps what was loaded before, textures included.
+    void load(const RenderOptions& o, const std::vector<methods::Method>& views);
+    // The options and views of the state: what the option table's effects ask for, and
+    // always new renderers (the clock restarts). Throws; on failure the previous stay.
+    void build(const RenderOptions& o, const std::vector<methods::Method>& views);
+    bool ready() const { return playback_ != nullptr; }
+    session::Playback& playback() { return *playback_; }
 
-    size_t viewCount() const { return methods_.size(); }
-    methods::FlowMethod& method(size_t i) { return *methods_[i]; }
+    size_t viewCount() const { return playback_ ? playback_->viewCount() : 0; }
+    methods::FlowMethod& method(size_t i) { return playback_->view(i); }
     // A read framebuffer on view i's composite (made once per build), for the window blit.
     GLuint compositeReadFbo(size_t i) const { return readFbos_[i].id(); }
-    const std::string& methodName(size_t i) const { return names_[i]; }
-    core::Viewport viewSize() const { return size_; }
+    std::string methodName(size_t i) const;
+    core::Viewport viewSize() const { return playback_ ? playback_->options().size : core::Viewport{}; }
 
     // About the data, for the panel and the state.
     const core::Bounds& bounds() const { return bounds_; }
-    const std::vector<double>& times() const { return times_; }
-    double defaultPerFrame() const { return perFrame_; }
+    const std::vector<double>& times() const { return playback_->surface().times(); }
+    const core::TimeMapping& mapping() const { return playback_->surface().mapping(); }
     const std::vector<std::string>& vectorFields() const { return fields_; }
-    const std::string& field() const { return field_; }
+    const std::string& field() const { return playback_->surface().field(); }
     size_t triangles() const { return triangles_; }
     const std::string& input() const { return input_; }
 
+    // Every view's stage list for one frame (see session::Playback::render).
+    void render(const session::Playback::LiveFrame& f, bool advance);
     // The views side by side as one RGB8 image, rows top to bottom (screenshots, video).
-    std::vector<uint8_t> readImage(int* width, int* height);
+    std::vector<uint8_t> readImage(int* width, int* height) const { return playback_->readImage(width, height); }
 
 private:
-    std::unique_ptr<RenderOptions> options_;  // AnimatedSurface keeps a reference to it
+    void framebuffers();
+
     std::unique_ptr<core::StepProvider> steps_;
-    std::unique_ptr<AnimatedSurface> surface_;
-    std::vector<std::unique_ptr<methods::FlowMethod>> methods_;
-    std::vector<std::string> names_;
+    std::unique_ptr<session::Playback> playback_;
+    std::vector<methods::Method> lastViews_;  // of the last load or build that worked
     std::vector<gl::Framebuffer> readFbos_;
-    core::Viewport size_;
     core::Bounds bounds_;
-    std::vector<double> times_;
-    double perFrame_ = 0.0;
     std::vector<std::string> fields_;
-    std::string field_, input_;
+    std::string input_;
     size_t triangles_ = 0;
 };
 

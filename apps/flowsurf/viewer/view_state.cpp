@@ -12,6 +12,7 @@
 namespace flowsurf::app::view {
 
 const std::vector<KeyBinding>& keyTable() {
+    static const std::string nextMethod = "next method (" + methods::nameList(methods::kMethodNames) + ")";
     static const std::vector<KeyBinding> keys = {
         {"r", "reset the view (fit the bounds)"},
         {"x", "view along +x (X: along -x)"},
@@ -19,7 +20,7 @@ const std::vector<KeyBinding>& keyTable() {
         {"z", "view along +z (Z: along -z)"},
         {"space", "pause / resume the animation"},
         {"n", "single step (one frame while paused)"},
-        {"m", "next method (isa, ibfvs, hybrid)"},
+        {"m", nextMethod.c_str()},
         {"c", "side by side: all three methods / one"},
         {"t", "rotation: turntable / trackball"},
         {"left", "previous time step (series)"},
@@ -36,18 +37,6 @@ const std::vector<KeyBinding>& keyTable() {
 }
 
 namespace {
-
-bool isDataOption(const std::string& n) {
-    return n == "input" || n == "field" || n == "time-step" || n == "time" || n == "time-per-frame" ||
-           n == "frames-per-step";
-}
-bool isCameraOption(const std::string& n) {
-    return n == "eye" || n == "target" || n == "up" || n == "fov" || n == "ortho" || n == "orbit" || n == "camera-path";
-}
-bool isOutputOnly(const std::string& n) {
-    return n == "output" || n == "flow-texture" || n == "fps" || n == "crf" || n == "quiet" || n == "verbose" ||
-           n == "frames";
-}
 
 bool parseBool(const std::string& name, const std::string& v) {
     if (v == "true" || v == "on" || v == "1") return true;
@@ -69,8 +58,8 @@ void ViewerState::setWindowSize(int width, int height) {
     window_ = {std::max(width, 16), std::max(height, 16)};
 }
 
-std::vector<std::string> ViewerState::shownMethods() const {
-    return compare.empty() ? std::vector<std::string>{options.method} : compare;
+std::vector<methods::Method> ViewerState::shownMethods() const {
+    return compare.empty() ? std::vector<methods::Method>{options.method} : compare;
 }
 
 core::Viewport ViewerState::viewSize() const {
@@ -78,7 +67,8 @@ core::Viewport ViewerState::viewSize() const {
     return {std::max(16, window_.width / n), window_.height};
 }
 
-void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<double>& times, double perFrame) {
+void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<double>& times,
+                             const core::TimeMapping& mapping) {
     bounds_ = bounds;
     haveData_ = true;
     if (options.orbit == 0.0f && options.cameraPath.empty()) {
@@ -86,12 +76,15 @@ void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<doubl
         fit.size = viewSize();
         setCamera(makeCamera(fit, bounds_));
     }
+    setTimes(times, mapping);
+}
+
+void ViewerState::setTimes(const std::vector<double>& times, const core::TimeMapping& mapping) {
     stepTimes = times;
     if (!times.empty()) {
-        RenderOptions m = options;
-        timeStart = m.timeRange ? m.timeRange->first : times.front();
-        timeEnd = m.timeRange ? m.timeRange->second : times.back();
-        timePerFrame = perFrame;
+        timeStart = mapping.start;
+        timeEnd = mapping.end;
+        timePerFrame = mapping.perFrame;
         time = timeStart;
     }
 }
@@ -260,12 +253,13 @@ void ViewerState::key(const std::string& k) {
     else if (k == "n") { paused = true; stepOnce = true; }
     else if (k == "m") {
         const auto& names = methods::kMethodNames;
-        auto it = std::find(names.begin(), names.end(), options.method);
-        options.method = std::string(it == names.end() || it + 1 == names.end() ? names.front() : *(it + 1));
+        auto it = std::find_if(names.begin(), names.end(), [this](const auto& n) { return n.first == options.method; });
+        options.method = it == names.end() || it + 1 == names.end() ? names.front().first : (it + 1)->first;
         compare.clear();
         requests_.rebuild = true;
     } else if (k == "c") {
-        if (compare.empty()) compare.assign(methods::kMethodNames.begin(), methods::kMethodNames.end());
+        if (compare.empty())
+            for (const auto& [m, name] : methods::kMethodNames) compare.push_back(m);
         else compare.clear();
         requests_.rebuild = true;
     } else if (k == "t") rotateMode = rotateMode == RotateMode::Turntable ? RotateMode::Trackball : RotateMode::Turntable;
@@ -296,10 +290,11 @@ void ViewerState::set(const std::string& name, const std::string& value) {
         if (value != "off" && value != "none" && !value.empty()) {
             std::stringstream ss(value);
             for (std::string m; std::getline(ss, m, ',');) {
-                if (std::find(methods::kMethodNames.begin(), methods::kMethodNames.end(), m) ==
-                    methods::kMethodNames.end())
-                    throw ConfigError("compare: '" + m + "' is not one of isa, ibfvs, hybrid");
-                compare.push_back(m);
+                compare.emplace_back();
+                if (!methods::valueOf(methods::kMethodNames, m, &compare.back())) {
+                    compare.pop_back();
+                    throw ConfigError("compare: '" + m + "' is not one of " + methods::nameList(methods::kMethodNames));
+                }
             }
         }
         requests_.rebuild = true;
@@ -324,7 +319,8 @@ void ViewerState::set(const std::string& name, const std::string& value) {
         timePerFrame = parseFloat(value, "speed");
         return;
     }
-    if (isCameraOption(name)) takeOverCamera();
+    const OptionEffect effect = effectOf(name);  // throws ConfigError for an unknown name
+    if (effect == OptionEffect::Camera) takeOverCamera();
     RenderOptions changed = options;
     setOption(changed, name, value);  // throws ConfigError naming the option
     if (name == "size") {
@@ -333,8 +329,8 @@ void ViewerState::set(const std::string& name, const std::string& value) {
     }
     options = changed;
     if (name == "up" && options.up) turntableUp_ = glm::normalize(*options.up);
-    if (isDataOption(name)) requests_.reload = true;
-    else if (!isCameraOption(name) && !isOutputOnly(name)) requests_.rebuild = true;
+    if (effect == OptionEffect::Reload) requests_.reload = true;
+    if (effect == OptionEffect::Rebuild) requests_.rebuild = true;
 }
 
 void ViewerState::handle(const Event& e) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/time_series.h"
 #include "cli_options.h"
 #include "view_events.h"
 
@@ -49,7 +50,7 @@ public:
 
     // The options as they stand: method, parameters, camera (explicit once data is loaded).
     RenderOptions options;
-    std::vector<std::string> compare;  // methods side by side; empty: options.method alone
+    std::vector<methods::Method> compare;  // methods side by side; empty: options.method alone
     RotateMode rotateMode = RotateMode::Turntable;
     bool paused = false;               // no advection frames (the view still follows the camera)
     bool stepOnce = false;             // advance one frame while paused
@@ -62,14 +63,17 @@ public:
     std::vector<double> stepTimes;     // of the loaded series; empty for steady data
 
     // After data is loaded: frames the camera (makeCamera of the options, unless a camera
-    // path or orbit drives it), sets the time range. `size` is one view's pixel size.
-    void dataLoaded(const core::Bounds& bounds, const std::vector<double>& times, double perFrame);
+    // path or orbit drives it), sets the time range (setTimes).
+    void dataLoaded(const core::Bounds& bounds, const std::vector<double>& times, const core::TimeMapping& mapping);
+    // The steps' times and the options' frame -> time mapping (after a load, or a rebuild
+    // that changed them): time playback starts over at the mapping's start.
+    void setTimes(const std::vector<double>& times, const core::TimeMapping& mapping);
     // Window pixel size of the whole render area (split into views side by side).
     void setWindowSize(int width, int height);
     core::Viewport windowSize() const { return window_; }
     // One view's size and the methods shown, left to right.
     core::Viewport viewSize() const;
-    std::vector<std::string> shownMethods() const;
+    std::vector<methods::Method> shownMethods() const;
 
     // The camera for the current frame (orbit / camera path play until the user takes over).
     core::Camera camera() const;
@@ -86,7 +90,8 @@ public:
     // Applies one input event; errors (bad option values, unknown keys) land in `error`.
     void handle(const Event& e);
     Requests takeRequests();
-    // A render option by name, as from the panel or `set` (classifies what must happen).
+    // A render option by name, as from the panel or `set`: what must happen is the option
+    // table's effect (reload, rebuild, a camera that the user takes over, or nothing).
     void set(const std::string& name, const std::string& value);
 
     // The options that render this very view offline: `render --config` with --frames

@@ -144,7 +144,7 @@ struct MethodParams {
 };
 
 // The names of the enum values: one table per enum, used by the command line, config
-// files, the viewer and every other front end (apps/flowsurf/options.cpp).
+// files, the viewer and every other front end (src/session/options.cpp).
 template <typename E, size_t N>
 using EnumNames = std::array<std::pair<E, std::string_view>, N>;
 
@@ -180,7 +180,38 @@ inline constexpr EnumNames<NoiseInjectionMode, 2> kNoiseInjectionNames{{{NoiseIn
 inline constexpr EnumNames<GlPath, 3> kGlPathNames{{{GlPath::Auto, "auto"},
                                                      {GlPath::Compute, "compute"},
                                                      {GlPath::Fragment, "fragment"}}};
-// The methods, in the order the viewer cycles through them.
-inline constexpr std::array<std::string_view, 3> kMethodNames{"isa", "ibfvs", "hybrid"};
+// The methods: ISA and IBFVS [L], the hybrid physical/device-space LIC [W]; in the order
+// the viewer cycles through them.
+enum class Method { Isa, Ibfvs, Hybrid };
+inline constexpr EnumNames<Method, 3> kMethodNames{{{Method::Isa, "isa"},
+                                                    {Method::Ibfvs, "ibfvs"},
+                                                    {Method::Hybrid, "hybrid"}}};
+
+// The name of `value` in its table (empty if it has none).
+template <typename E, size_t N>
+constexpr std::string_view nameOf(const EnumNames<E, N>& names, E value) {
+    for (const auto& [v, text] : names)
+        if (v == value) return text;
+    return {};
+}
+
+// The value named `text`, or false.
+template <typename E, size_t N>
+constexpr bool valueOf(const EnumNames<E, N>& names, std::string_view text, E* value) {
+    for (const auto& [v, name] : names)
+        if (name == text) {
+            *value = v;
+            return true;
+        }
+    return false;
+}
+
+// "isa, ibfvs, hybrid": the names in table order, for help texts and error messages.
+template <typename E, size_t N>
+std::string nameList(const EnumNames<E, N>& names) {
+    std::string list;
+    for (const auto& [v, text] : names) list += (list.empty() ? "" : ", ") + std::string(text);
+    return list;
+}
 
 }  // namespace flowsurf::methods

@@ -1,9 +1,9 @@
 // flowsurf — writes the FlowSurf representation's server-manager XML (ParaView 5.11) to
 // stdout, one property per row of the option table that a ParaView user sets: the Method
-// and Overlay groups, named "FlowSurf" + the option in CamelCase (--filter-length ->
+// and Overlay groups and the warm-up, named "FlowSurf" + the option in CamelCase (--filter-length ->
 // FlowSurfFilterLength). colormap, lighting and background are ParaView's own (Coloring,
 // the light kit, the view's background) and are left out. Run at configure time.
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include <climits>
 #include <iostream>
@@ -38,7 +38,8 @@ std::string escape(const std::string& s) {
 }
 
 bool exposed(const OptionSpec& s) {
-    if (s.group != "Method" && s.group != "Overlay") return false;
+    // The method's options, and the warm-up that the mapper's frame loop runs.
+    if (s.group != "Method" && s.group != "Overlay" && s.name != "warmup") return false;
     return s.name != "colormap" && s.name != "lighting" && s.name != "background";
 }
 
@@ -95,27 +96,20 @@ void extension(const char* base, const std::string& names, std::ostream& o) {
 
 int main() {
     std::ostream& o = std::cout;
-    std::string names = "            <Property name=\"FlowSurfVectors\"/>\n"
-                        "            <Property name=\"FlowSurfWarmupFrames\"/>\n";
+    std::string names = "            <Property name=\"FlowSurfVectors\"/>\n";
     o << "<ServerManagerConfiguration>\n  <ProxyGroup name=\"representations\">\n"
       << "    <RepresentationProxy name=\"FlowSurfRepresentation\" class=\"vtkFlowSurfRepresentation\"\n"
       << "      processes=\"client|renderserver|dataserver\" base_proxygroup=\"representations\"\n"
       << "      base_proxyname=\"SurfaceRepresentation\">\n"
       << "      <Documentation>flowsurf's ISA, IBFVS and hybrid LIC over ParaView's surface colouring. Generated from "
-         "src/session/options.cpp by src/paraview/representation/generate_xml.cpp.</Documentation>\n"
+         "src/session/options/options.cpp by src/paraview/representation/generate_xml.cpp.</Documentation>\n"
       << "      <StringVectorProperty name=\"FlowSurfVectors\" command=\"SetFlowSurfVectors\" number_of_elements=\"5\"\n"
       << "        element_types=\"0 0 0 0 2\" label=\"FlowSurf Vectors\">\n"
       << "        <ArrayListDomain name=\"array_list\" attribute_type=\"Vectors\" input_domain_name=\"input_array_point_3\">\n"
       << "          <RequiredProperties><Property name=\"Input\" function=\"Input\"/></RequiredProperties>\n"
       << "        </ArrayListDomain>\n"
       << "        <Documentation>Point array of 3-component vectors to show (--field).</Documentation>\n"
-      << "      </StringVectorProperty>\n"
-      << "      <IntVectorProperty name=\"FlowSurfWarmupFrames\" command=\"SetFlowSurfWarmupFrames\"\n"
-      << "        number_of_elements=\"1\" default_values=\"90\">\n"
-      << "        <IntRangeDomain name=\"range\" min=\"0\" max=\"100000\"/>\n"
-      << "        <Documentation>Advection frames run on a still render (new data, options or view size), so "
-         "ISA and IBFVS show a converged texture (--frames).</Documentation>\n"
-      << "      </IntVectorProperty>\n";
+      << "      </StringVectorProperty>\n";
     for (const OptionSpec& s : flowsurf::session::renderOptionTable()) {
         if (!exposed(s)) continue;
         property(s, o);

@@ -1,6 +1,6 @@
 // Index: Internals (state) · options · render: (0) ParaView's surface pass, unless its look
-// is reproduced (host_look.h) (1) surface (2) method (3) advection frames (4) composite
-// into ParaView's framebuffer.
+// is reproduced (host_look.h) (1) surface (2) the frame loop (session::Playback) (3)
+// advection frames (4) composite into ParaView's framebuffer.
 #include "vtkFlowSurfMapper.h"
 
 #include "gl_state_guard.h"
@@ -10,10 +10,8 @@
 
 #include "core/errors.h"
 #include "gl/objects.h"
-#include "methods/common/frame.h"
-#include "methods/make_renderer.h"
-#include "methods/common/surface_gpu.h"
-#include "session/options.h"
+#include "session/options/options.h"
+#include "session/playback.h"
 
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
@@ -31,22 +29,34 @@
 
 namespace fs = flowsurf;
 
+namespace {
+
+// ParaView's piece of the surface as the one step session::Playback reads.
+class PieceSteps final : public fs::core::StepProvider
+{
+public:
+  fs::core::SurfaceMesh mesh;
+  size_t count() const override { return 1; }
+  double time(size_t) const override { return 0.0; }
+  fs::core::SurfaceMesh load(size_t) override { return mesh; }
+  std::string label(size_t) const override { return "FlowSurf input"; }
+  fs::core::Bounds bounds() override { return mesh.bounds(); }
+};
+
+}  // namespace
+
 struct vtkFlowSurfMapper::Internals
 {
   fs::session::RenderOptions options;
   std::string vectors;
-  int warmupFrames = 90;
   double viewTime = 0.0;
-  bool optionsChanged = true;
 
   vtkMTimeType dataTime = 0;
   std::string dataVectors;
-  std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by `mesh`
-  fs::core::SurfaceMesh mesh;
-  std::unique_ptr<fs::methods::SurfaceGpu> surface;
-  std::unique_ptr<fs::methods::FlowMethod> method;
-  fs::core::Viewport size{ 0, 0 };
-  uint32_t frame = 0;
+  std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by the steps
+  bool haveMesh = false;
+  PieceSteps steps;
+  std::unique_ptr<fs::session::Playback> playback;  // the frame loop of every front end
   std::optional<double> lastTime;
   fs::core::Camera lastCamera;
 
@@ -68,43 +78,39 @@ struct vtkFlowSurfMapper::Internals
 
   void releaseGl()
   {
-    surface.reset();
-    method.reset();
+    playback.reset();
     composite = {};
     compositeHost = {};
     emptyVao = {};
     hostTable = {};
   }
 
-  // The method's parameters: with the blend overlay F_s is ParaView's colouring, so the
-  // method's own colour map and lighting are off and its image is beta F_a + (1 - beta).
-  fs::methods::MethodParams methodParams() const
+  // The options the frame loop runs with: with the blend overlay F_s is ParaView's
+  // colouring, so the method's own colour map and lighting are off and its image is
+  // beta F_a + (1 - beta); the field is ParaView's array, the size its view's.
+  fs::session::RenderOptions playbackOptions(const fs::core::Viewport& size) const
   {
-    fs::methods::MethodParams p = options.params;
-    if (p.common.overlay == fs::methods::OverlayScheme::Blend)
+    fs::session::RenderOptions o = options;
+    fs::methods::CommonParams& p = o.params.common;
+    if (p.overlay == fs::methods::OverlayScheme::Blend)
     {
-      p.common.colormap = fs::methods::Colormap::None;
-      p.common.lighting = false;
+      p.colormap = fs::methods::Colormap::None;
+      p.lighting = false;
     }
     // The colour value the composite maps through ParaView's table (over the data's range).
     if (dataColor)
     {
-      p.common.colorBy = fs::paraview::kColorScalarName;
-      p.common.colorRange = { 1.0f, 0.0f };
-      p.common.colorRangeAuto = false;
+      p.colorBy = fs::paraview::kColorScalarName;
+      p.colorRange = { 1.0f, 0.0f };
+      p.colorRangeAuto = false;
     }
-    return p;
+    o.field = vectors;
+    o.size = size;
+    return o;
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
   void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
-
-  fs::methods::FrameInput frameInput(const fs::core::Camera& camera, uint32_t k) const
-  {
-    fs::methods::FrameInput in{ surface.get(), camera, k, nullptr };
-    in.group = group.get();
-    return in;
-  }
 };
 
 vtkStandardNewMacro(vtkFlowSurfMapper);
@@ -125,13 +131,6 @@ void vtkFlowSurfMapper::SetVectorsName(const std::string& name)
   }
 }
 
-void vtkFlowSurfMapper::SetWarmupFrames(int frames)
-{
-  this->Impl->warmupFrames = frames < 0 ? 0 : frames;
-  this->Impl->optionsChanged = true;
-  this->Modified();
-}
-
 std::string vtkFlowSurfMapper::SetOption(const std::string& name, const std::string& value)
 {
   try
@@ -146,7 +145,6 @@ std::string vtkFlowSurfMapper::SetOption(const std::string& name, const std::str
   {
     return e.what();
   }
-  this->Impl->optionsChanged = true;
   this->Modified();
   return {};
 }
@@ -255,12 +253,11 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     return;
   }
   const fs::core::Camera camera = cameraOf(ren->GetActiveCamera());
-  const bool hybrid = options.method == "hybrid";
 
   fs::paraview::GlStateGuard guard(win->GetState());
 
-  // (1) the surface, converted and uploaded when the data, the array or the options change;
-  // in parallel each process holds a piece and scales by the whole surface's statistics
+  // (1) the surface, converted when the data, the array or the colour array change; in
+  // parallel each process holds a piece and scales by the whole surface's statistics
   std::optional<fs::paraview::ColorSource> color;
   if (host && host->scalars)
   {
@@ -268,103 +265,88 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   }
   const bool colorChanged = color.has_value() != dataColor.has_value() ||
     (color && (color->array != dataColor->array || color->component != dataColor->component));
-  bool dataChanged = input ? (input->GetMTime() != dataTime || vectors != dataVectors || colorChanged)
-                           : mesh.positions.size() > 0;
+  bool dataChanged = input ? (input->GetMTime() != dataTime || vectors != dataVectors || colorChanged) : haveMesh;
   if (group)
   {
     dataChanged = group->any(dataChanged);
   }
-  bool rebuild = dataChanged || optionsChanged || !surface;
-  if (group)
+  if (dataChanged)
   {
-    rebuild = group->any(rebuild);
+    std::string error;
+    fs::core::SurfaceMesh mesh;
+    try
+    {
+      mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr) : fs::core::SurfaceMesh{};
+      if (mesh.fields.empty())
+      {
+        mesh.fields.push_back({ vectors, {} });  // an empty piece
+      }
+      if (color && mesh.scalars.empty())
+      {
+        mesh.scalars.push_back({ fs::paraview::kColorScalarName, {} });
+      }
+      if (mesh.triangleCount() > 0)
+      {
+        fs::core::validateMesh(mesh, "FlowSurf input");
+      }
+    }
+    catch (const std::exception& e)
+    {
+      error = e.what();
+    }
+    if (group && group->any(!error.empty()) && error.empty())
+    {
+      error = "FlowSurf: another process could not use its piece of the surface (see its message)";
+    }
+    if (!error.empty())
+    {
+      playback.reset();
+      haveMesh = false;
+      throw fs::FieldError(error);
+    }
+    steps.mesh = std::move(mesh);
+    haveMesh = input != nullptr;
+    dataTime = input ? input->GetMTime() : 0;
+    dataVectors = vectors;
+    dataColor = color;
   }
-  if (rebuild)
+  if (steps.mesh.triangleCount() == 0 && !group)
   {
-    if (dataChanged || mesh.positions.empty())
-    {
-      std::string error;
-      try
-      {
-        mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr)
-                     : fs::core::SurfaceMesh{};
-      }
-      catch (const std::exception& e)
-      {
-        error = e.what();
-      }
-      if (group && group->any(!error.empty()) && error.empty())
-      {
-        error = "FlowSurf: another process could not use its piece of the surface (see its message)";
-      }
-      if (!error.empty())
-      {
-        mesh = {};
-        surface.reset();
-        throw fs::FieldError(error);
-      }
-      dataTime = input ? input->GetMTime() : 0;
-      dataVectors = vectors;
-      dataColor = color;
-    }
-    surface.reset();
-    if (mesh.triangleCount() == 0 && !group)
-    {
-      return;
-    }
-    fs::core::SurfaceMesh checked = mesh;
-    if (checked.fields.empty())
-    {
-      checked.fields.push_back({ vectors, {} });  // an empty piece
-    }
-    if (dataColor && checked.scalars.empty())
-    {
-      checked.scalars.push_back({ fs::paraview::kColorScalarName, {} });
-    }
-    if (checked.triangleCount() > 0)
-    {
-      fs::core::validateMesh(checked, "FlowSurf input");
-    }
-    const fs::methods::CommonParams common = methodParams().common;
-    std::optional<fs::methods::SurfaceStatistics> whole;
-    if (group)
-    {
-      whole = fs::methods::wholeSurfaceStatistics(*group, checked, vectors, common);
-    }
-    surface = std::make_unique<fs::methods::SurfaceGpu>(
-      checked, vectors, common, options.params.ibfvs.edgeMask, whole ? &*whole : nullptr);
+    return;
   }
 
-  if (colorChanged && dataChanged)
+  // (2) the frame loop: new renderers when options, the colour array or the view size
+  // change (the table's effects), a new upload when only the data changed at a new view time
+  const bool timeChanged = lastTime && *lastTime != viewTime;
+  const fs::session::RenderOptions o = playbackOptions({ w, h });
+  bool warmup = false;
+  if (playback && dataChanged && timeChanged && playback->options().field == o.field)
   {
-    optionsChanged = true;  // the method's colour value changes with it
+    playback->stepsChanged();  // the texture goes on over the new time step
+    warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;  // rebuilt by warmUp()
   }
-  // (2) the method, made anew when options or the view size change
-  bool warmup = dataChanged && !(lastTime && *lastTime != viewTime);
-  if (optionsChanged || !method || w != size.width || h != size.height)
+  else if (!playback || dataChanged)
   {
-    size = { w, h };
-    method = fs::methods::makeMethod(options.method, methodParams(), size);
-    optionsChanged = false;
+    playback = std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, group.get());
     warmup = true;
   }
+  else
+  {
+    warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;
+  }
 
-  // (3) advection frames: a still render of something new converges; a new view time
-  // or camera advances one frame (with the camera-move remedy); otherwise the last image.
-  const bool timeChanged = lastTime && *lastTime != viewTime;
+  // (3) advection frames: a still render of something new converges (the warm-up, then
+  // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
+  // otherwise the last image. The clock is the command line's (session/playback.h).
   const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
   if (warmup)
   {
-    const uint32_t frames = hybrid ? 0u : uint32_t(warmupFrames);
-    for (uint32_t k = 0; k <= frames; ++k)
-    {
-      method->renderFrame(frameInput(camera, k));
-    }
-    frame = frames;
+    playback->warmUp({ camera });
+    playback->render({ camera });
   }
   else if (timeChanged || cameraChanged)
   {
-    method->renderFrame(frameInput(camera, ++frame));
+    playback->render({ camera });
   }
   lastTime = viewTime;
   lastCamera = camera;
@@ -407,8 +389,9 @@ void vtkFlowSurfMapper::Internals::drawComposite(
   program.use();
   glUniform2i(program.uniform("uOrigin"), x0, y0);
   glUniform1f(program.uniform("uDepthBias"), 2e-5f);
-  glBindTextureUnit(0, method->composite().id());
-  glBindTextureUnit(1, method->surfaceDepth().id());
+  const fs::methods::FlowMethod& method = playback->view(0);
+  glBindTextureUnit(0, method.composite().id());
+  glBindTextureUnit(1, method.surfaceDepth().id());
   if (host)
   {
     const fs::paraview::HostLook& look = *host;
@@ -425,11 +408,11 @@ void vtkFlowSurfMapper::Internals::drawComposite(
       }
     }
     glTextureSubImage2D(hostTable.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    glBindTextureUnit(2, method->surfaceShade().id());
+    glBindTextureUnit(2, method.surfaceShade().id());
     glBindTextureUnit(3, hostTable.id());
     glUniform1i(program.uniform("uMultiply"), blend);
     glUniform1i(program.uniform("uScalars"), look.scalars.has_value());
-    const glm::vec2 valueRange = surface ? surface->colorRange() : glm::vec2(0.0f, 1.0f);
+    const glm::vec2 valueRange = playback->surface().colorRange();
     glUniform2f(program.uniform("uValueRange"), valueRange.x, valueRange.y);
     glUniform2f(program.uniform("uTableRange"), look.range.x, look.range.y);
     glUniform3f(program.uniform("uSolid"), look.solid.x, look.solid.y, look.solid.z);

@@ -6,9 +6,10 @@
 //   blend overlay: ParaView's colour x (beta F_a + (1 - beta)), [L eq. 10] with F_s =
 //   ParaView's colouring; gray, gray-lit, hue-lit, coolwarm: the method's image [W Fig. 6].
 // VTK's cached GL state is saved around the passes and restored after them.
-// ISA/IBFVS advance one frame per render when the view time or the camera changed and
-// run FlowSurfWarmupFrames frames when the method, data or view size are new; the hybrid
-// computes each changed render afresh.
+// The frames run through session::Playback, the command line's frame loop: ISA/IBFVS
+// advance one frame per render when the view time or the camera changed, and run the
+// warm-up (FlowSurfWarmup, the table's --warmup: 3 / alpha frames by default, none for the
+// hybrid) when the method, options, data or view size are new.
 #ifndef vtkFlowSurfMapper_h
 #define vtkFlowSurfMapper_h
 
@@ -27,7 +28,6 @@ public:
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
   void SetVectorsName(const std::string& name);
-  void SetWarmupFrames(int frames);
   // Sets an option of the table by name; returns the error message, empty if none.
   std::string SetOption(const std::string& name, const std::string& value);
   void SetViewTime(double time);

@@ -55,12 +55,6 @@ void vtkFlowSurfRepresentation::SetFlowSurfVectors(int, int, int, int, const cha
   this->MarkModified();
 }
 
-void vtkFlowSurfRepresentation::SetFlowSurfWarmupFrames(int frames)
-{
-  this->FlowSurfMapper->SetWarmupFrames(frames);
-  this->MarkModified();
-}
-
 void vtkFlowSurfRepresentation::SetFlowSurfOptionText(const char* option, const char* value)
 {
   std::string error = this->FlowSurfMapper->SetOption(option ? option : "", value ? value : "");

@@ -23,8 +23,6 @@ public:
 
   // FlowSurfVectors: the point array shown (as ColorArrayName, five elements).
   void SetFlowSurfVectors(int, int, int, int attributeMode, const char* name);
-  // FlowSurfWarmupFrames: advection frames run on a still render.
-  void SetFlowSurfWarmupFrames(int frames);
   // One option of src/session/options.cpp by its command-line name ("filter-length").
   void SetFlowSurfOptionText(const char* option, const char* value);
   void SetFlowSurfOptionInt(const char* option, int value);

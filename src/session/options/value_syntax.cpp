@@ -1,6 +1,6 @@
 // flowsurf — the value syntaxes of the options: numbers, WxH, x,y,z, colours, output
 // kinds, and numbers as the shortest text that reads back exactly.
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include "core/errors.h"
 

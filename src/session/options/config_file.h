@@ -6,7 +6,7 @@
 // syntax they spell. Options on the command line override the file.
 #pragma once
 
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include <optional>
 #include <string>
@@ -18,8 +18,6 @@ namespace flowsurf::session {
 void applyConfigFile(const std::string& path, RenderOptions& o);
 // The whole saved state of `o` (every option with `saved` and a value) as JSON text.
 std::string configJson(const RenderOptions& o);
-// Writes configJson(o) to `path` (write-then-rename). Throws IoError.
-void writeConfigFile(const std::string& path, const RenderOptions& o);
 // The FILE of `--config FILE` or `--config=FILE` in a command line, if any.
 std::optional<std::string> findConfigArgument(int argc, const char* const* argv);
 

@@ -1,7 +1,7 @@
-#include "session/colormap_file.h"
+#include "session/options/colormap_file.h"
 
 #include "core/errors.h"
-#include "session/json_file.h"
+#include "session/options/json_file.h"
 
 #include <algorithm>
 

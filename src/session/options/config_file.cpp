@@ -1,8 +1,7 @@
-#include "session/config_file.h"
+#include "session/options/config_file.h"
 
 #include "core/errors.h"
-#include "io/text_writer.h"
-#include "session/json_file.h"
+#include "session/options/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -86,7 +85,6 @@ std::string configJson(const RenderOptions& o) {
     return doc.dump(2) + "\n";
 }
 
-void writeConfigFile(const std::string& path, const RenderOptions& o) { io::writeTextFile(path, configJson(o)); }
 
 std::optional<std::string> findConfigArgument(int argc, const char* const* argv) {
     std::optional<std::string> found;

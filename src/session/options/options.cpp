@@ -1,9 +1,9 @@
 // flowsurf — the option table: one row per option of render, compare and view (name,
 // group, help, kind, range, choices, set/get), built from small row builders.
-#include "session/options.h"
+#include "session/options/options.h"
 
 #include "core/errors.h"
-#include "session/colormap_file.h"
+#include "session/options/colormap_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -76,9 +76,7 @@ OptionSpec choice(std::string name, std::string group, std::string help, const m
                 ref(o) = value;
                 return;
             }
-        std::string list;
-        for (const auto& [value, text] : names) list += (list.empty() ? "" : ", ") + std::string(text);
-        throw ConfigError(dashed(n) + ": '" + t + "' is not one of " + list);
+        throw ConfigError(dashed(n) + ": '" + t + "' is not one of " + methods::nameList(names));
     };
     s.get = [&names, ref](const RenderOptions& o) {
         for (const auto& [value, text] : names)
@@ -190,19 +188,24 @@ std::string rangeText(glm::vec2 r, bool automatic) {
 
 std::vector<OptionSpec> buildTable() {
     std::vector<OptionSpec> t;
+    // Each group's effect; the rows that differ say so after their add().
     auto add = [&t](OptionSpec s, std::string shortName = "") {
         s.shortName = std::move(shortName);
+        s.effect = s.group == "Camera" ? OptionEffect::Camera : OptionEffect::Rebuild;
         t.push_back(std::move(s));
     };
+    auto effect = [&t](OptionEffect e) { t.back().effect = e; };
     add(text("input", "Data", "Surface file (.vtp .vtu .vtk .ply .obj .stl .foam .e .case .pvd), a file series "
                               "(surf_%04d.vtp, surf_*.vtp) or builtin:NAME", FS_REF(input), OptionKind::Path));
+    effect(OptionEffect::Reload);
 
     // Output
     const std::string gOut = "Output";
     add(text("output", gOut, "FILE.png (final composite), FILE.mp4 (all frames) or frame_%04d.png", FS_REF(output),
              OptionKind::Path), "o");
+    effect(OptionEffect::Output);
     {
-        OptionSpec s{"size", "", gOut, "Image size WxH in pixels, 16..8192 per side", OptionKind::Size, 16, 8192, {},
+        OptionSpec s{"size", "", gOut, "Image size WxH in pixels", OptionKind::Size, 16, 8192, {},
                      true, nullptr, nullptr};
         s.set = [](RenderOptions& o, const std::string& v) { o.size = parseSize(v); };
         s.get = [](const RenderOptions& o) { return std::to_string(o.size.width) + "x" + std::to_string(o.size.height); };
@@ -211,27 +214,35 @@ std::vector<OptionSpec> buildTable() {
     add(number("frames", gOut, "Advection frames before the output frame", &RenderOptions::frames, 0, 100000));
     add(text("flow-texture", gOut, "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture),
              OptionKind::Path));
+    effect(OptionEffect::Output);
     t.back().saved = false;
     add(number("warmup", gOut, "Frames advected before the first written frame of an MP4 or PNG sequence and the "
                "viewer's start (-1: enough to look converged, 3/alpha for ISA and IBFVS, 0 for the hybrid)",
                &RenderOptions::warmup, -1, 100000));
     add(number("fps", gOut, "MP4 frame rate", &RenderOptions::fps, 1, 240));
+    effect(OptionEffect::Output);
     add(number("crf", gOut, "MP4 H.264 quality, 0 = lossless", &RenderOptions::crf, 0, 51));
+    effect(OptionEffect::Output);
     add(flag("quiet", gOut, "No progress bar or messages", FS_REF(quiet), false), "q");
+    effect(OptionEffect::None);
     add(flag("verbose", gOut, "Log the OpenGL renderer and timings", FS_REF(verbose), false), "v");
+    effect(OptionEffect::None);
 
     // Data
     const std::string gData = "Data";
     add(text("field", gData, "Vector array to show (default: the first 3-component point array that is not zero "
                              "everywhere in the series), or a derived field: curvature-max, curvature-min, "
                              "gradient:ARRAY, down:x,y,z", FS_REF(field)));
+    effect(OptionEffect::Reload);
     add(number("curvature-radius", gData, "Derived curvature fields: average the curvature tensor over this "
                "radius (object units; 0: one-ring estimate only)", &RenderOptions::curvatureRadius, 0, 1e30));
     add(text("patches", gData, "OpenFOAM: read the boundary patches whose names match this regular expression "
                                "(default: all)", FS_REF(patches)));
+    effect(OptionEffect::Reload);
     add(textChoice("foam-case", gData, "OpenFOAM: read the reconstructed case or the processor* directories "
                    "of a decomposed one (auto: the decomposed one when it has more time directories or the case "
                    "folder has no mesh)", {"auto", "reconstructed", "decomposed"}, FS_REF(foamCase)));
+    effect(OptionEffect::Reload);
     {
         OptionSpec s{"time-step", "", gData, "Render only this time step (index), as steady data", OptionKind::Int, 0,
                      1e9, {}, true, nullptr, nullptr};
@@ -280,17 +291,7 @@ std::vector<OptionSpec> buildTable() {
 
     // Method
     const std::string gMethod = "Method";
-    {
-        OptionSpec s{"method", "", gMethod, "Visualization method", OptionKind::Choice, 0, 0, {}, true, nullptr, nullptr};
-        for (auto m : methods::kMethodNames) s.choices.emplace_back(m);
-        s.set = [](RenderOptions& o, const std::string& v) {
-            for (auto m : methods::kMethodNames)
-                if (v == m) { o.method = v; return; }
-            throw ConfigError("--method: '" + v + "' is not one of isa, ibfvs, hybrid");
-        };
-        s.get = [](const RenderOptions& o) { return o.method; };
-        add(s, "m");
-    }
+    add(choice("method", gMethod, "Visualization method", methods::kMethodNames, FS_REF(method)), "m");
     add(param<float>("alpha", gMethod, "Noise blend alpha [L eq. 9] (papers: 0.1-0.2)", FS_REF(params.common.alpha), 0, 1));
     add(param<float>("beta", gMethod, "Texture strength beta [L eq. 10]", FS_REF(params.common.beta), 0, 1));
     add(param<float>("step-px", gMethod, "ISA/IBFVS: largest displacement per frame in pixels (dt)",
@@ -327,13 +328,14 @@ std::vector<OptionSpec> buildTable() {
     add(choice("integrator", gMethod, "Hybrid particle integrator (euler as in [W])", methods::kIntegratorNames,
                FS_REF(params.hybrid.integrator)));
     {
-        OptionSpec s = param<int>("noise-size", gMethod, "Hybrid solid noise texels per side (64 or 128)",
+        OptionSpec s = param<int>("noise-size", gMethod, "Hybrid solid noise texels per side",
                                   FS_REF(params.hybrid.noiseSize), 64, 128);
         s.kind = OptionKind::Choice;
         s.choices = {"64", "128"};
         auto inner = s.set;
-        s.set = [inner](RenderOptions& o, const std::string& v) {
-            if (v != "64" && v != "128") throw ConfigError("--noise-size: '" + v + "' is not one of 64, 128");
+        s.set = [inner, choices = s.choices](RenderOptions& o, const std::string& v) {
+            if (std::find(choices.begin(), choices.end(), v) == choices.end())
+                throw ConfigError("--noise-size: '" + v + "' is not one of " + choices[0] + ", " + choices[1]);
             inner(o, v);
         };
         add(s);
@@ -348,7 +350,7 @@ std::vector<OptionSpec> buildTable() {
     const std::string gLook = "Overlay";
     add(choice("overlay", gLook, "blend (eq. 10: texture + colour map x lighting); or [W Fig. 6]: gray, gray-lit, "
                "hue-lit, coolwarm", methods::kOverlayNames, FS_REF(params.common.overlay)));
-    add(choice("colormap", gLook, "Colour map (viridis, coolwarm, gray, turbo, jet, plasma, none)",
+    add(choice("colormap", gLook, "Colour map",
                methods::kColormapNames, FS_REF(params.common.colormap)));
     {
         OptionSpec s{"colormap-file", "", gLook, "Colour map from a ParaView JSON preset file (RGBPoints); replaces "
@@ -451,10 +453,17 @@ std::string defaultText(const OptionSpec& spec) {
     return spec.get(defaults);
 }
 
-int warmupFrames(const RenderOptions& o) {
-    if (o.warmup >= 0) return o.warmup;
-    if (o.method == "hybrid") return 0;  // each frame is a fresh LIC: nothing builds up
-    return int(std::ceil(3.0f / std::max(o.params.common.alpha, 1e-3f)));
+OptionEffect effectOf(const std::string& name) {
+    const OptionSpec* s = findOption(name);
+    if (!s) throw ConfigError("unknown option '" + name + "'");
+    return s->effect;
+}
+
+OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b) {
+    OptionEffect e = OptionEffect::None;
+    for (const OptionSpec& s : renderOptionTable())
+        if (s.effect > e && s.get(a) != s.get(b)) e = s.effect;
+    return e;
 }
 
 void validateRenderOptions(const RenderOptions& o) {

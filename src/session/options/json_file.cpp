@@ -1,4 +1,4 @@
-#include "session/json_file.h"
+#include "session/options/json_file.h"
 
 #include "core/errors.h"
 

@@ -16,7 +16,7 @@ namespace flowsurf::session {
 
 struct RenderOptions {
     std::string input;                  // file or builtin:NAME
-    std::string method = "isa";
+    methods::Method method = methods::Method::Isa;
     std::string field;                  // empty: first 3-component point array
     core::Viewport size{800, 600};      // --size WxH
     int frames = 90;                    // advection frames before the output frame
@@ -53,6 +53,22 @@ struct RenderOptions {
 // What kind of value an option takes (the viewer picks its widget from this).
 enum class OptionKind { Flag, Int, Float, Text, Choice, Size, Vec3, Color, Path };
 
+// What changing an option means for a running session (session::Playback::set and every
+// front end that changes options after the start: the viewer, flowsurf::Renderer, ParaView).
+// Ordered: a change of several options needs the largest.
+enum class OptionEffect {
+    None,     // messages only (quiet, verbose)
+    Output,   // what a front end writes from the frames (file names, MP4 settings): no new frame
+    Camera,   // the camera of each frame: new cameras from the next frame; textures and clock go on
+    Rebuild,  // new surface upload and renderers: the clock restarts, with the warm-up again
+    Reload,   // what is read from the input (file, field, patches): open it again, then rebuild
+};
+inline constexpr methods::EnumNames<OptionEffect, 5> kOptionEffectNames{{{OptionEffect::None, "none"},
+                                                                         {OptionEffect::Output, "output-only"},
+                                                                         {OptionEffect::Camera, "camera"},
+                                                                         {OptionEffect::Rebuild, "rebuild"},
+                                                                         {OptionEffect::Reload, "reload"}}};
+
 struct OptionSpec {
     std::string name;                 // long name without dashes: CLI --name, config key, event `set name`
     std::string shortName;            // one letter (-m) or empty
@@ -67,6 +83,7 @@ struct OptionSpec {
     // The value as text that set() reads back exactly; empty when unset (e.g. camera
     // "fit the bounds").
     std::function<std::string(const RenderOptions&)> get;
+    OptionEffect effect = OptionEffect::Rebuild;  // what a change means after the start
 };
 
 // Every option of render/compare/view, in --help order. The positional input is "input".
@@ -77,9 +94,10 @@ const OptionSpec* findOption(const std::string& name);
 void setOption(RenderOptions& o, const std::string& name, const std::string& value);
 // The default of an option as text (from RenderOptions{}): empty when it has none.
 std::string defaultText(const OptionSpec& spec);
-
-// Warm-up frames for `o` (resolves -1 by method).
-int warmupFrames(const RenderOptions& o);
+// The effect of option `name`; throws ConfigError for an unknown name.
+OptionEffect effectOf(const std::string& name);
+// The largest effect among the options whose values differ between `a` and `b`.
+OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b);
 
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.
 void validateRenderOptions(const RenderOptions& opt);

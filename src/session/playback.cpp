@@ -1,0 +1,213 @@
+// Index: build and options · animation (start, advance, still) · live frames · results.
+#include "session/playback.h"
+
+#include "core/errors.h"
+#include "gl/readback.h"
+#include "methods/make_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flowsurf::session {
+
+Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
+                   methods::ProcessGroup* group)
+    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)) {
+    build();
+    built_ = options_;
+    builtViews_ = requestedViews_;
+}
+
+Playback::~Playback() = default;
+
+// --- build and options -------------------------------------------------------------------
+
+std::vector<methods::Method> Playback::shownViews() const {
+    return requestedViews_.empty() ? std::vector<methods::Method>{options_.method} : requestedViews_;
+}
+
+void Playback::build() {
+    // One surface streams from the steps at a time (its prefetch thread reads them).
+    methods_.clear();
+    surface_.reset();
+    cameras_.reset();
+    surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
+    const methods::MethodParams params = surface_->paramsFor(options_.params);
+    views_ = shownViews();
+    for (methods::Method m : views_) methods_.push_back(methods::makeRenderer(m, params, options_.size));
+    for (auto& m : methods_) m->timer().setEnabled(stageTiming_);
+    rebuildPending_ = camerasPending_ = false;
+    clock_ = 0;
+    warmedUp_ = 0;
+}
+
+void Playback::rebuild() {
+    try {
+        build();
+    } catch (...) {
+        // The options and methods of the last build that worked, again.
+        options_ = built_;
+        requestedViews_ = builtViews_;
+        build();
+        throw;
+    }
+    built_ = options_;
+    builtViews_ = requestedViews_;
+}
+
+bool Playback::applyPending() {
+    const bool rebuilt = rebuildPending_;
+    if (rebuildPending_) rebuild();
+    if (camerasPending_) {
+        cameras_.reset();
+        camerasPending_ = false;
+    }
+    return rebuilt;
+}
+
+OptionEffect Playback::set(const std::string& name, const std::string& value) {
+    const OptionEffect effect = effectOf(name);
+    if (effect == OptionEffect::Reload)
+        throw ConfigError("--" + name + " is read with the input: open the input again to change it");
+    setOption(options_, name, value);
+    if (effect == OptionEffect::Camera) camerasPending_ = true;
+    if (effect == OptionEffect::Rebuild) rebuildPending_ = true;
+    return effect;
+}
+
+OptionEffect Playback::setOptions(const RenderOptions& o) {
+    const OptionEffect effect = changeEffect(options_, o);
+    if (effect == OptionEffect::Reload)
+        throw ConfigError("the input's options changed (input, field, patches...): open the input again");
+    options_ = o;
+    if (effect == OptionEffect::Camera) camerasPending_ = true;
+    if (effect == OptionEffect::Rebuild) rebuildPending_ = true;
+    return effect;
+}
+
+void Playback::setViews(std::vector<methods::Method> views) {
+    requestedViews_ = std::move(views);
+    if (shownViews() != views_) rebuildPending_ = true;
+}
+
+void Playback::setStageTiming(bool on) {
+    stageTiming_ = on;
+    for (auto& m : methods_) m->timer().setEnabled(on);
+}
+
+void Playback::stepsChanged() {
+    surface_.reset();
+    surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
+}
+
+// --- an animation --------------------------------------------------------------------------
+
+const FrameCameras& Playback::frameCameras() {
+    if (!cameras_) cameras_ = std::make_unique<FrameCameras>(options_, steps_.bounds());
+    return *cameras_;
+}
+
+void Playback::restart() {
+    frame_ = 0;
+    clock_ = 0;
+    warmedUp_ = 0;
+    if (startWarm_) {
+        const core::Camera camera = frameCameras().at(0);
+        const double t = surface_->unsteady() ? surface_->timeAt(0) : 0.0;
+        warmUp({camera, t, surface_->mapping().perFrame});
+    }
+}
+
+void Playback::start(bool warmUp) {
+    started_ = true;
+    startWarm_ = warmUp;
+    applyPending();
+    restart();
+}
+
+void Playback::animationFrame(int f, uint32_t k) {
+    const double t = surface_->unsteady() ? surface_->timeAt(f) : 0.0;
+    renderAll(frameCameras().at(f), t, surface_->mapping().perFrame, k);
+}
+
+void Playback::advance() {
+    if (!started_) throw ConfigError("advance: the animation has not started");
+    if (applyPending()) restart();  // an option asked for new renderers: the animation starts over
+    animationFrame(frame_, uint32_t(warmedUp_ + frame_));
+    ++frame_;
+    clock_ = uint32_t(warmedUp_ + frame_);
+}
+
+void Playback::still(int f) {
+    started_ = true;
+    startWarm_ = false;
+    applyPending();
+    restart();
+    // A history-free method's frame f needs no frame before it.
+    for (int k = historyFree() ? f : 0; k <= f; ++k) animationFrame(k, uint32_t(k));
+    frame_ = f + 1;
+    clock_ = uint32_t(f + 1);
+}
+
+// --- live frames ---------------------------------------------------------------------------
+
+void Playback::warmUp(const LiveFrame& at) {
+    applyPending();
+    const int w = warmupFrames();
+    for (int k = 0; k < w; ++k) renderAll(at.camera, at.time, at.perFrame, uint32_t(k));
+    warmedUp_ = w;
+    clock_ = uint32_t(w);
+}
+
+void Playback::render(const LiveFrame& f, bool advance) {
+    applyPending();
+    renderAll(f.camera, f.time, f.perFrame, clock_);
+    if (advance) ++clock_;
+}
+
+void Playback::renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k) {
+    const methods::SurfaceGpu& s = surface_->atTime(time);
+    const methods::TimeLevels* levels = nullptr;
+    bool levelsRead = false;
+    for (auto& m : methods_) {
+        if (m->usesTimeLevels() && !levelsRead) {
+            levels = surface_->levelsAtTime(time, perFrame);
+            levelsRead = true;
+        }
+        methods::FrameInput in{&s, camera, k, m->usesTimeLevels() ? levels : nullptr};
+        in.group = group_;
+        m->renderFrame(in);
+    }
+    lastCamera_ = camera;
+    lastTime_ = surface_->unsteady() ? time : 0.0;
+    if (onFrame_) onFrame_();
+}
+
+// --- results -------------------------------------------------------------------------------
+
+bool Playback::historyFree() const {
+    return std::all_of(methods_.begin(), methods_.end(), [](const auto& m) { return m->historyFree(); });
+}
+
+int Playback::warmupFrames() const {
+    if (options_.warmup >= 0) return options_.warmup;
+    if (historyFree()) return 0;
+    return int(std::ceil(3.0f / std::max(options_.params.common.alpha, 1e-3f)));
+}
+
+std::vector<uint8_t> Playback::readImage(int* width, int* height) const {
+    const int n = int(methods_.size());
+    const core::Viewport v = options_.size;
+    *width = n * v.width;
+    *height = v.height;
+    std::vector<uint8_t> out(size_t(*width) * size_t(*height) * 3);
+    for (int i = 0; i < n; ++i) {
+        std::vector<uint8_t> img = gl::readRgb8TopDown(methods_[size_t(i)]->composite());
+        for (int y = 0; y < v.height; ++y)
+            std::copy_n(&img[size_t(y) * v.width * 3], size_t(v.width) * 3,
+                        &out[(size_t(y) * size_t(*width) + size_t(i) * v.width) * 3]);
+    }
+    return out;
+}
+
+}  // namespace flowsurf::session

@@ -1,0 +1,141 @@
+// flowsurf — the frame loop every front end runs: `render`, `compare`, the viewer,
+// flowsurf::Renderer (and so Python), `bench` and the ParaView mapper are its clients, and
+// it is the only caller of FlowMethod::renderFrame. One or more methods share one view of
+// the same steps: it owns the surface of each frame (AnimatedSurface), the time levels, the
+// camera of each frame, the noise clock, the warm-up, and what an option change means (the
+// option table's effect column).
+//
+// The clock, one rule everywhere: after a (re)build the noise clock k counts every frame
+// rendered, warm-up included. A warm-up renders W = warmupFrames() frames of the first
+// frame's data and camera at k = 0..W-1; animation frame f then runs at k = W + f (a movie,
+// Renderer::begin/advance and Python's Renderer.frames(), the viewer, ParaView). A single
+// image has no warm-up: still(f) renders frames 0..f at k = 0..f (the frames before it
+// converge it), or frame f alone when every method is history free.
+#pragma once
+
+#include "core/camera.h"
+#include "core/time_series.h"
+#include "methods/common/frame.h"
+#include "session/animated_surface.h"
+#include "session/options/options.h"
+#include "session/scene_setup.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flowsurf::session {
+
+class Playback {
+public:
+    // Renders the steps of `steps` (which must outlive the playback) with `views` side by
+    // side, each at o.size (empty: o.method alone). Needs a current GL 4.5 context; throws
+    // what AnimatedSurface, FrameCameras and methods::makeRenderer throw. `group`: the
+    // processes rendering this view together (ParaView under MPI), or null.
+    Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views = {},
+             methods::ProcessGroup* group = nullptr);
+    ~Playback();
+    Playback(const Playback&) = delete;
+    Playback& operator=(const Playback&) = delete;
+
+    // --- options -----------------------------------------------------------------------
+    const RenderOptions& options() const { return options_; }
+    // Sets option `name` (ConfigError naming it for an unknown name or a bad value) and
+    // does what the table's effect says: Camera: the frame cameras follow from the next
+    // frame, textures and clock go on; Rebuild: surface and renderers are made anew before
+    // the next frame and an animation starts over (with its warm-up); Output, None: nothing
+    // here. Reload is refused (ConfigError): the input must be opened again by the front
+    // end, which makes a new Playback. Returns the effect.
+    OptionEffect set(const std::string& name, const std::string& value);
+    // All options at once (the viewer's state, ParaView's properties): as set() for each
+    // option that differs; returns the largest effect. Throws ConfigError on Reload.
+    OptionEffect setOptions(const RenderOptions& o);
+    // The methods side by side (a Rebuild).
+    void setViews(std::vector<methods::Method> views);
+    // Makes surface and renderers anew now (the clock restarts), so errors show now; on
+    // failure the options, views, surface and renderers of the last build that worked
+    // are made again and the error is rethrown.
+    void rebuild();
+    // The steps changed in place (ParaView hands over new data at each view time): the
+    // surface is read and uploaded again; renderers, textures and clock go on.
+    void stepsChanged();
+
+    // --- an animation: camera (path, orbit) and data time follow the frame ----------------
+    // Starts over at frame 0; with warm-up, the warm-up frames run first (a movie, the
+    // library's animation); without, frame f runs at k = f.
+    void start(bool warmUp);
+    // Renders animation frame frame() and counts it.
+    void advance();
+    // The image `render --frames f` writes to a PNG: frames 0..f from a fresh start without
+    // warm-up, or frame f alone when every method is history free.
+    void still(int f);
+    // Animation frames rendered since start() (the one shown is frame() - 1).
+    int frame() const { return frame_; }
+
+    // --- live: the camera and the data time come from outside (viewer, ParaView, bench) ---
+    struct LiveFrame {
+        core::Camera camera;
+        double time = 0.0;      // data time (ignored for steady data)
+        double perFrame = 0.0;  // data time per frame, for the hybrid's pathlines (0: streamlines)
+    };
+    // The warm-up frames at `at` (k = 0..W-1), after which the clock reads W.
+    void warmUp(const LiveFrame& at);
+    // One frame at noise clock clock(); then the clock advances unless `advance` is false
+    // (a paused viewer drawing a camera move). An option change that rebuilt the renderers
+    // restarts the clock at 0: call warmUp() after changing options.
+    void render(const LiveFrame& f, bool advance = true);
+
+    // Per-stage GPU timing of every method (FlowMethod::timer), kept over rebuilds. Off by
+    // default: the timer waits for the GPU at every stage boundary.
+    void setStageTiming(bool on);
+    // Called after every frame rendered, warm-up included (a progress bar).
+    void onFrame(std::function<void()> callback) { onFrame_ = std::move(callback); }
+
+    // --- state and results ---------------------------------------------------------------
+    uint32_t clock() const { return clock_; }  // noise clock of the next frame
+    // W: options().warmup, or when it is -1 enough to look converged: 3 / alpha frames,
+    // none when every method is history free (the hybrid's LIC: nothing builds up).
+    int warmupFrames() const;
+    // True if every method computes each frame afresh (FlowMethod::historyFree).
+    bool historyFree() const;
+    size_t viewCount() const { return methods_.size(); }
+    methods::FlowMethod& view(size_t i) { return *methods_[i]; }
+    const methods::FlowMethod& view(size_t i) const { return *methods_[i]; }
+    methods::Method viewMethod(size_t i) const { return views_[i]; }
+    AnimatedSurface& surface() { return *surface_; }
+    const core::Camera& lastCamera() const { return lastCamera_; }
+    double lastTime() const { return lastTime_; }  // data time of the last frame (0: steady)
+    // Composites of every view side by side, RGB8, rows top to bottom.
+    std::vector<uint8_t> readImage(int* width, int* height) const;
+
+private:
+    void build();                       // surface, renderers, cameras from options_
+    bool applyPending();                // a pending rebuild (true) or camera change, before a frame
+    void restart();                     // the animation over, after a rebuild
+    std::vector<methods::Method> shownViews() const;
+    // Every method's stage list once at noise clock k.
+    void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
+    void animationFrame(int f, uint32_t k);
+    const FrameCameras& frameCameras();  // of the options, made when an animation needs them
+
+    RenderOptions options_, built_;     // as set, and of the last build that worked
+    core::StepProvider& steps_;
+    methods::ProcessGroup* group_;
+    std::vector<methods::Method> requestedViews_, builtViews_, views_;
+    std::unique_ptr<AnimatedSurface> surface_;
+    std::vector<std::unique_ptr<methods::FlowMethod>> methods_;
+    std::unique_ptr<FrameCameras> cameras_;
+    bool rebuildPending_ = false, camerasPending_ = false;
+    bool stageTiming_ = false;
+    bool started_ = false, startWarm_ = false;  // an animation runs (and began with its warm-up)
+    int frame_ = 0;
+    int warmedUp_ = 0;                  // warm-up frames on the clock since the build
+    uint32_t clock_ = 0;
+    core::Camera lastCamera_;
+    double lastTime_ = 0.0;
+    std::function<void()> onFrame_;
+};
+
+}  // namespace flowsurf::session
