@@ -20,20 +20,25 @@ ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
       defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
                "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n"),
-      steady_(build(false)),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+    programFor(false, false);  // the common variant, so that a shader error shows at construction
+}
 
-gl::Program ParticleTracing::build(bool unsteady) const {
-    const std::string defines = defines_ + (unsteady ? "#define UNSTEADY 1\n" : "");
-    if (compute_) return program({{GL_COMPUTE_SHADER, "hybrid/particle_tracing.comp"}}, defines);
-    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
-                   defines);
+const gl::Program& ParticleTracing::programFor(bool unsteady, bool lineField) {
+    gl::Program& p = programs_[unsteady][lineField];
+    if (p) return p;
+    const std::string defines =
+        defines_ + (unsteady ? "#define UNSTEADY 1\n" : "") + "#define LINE_FIELD " + (lineField ? "1\n" : "0\n");
+    if (compute_) p = program({{GL_COMPUTE_SHADER, "hybrid/particle_tracing.comp"}}, defines);
+    else
+        p = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+                    defines);
+    return p;
 }
 
 void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const ColorTarget& target) {
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
-    if (unsteady && !unsteady_) unsteady_ = build(true);
-    const gl::Program& program = unsteady ? unsteady_ : steady_;
+    const gl::Program& program = programFor(unsteady, in.lineField);
     program.use();
     setUniforms(program, in, params);
     if (compute_) {
@@ -57,13 +62,16 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
 
 void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput& in, const HybridParams& params) const {
     const core::Camera& cam = in.camera;
-    glm::mat4 viewProj = cam.viewProjection(in.viewport.aspect());
-    glUniformMatrix4fv(program.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    // Clip coordinates to image texture coordinates after the divide: x, y -> (x + w) / 2.
+    glm::mat4 toTexture(1.0f);
+    toTexture[3] = glm::vec4(0.5f, 0.5f, 0.0f, 1.0f);
+    toTexture[0][0] = toTexture[1][1] = 0.5f;
+    const glm::mat4 texFromObj = toTexture * cam.viewProjection(in.viewport.aspect());
+    glUniformMatrix4fv(program.uniform("uTexFromObj"), 1, GL_FALSE, glm::value_ptr(texFromObj));
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(cam.eye));
     glUniform1i(program.uniform("uOrtho"), cam.orthographic());
     glUniform4fv(program.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(cam)));
-    glUniform1i(program.uniform("uLineField"), in.lineField);
-    glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
+    glUniform1i(program.uniform("uFilterLength"), std::max(1, params.filterLength));
     // Size of a pixel in P-space: at distance d (perspective) it is d * pixelPerDist.
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(in.viewport.height);
     const float pixelOrtho = cam.orthographic() ? cam.orthoHeight / float(in.viewport.height) : 0.0f;

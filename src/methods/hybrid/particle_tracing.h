@@ -43,12 +43,14 @@ public:
     bool compute() const { return compute_; }
 
 private:
-    gl::Program build(bool unsteady) const;
+    // The program for steady/unsteady flow and signed vectors/line fields, compiled on
+    // first use.
+    const gl::Program& programFor(bool unsteady, bool lineField);
     void setUniforms(const gl::Program& program, const TracingInput& in, const HybridParams& params) const;
 
     bool compute_;
     std::string defines_;
-    gl::Program steady_, unsteady_;  // the unsteady variant is compiled on first use
+    gl::Program programs_[2][2];  // [unsteady][lineField]
     gl::VertexArray emptyVao_;
 };
 
