@@ -143,6 +143,7 @@ bool licAt(ivec2 px, out float result) {
                                   invTolerance);
         vec3 c = clip0, q = noise0, ref = ref0;
         float d = depth0;
+        KernelWalk k = kernelWalk(du);
         for (int i = 1; i <= halfLength; ++i) {
             // Step i runs from data time (i - 1) dt to i dt, backward in time for dir < 0.
             vec3 v;
@@ -150,9 +151,9 @@ bool licAt(ivec2 px, out float result) {
             c += m.clip * v;
             q += m.noise * v;
             d += dot(m.depth, v);
-            float k = kernelWeight(KERNEL, float(i) * du);
-            lic += k * noiseAt(q, coarse, f);
-            weight += k;
+            kernelNext(k);
+            lic += k.weight * noiseAt(q, coarse, f);
+            weight += k.weight;
         }
     }
     result = lic / weight;
