@@ -47,7 +47,7 @@ for r in $(seq "$ROUNDS"); do
         --camera-json "$OUT/camera.json")
   "$HERE/run.sh" --mesh "$FILE" --field "$FIELD" --camera-json "$OUT/camera.json" --sizes "$SIZE" \
     --steps "$STEPS" --frames "$FRAMES" --quiet-vtk --csv "$OUT/lic.csv" >/dev/null 2>&1
-  lic=$(tail -n1 "$OUT/lic.csv" | cut -d, -f5)
+  lic=$(tail -n1 "$OUT/lic.csv" | cut -d, -f5 | tr -d '\r')  # the csv module ends rows with CR LF
   hm=$(echo "$h" | cut -d, -f2) ht=$(echo "$h" | cut -d, -f4)
   echo "$r,$hm,$ht,$lic,$(awk -v a="$lic" -v b="$hm" 'BEGIN{printf "%.2f", a/b}')" | tee -a "$OUT/rounds.csv"
 done
