@@ -21,6 +21,7 @@ which forces the GL pipeline to finish.  The read-back is included in the time.
 
 import argparse
 import csv
+import json
 import math
 import os
 import sys
@@ -98,6 +99,29 @@ def build_sphere(n_triangles):
     return poly, theta, phi
 
 
+def read_mesh(path, field):
+    """A surface file (any VTK XML/legacy PolyData) triangulated, with point normals and
+    `field` as the active point vectors."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOLegacy import vtkPolyDataReader
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals, vtkTriangleFilter
+
+    reader = vtkXMLPolyDataReader() if path.endswith(".vtp") else vtkPolyDataReader()
+    reader.SetFileName(path)
+    tri = vtkTriangleFilter()
+    tri.SetInputConnection(reader.GetOutputPort())
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(tri.GetOutputPort())
+    normals.ComputePointNormalsOn()
+    normals.SplittingOff()
+    normals.Update()
+    poly = normals.GetOutput()
+    if poly.GetPointData().GetArray(field) is None:
+        raise SystemExit("%s has no point array %r" % (path, field))
+    poly.GetPointData().SetActiveVectors(field)
+    return poly
+
+
 def step_size_for(step_px, width, height, mode):
     """LIC StepSize argument for a wanted on-screen step of step_px pixels.
 
@@ -146,6 +170,12 @@ def main():
     ap.add_argument("--static-check", action="store_true",
                     help="also time K frames without camera change (ms_static column, stdout "
                          "only): shows whether VTK reuses the previous LIC")
+    ap.add_argument("--mesh", default=None,
+                    help="time this surface file (PolyData) instead of the spheres of --triangles")
+    ap.add_argument("--field", default="velocity", help="the point vector array of --mesh")
+    ap.add_argument("--camera-json", default=None,
+                    help="camera of the first frame (JSON eye, target, up, fov: as written by "
+                         "hybrid_file_bench.py) instead of ResetCamera from (0.3, 0.4, 1)")
     ap.add_argument("--quiet-vtk", action="store_true",
                     help="silence VTK warnings in the output window")
     args = ap.parse_args()
@@ -161,7 +191,7 @@ def main():
     if args.quiet_vtk:
         vtkOutputWindow.GetInstance().SetDisplayModeToNever()
 
-    tri_list = parse_int_list(args.triangles)
+    tri_list = [0] if args.mesh else parse_int_list(args.triangles)
     sizes = parse_sizes(args.sizes)
     steps_list = parse_int_list(args.steps)
 
@@ -207,17 +237,23 @@ def main():
 
     for n_req in tri_list:
         t0 = time.perf_counter()
-        poly, theta, phi = build_sphere(n_req)
+        if args.mesh:
+            poly, field = read_mesh(args.mesh, args.field), args.field
+            print("# mesh: %s, field %s, %d triangles, %d points" % (args.mesh, field, poly.GetNumberOfCells(),
+                                                                     poly.GetNumberOfPoints()))
+        else:
+            poly, theta, phi = build_sphere(n_req)
+            field = "velocity"
+            print("# mesh: requested %d -> theta=%d phi=%d -> %d triangles, %d points (%.2fs)"
+                  % (n_req, theta, phi, poly.GetNumberOfCells(), poly.GetNumberOfPoints(),
+                     time.perf_counter() - t0))
         n_tris = poly.GetNumberOfCells()
-        t_build = time.perf_counter() - t0
-        print("# mesh: requested %d -> theta=%d phi=%d -> %d triangles, %d points (%.2fs)"
-              % (n_req, theta, phi, n_tris, poly.GetNumberOfPoints(), t_build))
         sys.stdout.flush()
 
         mapper = vtkSurfaceLICMapper()
         mapper.SetInputData(poly)
         mapper.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS,
-                                      "velocity")
+                                      field)
         mapper.ScalarVisibilityOff()
         lic = mapper.GetLICInterface()
         lic.SetNormalizeVectors(1)
@@ -239,14 +275,22 @@ def main():
                 lic.SetNumberOfSteps(steps)
                 lic.SetStepSize(step_size)
 
-                # camera fitted to the sphere, looking from direction (0.3, 0.4, 1)
                 cam = ren.GetActiveCamera()
-                d = (0.3, 0.4, 1.0)
-                nd = math.sqrt(sum(c * c for c in d))
-                cam.SetFocalPoint(0.0, 0.0, 0.0)
-                cam.SetPosition(*(5.0 * c / nd for c in d))
-                cam.SetViewUp(0.0, 1.0, 0.0)
-                ren.ResetCamera()
+                if args.camera_json:
+                    with open(args.camera_json) as f:
+                        c = json.load(f)
+                    cam.SetFocalPoint(*c["target"])
+                    cam.SetPosition(*c["eye"])
+                    cam.SetViewUp(*c["up"])
+                    cam.SetViewAngle(c["fov"])
+                    cam.OrthogonalizeViewUp()
+                else:  # camera fitted to the sphere, looking from direction (0.3, 0.4, 1)
+                    d = (0.3, 0.4, 1.0)
+                    nd = math.sqrt(sum(c * c for c in d))
+                    cam.SetFocalPoint(0.0, 0.0, 0.0)
+                    cam.SetPosition(*(5.0 * c / nd for c in d))
+                    cam.SetViewUp(0.0, 1.0, 0.0)
+                    ren.ResetCamera()
                 ren.ResetCameraClippingRange()
 
                 # warm-up frame (shader compilation, texture allocation)

@@ -1,6 +1,7 @@
 #include "methods/hybrid/hybrid_renderer.h"
 
 #include "core/errors.h"
+#include "methods/common/gl_path.h"
 
 #include <cmath>
 
@@ -12,7 +13,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       seeds_(viewport, true, params.common.cullBackFaces),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
-      tracing_(params.hybrid),
+      tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
       overlay_(params.common),
       lic_(GL_R32F, viewport),
       composite_(GL_RGBA8, viewport) {}
@@ -70,7 +71,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
-    tracing_.apply(t, params_.hybrid, lic_.fbo());
+    tracing_.apply(t, params_.hybrid, lic_);
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");

@@ -1,5 +1,6 @@
 #include "methods/hybrid/particle_tracing.h"
 
+#include "core/noise.h"
 #include "methods/common/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,34 +10,68 @@
 
 namespace flowsurf::methods::hybrid {
 
-ParticleTracing::ParticleTracing(const HybridParams& params)
-    : defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
-               std::to_string(int(params.integrator)) + "\n"),
-      steady_(program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
-              defines_)),
-      emptyVao_(gl::VertexArray::create()) {}
+namespace {
+// Compute work group: 8 x 8 pixels (llvmpipe runs 8 invocations per SIMD batch).
+constexpr int kLocalX = 8, kLocalY = 8;
+}  // namespace
 
-void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
+    : compute_(path == GlPath::Compute),
+      defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
+               std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
+               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n"),
+      emptyVao_(gl::VertexArray::create()) {
+    programFor(false, false);  // the common variant, so that a shader error shows at construction
+}
+
+const gl::Program& ParticleTracing::programFor(bool unsteady, bool lineField) {
+    gl::Program& p = programs_[unsteady][lineField];
+    if (p) return p;
+    const std::string defines =
+        defines_ + (unsteady ? "#define UNSTEADY 1\n" : "") + "#define LINE_FIELD " + (lineField ? "1\n" : "0\n");
+    if (compute_) p = program({{GL_COMPUTE_SHADER, "hybrid/particle_tracing.comp"}}, defines);
+    else
+        p = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+                    defines);
+    return p;
+}
+
+void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, const ColorTarget& target) {
+    const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
+    const gl::Program& program = programFor(unsteady, in.lineField);
+    program.use();
+    setUniforms(program, in, params);
+    if (compute_) {
+        // Every pixel is written (the background with the noise mean): no clear.
+        glBindImageTexture(0, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glDispatchCompute(GLuint((in.viewport.width + kLocalX - 1) / kLocalX),
+                          GLuint((in.viewport.height + kLocalY - 1) / kLocalY), 1);
+        // The overlay samples I; tests and read-back fetch it.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target.fbo().id());
     glViewport(0, 0, in.viewport.width, in.viewport.height);
     const float gray[4] = {core::kNoiseMean, 0, 0, 1};
-    glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, gray);
+    glClearNamedFramebufferfv(target.fbo().id(), GL_COLOR, 0, gray);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
-    if (unsteady && !unsteady_)
-        unsteady_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
-                                defines_ + "#define UNSTEADY 1\n");
-    const gl::Program& program = unsteady ? unsteady_ : steady_;
-    program.use();
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput& in, const HybridParams& params) const {
     const core::Camera& cam = in.camera;
-    glm::mat4 viewProj = cam.viewProjection(in.viewport.aspect());
-    glUniformMatrix4fv(program.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    // Clip coordinates to image texture coordinates after the divide: x, y -> (x + w) / 2.
+    glm::mat4 toTexture(1.0f);
+    toTexture[3] = glm::vec4(0.5f, 0.5f, 0.0f, 1.0f);
+    toTexture[0][0] = toTexture[1][1] = 0.5f;
+    const glm::mat4 texFromObj = toTexture * cam.viewProjection(in.viewport.aspect());
+    glUniformMatrix4fv(program.uniform("uTexFromObj"), 1, GL_FALSE, glm::value_ptr(texFromObj));
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(cam.eye));
     glUniform1i(program.uniform("uOrtho"), cam.orthographic());
     glUniform4fv(program.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(cam)));
-    glUniform1i(program.uniform("uLineField"), in.lineField);
-    glUniform1i(program.uniform("uHalfLength"), std::max(0, (params.filterLength - 1) / 2));
+    glUniform1i(program.uniform("uFilterLength"), std::max(1, params.filterLength));
     // Size of a pixel in P-space: at distance d (perspective) it is d * pixelPerDist.
     const float pixelPerDist = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / float(in.viewport.height);
     const float pixelOrtho = cam.orthographic() ? cam.orthoHeight / float(in.viewport.height) : 0.0f;
@@ -50,6 +85,7 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
     glBindTextureUnit(0, in.seeds->position().id());
+    const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
     if (unsteady) {
         glBindTextureUnit(1, in.velocityLevels);
         glUniform1i(program.uniform("uLevelCount"), GLint(in.levelTimes.size()));
@@ -60,8 +96,6 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
         glBindTextureUnit(1, in.seeds->velocity().id());
     }
     glBindTextureUnit(3, in.noise);
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 }  // namespace flowsurf::methods::hybrid

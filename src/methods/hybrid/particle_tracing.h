@@ -1,12 +1,14 @@
 // Hybrid steps 2-5 — particle tracing in P-space with D-space velocity lookups and LIC
 // accumulation with the chosen kernel [W §3-5, eqs. 2, 3, 5] (shaders/hybrid/
-// particle_tracing.frag, one pass with a per-pixel loop). Inputs: seed textures, solid
-// noise. Output: the LIC result I (R32F) on the surface pixels.
+// particle_tracing.glsl: one pass with a per-pixel loop, as a fragment or a compute
+// shader, GlPath). Inputs: seed textures, solid noise. Output: the LIC result I (R32F);
+// the noise mean on the background. Cost: pixels x L x (one velocity and two noise fetches).
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
+#include "methods/common/render_targets.h"
 #include "methods/common/surface_gbuffer.h"
 
 #include <string>
@@ -34,13 +36,21 @@ struct TracingInput {
 
 class ParticleTracing {
 public:
-    // Compiles the variant for params.kernel and params.integrator.
-    explicit ParticleTracing(const HybridParams& params);
-    void apply(const TracingInput& in, const HybridParams& params, const gl::Framebuffer& target);
+    // Compiles the variant for params.kernel and params.integrator as a compute shader
+    // (path Compute) or a fragment shader (Fragment; Auto is resolved by the caller).
+    ParticleTracing(const HybridParams& params, GlPath path);
+    void apply(const TracingInput& in, const HybridParams& params, const ColorTarget& target);
+    bool compute() const { return compute_; }
 
 private:
+    // The program for steady/unsteady flow and signed vectors/line fields, compiled on
+    // first use.
+    const gl::Program& programFor(bool unsteady, bool lineField);
+    void setUniforms(const gl::Program& program, const TracingInput& in, const HybridParams& params) const;
+
+    bool compute_;
     std::string defines_;
-    gl::Program steady_, unsteady_;  // the unsteady variant is compiled on first use
+    gl::Program programs_[2][2];  // [unsteady][lineField]
     gl::VertexArray emptyVao_;
 };
 
