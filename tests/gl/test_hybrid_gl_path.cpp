@@ -79,13 +79,6 @@ methods::MethodParams baseParams() {
 
 }  // namespace
 
-template <typename E, size_t N>
-std::string nameOf(const methods::EnumNames<E, N>& names, E value) {
-    for (const auto& [v, name] : names)
-        if (v == value) return std::string(name);
-    return "?";
-}
-
 using Variant = std::tuple<methods::LicKernel, methods::Integrator>;
 class HybridGlPath : public ::testing::TestWithParam<Variant> {};
 INSTANTIATE_TEST_SUITE_P(KernelsIntegrators, HybridGlPath,
@@ -94,8 +87,8 @@ INSTANTIATE_TEST_SUITE_P(KernelsIntegrators, HybridGlPath,
                                             ::testing::Values(methods::Integrator::Euler, methods::Integrator::Rk2,
                                                               methods::Integrator::Rk4)),
                          [](const ::testing::TestParamInfo<Variant>& info) {
-                             return nameOf(methods::kKernelNames, std::get<0>(info.param)) + "_" +
-                                    nameOf(methods::kIntegratorNames, std::get<1>(info.param));
+                             return std::string(methods::nameOf(methods::kKernelNames, std::get<0>(info.param))) +
+                                    "_" + std::string(methods::nameOf(methods::kIntegratorNames, std::get<1>(info.param)));
                          });
 
 // Steady flow: the spinning sphere in perspective (both noise octaves mixed per pixel).
