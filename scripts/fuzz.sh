@@ -20,7 +20,7 @@ while [ $# -gt 0 ]; do
         *) targets+=("$1"); shift ;;
     esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_ply fuzz_obj fuzz_camera_path fuzz_config fuzz_event_log fuzz_options)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_ply fuzz_obj fuzz_ensight fuzz_camera_path fuzz_config fuzz_event_log fuzz_options)
 B=build-fuzz
 CXX=clang++ cmake -S fuzz -B $B -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 cmake --build $B -j"${JOBS:-2}" --target "${targets[@]}"

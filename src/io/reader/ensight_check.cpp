@@ -316,7 +316,8 @@ private:
 // VTK's reader decides it; little-endian until then.
 class BinaryFile {
 public:
-    BinaryFile(std::string_view bytes, const std::string& path) : bytes_(bytes), path_(path) { pos_ = 80; }
+    BinaryFile(std::string_view bytes, const std::string& path)
+        : bytes_(bytes), path_(path), pos_(std::min<size_t>(80, bytes.size())) {}  // after "C Binary"
 
     bool header(Ids& ids) {
         auto first = string();
