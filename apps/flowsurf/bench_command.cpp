@@ -28,7 +28,7 @@ int runBench(const BenchOptions& o) {
         b.filterLengths = {25};
     }
     gl::HeadlessContext context(false);
-    std::printf("flowsurf bench on %s (ms per frame; stages synchronised, frame pipelined)\n",
+    std::printf("flowsurf bench on %s (ms per frame; frame pipelined, stages from GPU timestamps)\n",
                 context.description().c_str());
     std::vector<bench::BenchRow> rows = bench::runBench(b);
     if (!o.csv.empty()) {
