@@ -177,7 +177,8 @@ TEST(IoEnSight, EveryGeometryFileOfASeriesIsChecked) {
     const std::string path = dir.file("t.case");
     writeText(path, "FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: 1 mesh.geo**\nTIME\ntime set: 1\n"
                     "number of steps: 3\nfilename start number: 0\nfilename increment: 2\ntime values: 0 1 2\n");
-    for (const char* step : {"00", "02", "04"}) writeText(dir.file(std::string("mesh.geo") + step), binarySquare(false));
+    for (const char* step : {"00", "02", "04"})
+        writeText(dir.file(std::string("mesh.geo") + step), binarySquare(false));
     core::Dataset ds = io::readDataset(path);
     ASSERT_EQ(ds.steps.size(), 3u);
     EXPECT_EQ(ds.steps[2].mesh.triangleCount(), 2u);

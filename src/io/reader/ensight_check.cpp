@@ -533,9 +533,9 @@ std::vector<std::string> geometryFiles(const CaseFile& c, const fs::path& folder
     auto set = c.timeSets.find(c.modelTimeSet);
     if (set == c.timeSets.end()) return {};
     std::vector<std::string> files;
-    for (uint64_t i = 0; i < set->second.steps; ++i) {
-        const long long number = i < set->second.numbers.size() ? set->second.numbers[i]
-                                                                  : set->second.start + (long long)i * set->second.increment;
+    const TimeSet& t = set->second;
+    for (uint64_t i = 0; i < t.steps; ++i) {
+        const long long number = i < t.numbers.size() ? t.numbers[i] : t.start + (long long)i * t.increment;
         std::string digits = std::to_string(number);
         if (digits.size() < width) digits.insert(0, width - digits.size(), '0');
         files.push_back(name.substr(0, star) + digits + name.substr(star + width));

@@ -223,9 +223,10 @@ auto ReaderProcess::call(const std::string& label, long long budgetS, Send send,
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         std::string why = reap(true);
         if (b.timedOut)
-            why = "took longer than " + std::to_string(budgetS) +
-                  (fixedBudgetSeconds() > 0 ? " s (FLOWSURF_READER_TIMEOUT_S)"
-                                            : " s (its budget for this input's size; FLOWSURF_READER_TIMEOUT_S sets another)");
+            why = "took longer than " + std::to_string(budgetS) + " s (" +
+                  (fixedBudgetSeconds() > 0 ? "FLOWSURF_READER_TIMEOUT_S"
+                                            : "its budget for this input's size; FLOWSURF_READER_TIMEOUT_S sets another") +
+                  ")";
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }

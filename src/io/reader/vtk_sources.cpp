@@ -285,7 +285,7 @@ private:
 
 std::string supportedExtensions() {
     std::string s;
-    for (const auto& f : kFormats) s += (s.empty() ? "" : " ") + std::string(f.extension);
+    for (const auto& f : kFormats) s.append(s.empty() ? "" : " ").append(f.extension);
     return s;
 }
 
