@@ -210,6 +210,7 @@ void Renderer::readFlowTexture16(uint16_t* values) const {
 
 std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
     if (!impl_->method) return {};
+    Impl::Scope scope(*impl_);  // the timer reads its GPU queries
     return impl_->method->timer().meanMs();
 }
 

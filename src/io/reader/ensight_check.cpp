@@ -302,8 +302,10 @@ private:
         return l;
     }
     std::optional<std::string_view> dataLine() {
-        for (auto l = line(); l; l = line())
-            if (!l->empty() && (*l)[0] != '#' && !trim(*l).empty()) return l;
+        for (auto l = line(); l; l = line()) {
+            if (l->empty() || (*l)[0] == '#') continue;
+            if (!std::isspace(static_cast<unsigned char>((*l)[0])) || !trim(*l).empty()) return l;
+        }
         return std::nullopt;
     }
 
