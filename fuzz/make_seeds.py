@@ -57,6 +57,43 @@ seed("fuzz_obj", "quad.obj", "# seed\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0
      "f 1 2 3\nf 1//1 3//1 4//1\nf 1/1/1 2/1/1 3/1/1\nf -4 -3 -2 -1\ng group\no obj\ns off\n")
 seed("fuzz_obj", "bad.obj", "v 0 0\nf 1 2 9\n")
 
+# EnSight Gold geometry (fuzz_ensight; the case file names it): ASCII with and without
+# ids, nsided and nfaced blocks, a structured block, C binary in both byte orders.
+ens_coords = "".join("%g\n" % v for v in (0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0))
+ens_head = "square\ngeometry\nnode id %s\nelement id %s\nextents\n0 1\n0 1\n0 0\npart\n1\nsquare\n"
+seed("fuzz_ensight", "ascii.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
+     "tria3\n2\n1 2 3\n1 3 4\nquad4\n1\n1 2 3 4\n")
+seed("fuzz_ensight", "ascii_ids.geo", ens_head % ("given", "given") + "coordinates\n4\n11\n12\n13\n14\n" +
+     ens_coords + "tria3\n2\n7\n8\n1 2 3\n1 3 4\n")
+seed("fuzz_ensight", "nsided_nfaced.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
+     "nsided\n1\n4\n1 2 3 4\nnfaced\n1\n2\n3\n3\n1 2 3\n1 3 4\n")
+seed("fuzz_ensight", "block.geo", ens_head % ("off", "off") + "block iblanked\n2 2 1\n" + ens_coords +
+     "1\n1\n1\n1\n")
+seed("fuzz_ensight", "time_steps.geo", "BEGIN TIME STEP\n" + ens_head % ("off", "off") + "coordinates\n4\n" +
+     ens_coords + "tria3\n1\n1 2 3\nEND TIME STEP\n")
+
+
+def ens_binary(order, nodes=4, elements=2):
+    s80 = lambda t: t.encode().ljust(80, b"\0")
+    i32 = lambda *v: struct.pack(order + "%di" % len(v), *v)
+    return (s80("C Binary") + s80("square") + s80("geometry") + s80("node id off") + s80("element id off") +
+            s80("part") + i32(1) + s80("square") + s80("coordinates") + i32(nodes) +
+            struct.pack(order + "12f", 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0) + s80("tria3") + i32(elements) +
+            i32(1, 2, 3, 1, 3, 4))
+
+
+seed("fuzz_ensight", "binary_le.geo", ens_binary("<"))
+seed("fuzz_ensight", "binary_be.geo", ens_binary(">"))
+# Regressions: counts beyond the file that kept VTK's reader looping until its timeout.
+seed("fuzz_ensight", "regress_coordinates_beyond_file.geo", ens_head % ("off", "off") +
+     "coordinates\n100000000\n" + ens_coords + "tria3\n1\n1 2 3\n")
+seed("fuzz_ensight", "regress_elements_beyond_file.geo", ens_head % ("off", "off") + "coordinates\n4\n" +
+     ens_coords + "tria3\n50000000\n1 2 3\n")
+seed("fuzz_ensight", "regress_nsided_missing_line.geo", ens_head % ("off", "off") + "coordinates\n4\n" +
+     ens_coords + "nsided\n2\n4\n4\n1 2 3 4\n#\n")
+seed("fuzz_ensight", "regress_binary_elements_beyond_file.geo", ens_binary(">", elements=5000))
+seed("fuzz_ensight", "regress_binary_shorter_than_a_string.geo", "C Binary\n")  # read past the end
+
 # Camera path JSON.
 seed("fuzz_camera_path", "path.json", json.dumps({"keyframes": [
     {"frame": 0, "eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 30},

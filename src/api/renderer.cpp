@@ -188,6 +188,7 @@ void Renderer::readFlowTexture16(uint16_t* values) const {
 
 std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
     if (!impl_->playback) return {};
+    Impl::Scope scope(*impl_);  // the timer reads its GPU queries
     return impl_->playback->view(0).timer().meanMs();
 }
 

@@ -1,10 +1,15 @@
-// flowsurf — per-stage timing for the benchmark. Each stage boundary waits for the GPU
-// (glFinish) and reads a CPU clock: exact on llvmpipe and on GPUs alike, at the cost of
-// pipelining, so the benchmark times whole frames separately with the timer off.
-// Disabled by default; the per-frame pipeline then does no synchronisation at all.
+// flowsurf — per-stage GPU timing for the benchmark, the viewer's stats and the API. Each
+// stage boundary writes a GL timestamp query (glQueryCounter, GL_TIMESTAMP) into the
+// command stream, so nothing waits mid-frame; a frame's results are read once the GPU has
+// passed its end: at the next beginFrame if ready, else when meanMs() asks for them.
+// Contexts without timer queries (GL < 3.3) fall back to glFinish + a CPU clock at each
+// boundary. Disabled by default; the per-frame pipeline then issues nothing.
 #pragma once
 
+#include "gl/objects.h"
+
 #include <chrono>
+#include <deque>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,19 +25,40 @@ public:
     void begin(const char* name);
     void endFrame();
     // Mean ms per frame for each stage since reset(), in first-seen order. A stage that
-    // ran in only some frames (the dynamic stages) is averaged over all frames.
+    // ran in only some frames (the dynamic stages) is averaged over all frames. Waits for
+    // the frames still on the GPU: the context must be current, as for every call here.
     std::vector<std::pair<std::string, double>> meanMs() const;
     void reset();
 
 private:
+    using Query = Handle<detail::deleteQuery>;
+    // A timestamp and the stage that starts there ("" for none: the frame's end, or
+    // before its first stage).
+    struct Mark {
+        std::string stage;
+        Query query;
+    };
     using Clock = std::chrono::steady_clock;
+
+    void mark(const char* stage);
+    // Adds the pending frames whose results are in to the totals, and waits for the
+    // oldest ones until at most `keep` remain pending.
+    void collect(size_t keep) const;
+    void recycle(std::vector<Mark>& marks) const;
+    void add(const std::string& stage, double ms) const;
+
     bool enabled_ = false;
-    std::string current_;
-    Clock::time_point mark_;
-    std::vector<std::string> order_;
-    std::map<std::string, double> totalMs_;
-    int frames_ = 0;
-    void close();
+    int queries_ = -1;  // timer queries supported: -1 not yet asked
+    std::vector<Mark> current_;
+    // Mutable: meanMs() (const to its callers) folds in the frames still pending.
+    mutable std::deque<std::vector<Mark>> pending_;
+    mutable std::vector<Query> free_;
+    mutable std::vector<std::string> order_;
+    mutable std::map<std::string, double> totalMs_;
+    mutable int frames_ = 0;
+    // Fallback without timer queries.
+    std::string stage_;
+    Clock::time_point since_;
 };
 
 }  // namespace flowsurf::gl

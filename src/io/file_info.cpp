@@ -25,7 +25,7 @@ std::string timesText(const std::vector<double>& times) {
                     number(times.back()) + "\n             ";
     // Long lists: the first few and the last, enough to see the spacing.
     const size_t head = times.size() <= 10 ? times.size() : 6;
-    for (size_t i = 0; i < head; ++i) s += (i ? " " : "") + number(times[i]);
+    for (size_t i = 0; i < head; ++i) s.append(i ? " " : "").append(number(times[i]));
     if (head < times.size()) s += " ... " + number(times.back());
     return s;
 }

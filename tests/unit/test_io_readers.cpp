@@ -321,7 +321,7 @@ TEST(IoReaders, EnSightGoldAsciiWithTimeSteps) {
               "filename start number: 0\nfilename increment: 1\ntime values: 0.0 0.5\n");
     auto column = [](std::initializer_list<double> values) {
         std::string s;
-        for (double v : values) s += " " + std::to_string(v) + "\n";
+        for (double v : values) s.append(" ").append(std::to_string(v)).append("\n");
         return s;
     };
     writeText(dir.file("mesh.geo"),

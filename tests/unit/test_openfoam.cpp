@@ -36,7 +36,7 @@ std::string cubePoints(double x0, double z0) {
     std::string s = "8\n(\n";
     for (int k = 0; k < 2; ++k)
         for (auto [x, y] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
-            s += "(" + std::to_string(x0 + x) + " " + std::to_string(y) + " " + std::to_string(z0 + k) + ")\n";
+            s.append("(").append(std::to_string(x0 + x) + " " + std::to_string(y) + " " + std::to_string(z0 + k) + ")\n");
     return s + ")\n";
 }
 

@@ -29,8 +29,8 @@ enum class EventType {
 struct Event {
     long frame = 0;          // viewer frame counter at which it applies
     EventType type = EventType::Quit;
-    std::string name;        // Set: option; MouseDown/Up: button; Key: key name
-    std::string value;       // Set: value; file events: path
+    std::string name{};      // Set: option; MouseDown/Up: button; Key: key name
+    std::string value{};     // Set: value; file events: path
     float x = 0, y = 0;      // MouseMove: window pixels; Scroll: x = steps; Resize: width, height
     bool shift = false;      // MouseDown: with shift held
 };

@@ -1,6 +1,6 @@
 // flowsurf-reader: the process every file is read in (see reader_process.h). Started by
-// the library with the socket on fd 3; applies its own limits (address space, CPU time
-// per request), then answers requests until Quit or end of stream. A crash, abort or
+// the library with the socket on fd 3; limits its address space, then answers requests
+// (each: its CPU-time budget in seconds, the op, its arguments) until Quit or end of stream. A crash, abort or
 // limit hit here ends this process only; the library reports it as a FormatError.
 #include "core/errors.h"
 #include "io/reader/file_inspect.h"
@@ -22,25 +22,21 @@ namespace {
 
 constexpr int kSocketFd = 3;
 
-// Limits from the command line: --memory-mb N --cpu-s N (0: none).
-struct Limits {
-    unsigned long long memoryMb = 0, cpuSeconds = 0;
-};
-
-void limitMemory(const Limits& l) {
-    if (l.memoryMb == 0) return;
-    rlimit r{rlim_t(l.memoryMb) << 20, rlim_t(l.memoryMb) << 20};
+// The address space from the command line: --memory-mb N (0: none).
+void limitMemory(unsigned long long memoryMb) {
+    if (memoryMb == 0) return;
+    rlimit r{rlim_t(memoryMb) << 20, rlim_t(memoryMb) << 20};
     setrlimit(RLIMIT_AS, &r);
 }
 
-// RLIMIT_CPU counts the process's whole life: give each request its own budget.
-void limitCpuForRequest(const Limits& l) {
-    if (l.cpuSeconds == 0) return;
+// RLIMIT_CPU counts the process's whole life: give each request its own budget (0: none).
+void limitCpuForRequest(unsigned long long cpuSeconds) {
+    if (cpuSeconds == 0) return;
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
     rlimit r{};
     getrlimit(RLIMIT_CPU, &r);
-    r.rlim_cur = rlim_t(u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1) + rlim_t(l.cpuSeconds);
+    r.rlim_cur = rlim_t(u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1) + rlim_t(cpuSeconds);
     if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
     setrlimit(RLIMIT_CPU, &r);
 }
@@ -122,24 +118,22 @@ void error(w::Writer& out, w::Status status, const char* what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    Limits limits;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        std::string a = argv[i];
-        if (a == "--memory-mb") limits.memoryMb = std::strtoull(argv[i + 1], nullptr, 10);
-        if (a == "--cpu-s") limits.cpuSeconds = std::strtoull(argv[i + 1], nullptr, 10);
-    }
-    limitMemory(limits);
+    unsigned long long memoryMb = 0;
+    for (int i = 1; i + 1 < argc; i += 2)
+        if (std::string(argv[i]) == "--memory-mb") memoryMb = std::strtoull(argv[i + 1], nullptr, 10);
+    limitMemory(memoryMb);
     std::unique_ptr<OpenSource> open;
     w::Writer out(kSocketFd);
     for (;;) {
         w::Reader in(kSocketFd);
         w::Op op;
         try {
+            const uint64_t cpuSeconds = in.u64();
             op = w::Op(in.u8());
+            limitCpuForRequest(cpuSeconds);
         } catch (const w::Broken&) {
             return 0;  // the library closed the socket
         }
-        limitCpuForRequest(limits);
         try {
             if (!answer(op, in, out, open)) return 0;
         } catch (const w::Broken&) {

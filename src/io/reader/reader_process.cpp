@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -62,6 +64,14 @@ std::string signalText(int sig) {
     }
 }
 
+// FLOWSURF_READER_TIMEOUT_S, or 0 when unset (the budget follows the input's size).
+long long fixedBudgetSeconds() { return envNumber("FLOWSURF_READER_TIMEOUT_S", 0); }
+
+long long budgetFor(const std::string& path) {
+    const long long fixed = fixedBudgetSeconds();
+    return fixed > 0 ? fixed : readerBudgetSeconds(readerInputBytes(path));
+}
+
 // The reader's warnings that end every reply, printed as the library's own.
 void printWarnings(wire::Reader& r) {
     for (uint64_t i = 0, n = r.count(1 << 16); i < n; ++i)
@@ -69,6 +79,38 @@ void printWarnings(wire::Reader& r) {
 }
 
 }  // namespace
+
+long long readerBudgetSeconds(unsigned long long inputBytes) {
+    constexpr long long kWeek = 7 * 24 * 3600;
+    const double mb = double(inputBytes) / double(1 << 20);
+    const double s = double(kReaderBaseS) + std::ceil(mb * kReaderSecondsPerMb);
+    return s >= double(kWeek) ? kWeek : (long long)s;
+}
+
+unsigned long long readerInputBytes(const std::string& path) {
+    std::error_code ec;
+    const fs::path p(path);
+    unsigned long long bytes = fs::is_regular_file(p, ec) ? fs::file_size(p, ec) : 0;
+    if (ec) bytes = 0;
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".case" && ext != ".pvd" && ext != ".foam") return bytes;
+    // Every file in the folder and below (the step files, processor*/ of a decomposed
+    // case); a folder too large to list counts as unbounded.
+    constexpr size_t kMaxEntries = 200000;
+    size_t entries = 0;
+    const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
+         !ec && it != end; it.increment(ec)) {
+        if (++entries > kMaxEntries) return ~0ull;
+        std::error_code sizeEc;
+        if (it->is_regular_file(sizeEc) && it->path() != p) {
+            const auto size = it->file_size(sizeEc);
+            if (!sizeEc) bytes += size;
+        }
+    }
+    return bytes;
+}
 
 std::string readerExecutable() {
     if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
@@ -83,8 +125,7 @@ std::string readerExecutable() {
 }
 
 ReaderProcess::ReaderProcess()
-    : timeoutS_(int(envNumber("FLOWSURF_READER_TIMEOUT_S", 300))),
-      memoryMb_((unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", long(defaultMemoryMb()))) {
+    : memoryMb_((unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", long(defaultMemoryMb()))) {
     // An address-space limit breaks AddressSanitizer's shadow memory.
     if (sanitized()) memoryMb_ = 0;
     spawn();
@@ -93,6 +134,7 @@ ReaderProcess::ReaderProcess()
 ReaderProcess::~ReaderProcess() {
     if (pid_ <= 0) return;
     wire::Writer w(fd_);
+    w.u64(0);
     w.u8(uint8_t(wire::Op::Quit));
     w.flush();
     reap(false);
@@ -109,10 +151,9 @@ void ReaderProcess::spawn() {
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     // VTK's own printing is trapped in the child; what escapes (a crash's last words) is noise.
     if (!std::getenv("FLOWSURF_READER_STDERR")) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    const std::string mem = std::to_string(memoryMb_), cpu = std::to_string(timeoutS_);
+    const std::string mem = std::to_string(memoryMb_);
     std::vector<char*> argv{const_cast<char*>(exe.c_str()), const_cast<char*>("--memory-mb"),
-                            const_cast<char*>(mem.c_str()), const_cast<char*>("--cpu-s"),
-                            const_cast<char*>(cpu.c_str()), nullptr};
+                            const_cast<char*>(mem.c_str()), nullptr};
     pid_t pid = -1;
     int rc = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -140,7 +181,7 @@ std::string ReaderProcess::reap(bool kill) {
 }
 
 template <typename Send, typename Parse>
-auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
+auto ReaderProcess::call(const std::string& label, long long budgetS, Send send, Parse parse) {
     if (pid_ <= 0) {
         spawn();
         if (!lastOpen_.empty()) {  // the previous child died: restore its open source
@@ -150,8 +191,9 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
         }
     }
     wire::Writer w(fd_);
+    w.u64(uint64_t(budgetS));  // the child's CPU-time budget for this request
     send(w);
-    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(timeoutS_);
+    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(budgetS);
     wire::Reader r(fd_, deadline);
     try {
         if (!w.flush()) throw wire::Broken{};
@@ -173,7 +215,11 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         std::string why = reap(true);
-        if (b.timedOut) why = "took longer than " + std::to_string(timeoutS_) + " s (FLOWSURF_READER_TIMEOUT_S)";
+        if (b.timedOut)
+            why = "took longer than " + std::to_string(budgetS) + " s (" +
+                  (fixedBudgetSeconds() > 0 ? "FLOWSURF_READER_TIMEOUT_S"
+                                            : "its budget for this input's size; FLOWSURF_READER_TIMEOUT_S sets another") +
+                  ")";
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }
@@ -181,7 +227,7 @@ auto ReaderProcess::call(const std::string& label, Send send, Parse parse) {
 core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
     std::lock_guard lock(mutex_);
     return call(
-        path,
+        path, budgetFor(path),
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Dataset));
             w.str(path);
@@ -196,8 +242,9 @@ ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const Sou
 }
 
 ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
+    openBudgetS_ = budgetFor(path);
     SourceInfo info = call(
-        path,
+        path, openBudgetS_,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Open));
             w.str(path);
@@ -218,7 +265,7 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
 core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
     std::lock_guard lock(mutex_);
     return call(
-        label,
+        label, openBudgetS_,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Step));
             w.u64(index);
@@ -229,7 +276,7 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
     return call(
-        path,
+        path, budgetFor(path),
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Inspect));
             w.str(path);

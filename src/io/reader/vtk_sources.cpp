@@ -2,6 +2,7 @@
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
+#include "io/reader/ensight_check.h"
 #include "io/reader/exodus_check.h"
 #include "io/reader/legacy_check.h"
 #include "io/reader/obj_reader.h"
@@ -284,7 +285,7 @@ private:
 
 std::string supportedExtensions() {
     std::string s;
-    for (const auto& f : kFormats) s += (s.empty() ? "" : " ") + std::string(f.extension);
+    for (const auto& f : kFormats) s.append(s.empty() ? "" : " ").append(f.extension);
     return s;
 }
 
@@ -327,6 +328,7 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     }
     if (ext == ".foam") return openOpenFoam(path, trap, options);
     if (ext == ".case") {
+        checkEnSightCase(path);  // counts beyond the file keep VTK's reader busy for minutes
         auto r = vtkSmartPointer<vtkGenericEnSightReader>::New();
         r->SetCaseFileName(path.c_str());
         return makeSource(r, path, name, trap);
