@@ -77,13 +77,15 @@ BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool
 std::vector<std::pair<std::string, methods::MethodParams>> variants(const std::string& method,
                                                                     const BenchOptions& o) {
     std::vector<std::pair<std::string, methods::MethodParams>> v;
-    if (method == "isa")
+    methods::Method m = methods::Method::Isa;
+    methods::valueOf(methods::kMethodNames, method, &m);
+    if (m == methods::Method::Isa)
         for (int r : o.gridRes) {
             methods::MethodParams p;
             p.isa.gridRes = r;
             v.emplace_back("R=" + std::to_string(r), p);
         }
-    else if (method == "hybrid")
+    else if (m == methods::Method::Hybrid)
         for (int l : o.filterLengths) {
             methods::MethodParams p;
             p.hybrid.filterLength = l;

@@ -6,6 +6,7 @@
 
 #include "core/camera.h"
 #include "methods/common/params.h"
+#include "methods/common/params.h"
 
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace flowsurf::bench {
 struct BenchOptions {
     std::string csv;                     // also write CSV here
     int frames = 20;                     // timed frames per row and case
-    std::vector<std::string> methods{"isa", "ibfvs", "hybrid"};
+    std::vector<std::string> methods = ::flowsurf::methods::names(::flowsurf::methods::kMethodNames);
     std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
     std::vector<core::Viewport> imageSizes{{512, 512}, {1024, 1024}};
     std::vector<int> gridRes{128, 256, 512, 1024};   // ISA

@@ -18,7 +18,7 @@ struct BenchOptions {
     std::string csv;          // also write CSV here
     int frames = 20;          // timed frames per row
     bool quick = false;       // a small subset (for smoke runs)
-    std::vector<std::string> methods{"isa", "ibfvs", "hybrid"};
+    std::vector<std::string> methods = ::flowsurf::methods::names(::flowsurf::methods::kMethodNames);
     std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
     std::vector<std::string> sizes{"512x512", "1024x1024"};
     std::vector<int> grids{128, 256, 512, 1024};

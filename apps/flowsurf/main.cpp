@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
     benchCmd->add_flag("--quick", bench.quick, "A small subset of rows (smoke test)");
     benchCmd->add_option("--methods", bench.methods, "Methods to time")->delimiter(',')->capture_default_str()
-        ->check(CLI::IsMember({"isa", "ibfvs", "hybrid"}));
+        ->check(CLI::IsMember(methods::names(methods::kMethodNames)));
     benchCmd->add_option("--triangles", bench.triangles, "Sphere mesh sizes (triangles)")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(8L, 20'000'000L));
     benchCmd->add_option("--sizes", bench.sizes, "Image sizes WxH")->delimiter(',')->capture_default_str();

@@ -8,6 +8,10 @@
 
 namespace flowsurf::core {
 
+// The image sizes every front end accepts, each side in pixels.
+inline constexpr int kMinImageSide = 16;
+inline constexpr int kMaxImageSide = 8192;
+
 struct Viewport {
     int width = 512;   // pixels
     int height = 512;  // pixels

@@ -1,5 +1,6 @@
 #include "view_events.h"
 
+#include "core/camera.h"
 #include "core/errors.h"
 
 #include <algorithm>
@@ -124,8 +125,10 @@ std::vector<Event> parseEventLog(const std::string& text, const std::string& whe
             need(2, "WIDTH HEIGHT");
             e.x = number(w[0], at);
             e.y = number(w[1], at);
-            if (e.x < 16 || e.y < 16 || e.x > 8192 || e.y > 8192)
-                throw FormatError(at + ": window size out of range (16..8192)");
+            if (e.x < core::kMinImageSide || e.y < core::kMinImageSide || e.x > core::kMaxImageSide ||
+                e.y > core::kMaxImageSide)
+                throw FormatError(at + ": window size out of range (" + std::to_string(core::kMinImageSide) + ".." +
+                                  std::to_string(core::kMaxImageSide) + ")");
             break;
         case EventType::Screenshot:
         case EventType::WindowShot:

@@ -206,6 +206,14 @@ constexpr bool valueOf(const EnumNames<E, N>& names, std::string_view text, E* v
     return false;
 }
 
+// Every name of the table, in table order (default lists, command-line checks).
+template <typename E, size_t N>
+std::vector<std::string> names(const EnumNames<E, N>& table) {
+    std::vector<std::string> out;
+    for (const auto& [v, text] : table) out.emplace_back(text);
+    return out;
+}
+
 // "isa, ibfvs, hybrid": the names in table order, for help texts and error messages.
 template <typename E, size_t N>
 std::string nameList(const EnumNames<E, N>& names) {

@@ -17,7 +17,7 @@ namespace flowsurf::methods::hybrid {
 class HybridRenderer final : public FlowMethod {
 public:
     HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
-    const char* name() const override { return "hybrid"; }
+    const char* name() const override { return nameOf(kMethodNames, Method::Hybrid).data(); }
     void renderFrame(const FrameInput& in) override;
     const gl::Texture2D& flowTexture() const override { return lic_.texture(); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }

@@ -15,7 +15,7 @@ namespace flowsurf::methods::ibfvs {
 class IbfvsRenderer final : public FlowMethod {
 public:
     IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport);
-    const char* name() const override { return "ibfvs"; }
+    const char* name() const override { return nameOf(kMethodNames, Method::Ibfvs).data(); }
     void renderFrame(const FrameInput& in) override;
     const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }

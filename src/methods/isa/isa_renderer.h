@@ -15,7 +15,7 @@ namespace flowsurf::methods::isa {
 class IsaRenderer final : public FlowMethod {
 public:
     IsaRenderer(const MethodParams& params, const core::Viewport& viewport);
-    const char* name() const override { return "isa"; }
+    const char* name() const override { return nameOf(kMethodNames, Method::Isa).data(); }
     void renderFrame(const FrameInput& in) override;
     const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }

@@ -205,7 +205,7 @@ std::vector<OptionSpec> buildTable() {
              OptionKind::Path), "o");
     effect(OptionEffect::Output);
     {
-        OptionSpec s{"size", "", gOut, "Image size WxH in pixels", OptionKind::Size, 16, 8192, {},
+        OptionSpec s{"size", "", gOut, "Image size WxH in pixels", OptionKind::Size, core::kMinImageSide, core::kMaxImageSide, {},
                      true, nullptr, nullptr};
         s.set = [](RenderOptions& o, const std::string& v) { o.size = parseSize(v); };
         s.get = [](const RenderOptions& o) { return std::to_string(o.size.width) + "x" + std::to_string(o.size.height); };

@@ -2,6 +2,7 @@
 // kinds, and numbers as the shortest text that reads back exactly.
 #include "session/options/options.h"
 
+#include "core/camera.h"
 #include "core/errors.h"
 
 #include <algorithm>
@@ -49,8 +50,9 @@ core::Viewport parseSize(const std::string& text, const std::string& what) {
     char x = 0, extra = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
         throw ConfigError(what + ": '" + text + "' is not WIDTHxHEIGHT (e.g. 800x600)");
-    if (w < 16 || h < 16 || w > 8192 || h > 8192)
-        throw ConfigError(what + ": " + text + " is out of range (each side 16..8192 pixels)");
+    if (w < core::kMinImageSide || h < core::kMinImageSide || w > core::kMaxImageSide || h > core::kMaxImageSide)
+        throw ConfigError(what + ": " + text + " is out of range (each side " + std::to_string(core::kMinImageSide) +
+                          ".." + std::to_string(core::kMaxImageSide) + " pixels)");
     return {w, h};
 }
 
