@@ -19,5 +19,6 @@ PACKAGES=(
   pybind11-dev python3-dev python3-numpy        # the Python module
   python3-pytest python3-vedo                   # Python tests (vedo: a real client mesh library)
   clang                                         # fuzz targets (libFuzzer, scripts/fuzz.sh)
+  patchelf                                      # the portable tree's $ORIGIN RUNPATHs (test install_portable_tree)
 )
 exec "$(dirname "$0")/apt-install.sh" "${PACKAGES[@]}"
