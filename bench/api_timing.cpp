@@ -2,10 +2,8 @@
 // the public C++ API (as the Python module renders them: advance() then readImage() per
 // frame, the API's stage timer on), each option set ("variant") timed `reps` times
 // interleaved with the others; prints the minimum over the reps of the wall and process-CPU
-// ms per frame and of each stage's mean ms. Not built by CMake; build against a build tree:
-//   g++ -O2 -std=c++20 -Iinclude doc/bench/isa_ibfvs_api_timing.cpp -Lbuild/src/api -lflowsurf
-//       -Wl,-rpath,$PWD/build/src/api -o /tmp/api_timing
-//   /tmp/api_timing windAroundBuildings_wss.vtp wallShearStress 800x600 3 orbit=0 orbit=1
+// ms per frame and of each stage's mean ms. Built as build/bench/flowsurf_api_timing:
+//   build/bench/flowsurf_api_timing windAroundBuildings_wss.vtp wallShearStress 800x600 3 orbit=0 orbit=1
 // INPUT FIELD (- : the default) WxH REPS VARIANT...; VARIANT = option=value[,option=value...]
 #include <flowsurf/flowsurf.h>
 
