@@ -66,6 +66,7 @@ BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool
     row.frameMs = std::chrono::duration<double, std::milli>(t1 - t0).count() / frames;
     if (!stageTimes) return row;
     method.timer().reset();
+    method.timer().setSynchronous(true);  // each stage its own work, also on llvmpipe
     method.timer().setEnabled(true);
     for (int k = 0; k < frames; ++k) frame(dynamic ? k + 3 + frames : 0);
     method.timer().setEnabled(false);

@@ -45,7 +45,7 @@ struct BenchRow {
     std::string param;                   // "R=256" (ISA), "L=50" (hybrid), "-"
     std::string glPath;                  // the path that ran: "fragment" or "compute"
     double frameMs = 0;                  // whole frame, pipelined (timer off)
-    std::vector<std::pair<std::string, double>> stageMs;  // per stage (GPU timestamps)
+    std::vector<std::pair<std::string, double>> stageMs;  // per stage (synchronised pass)
 };
 
 // Runs the suite (needs a current GL context); prints the table as it goes.

@@ -68,7 +68,7 @@ int runBench(const BenchOptions& o) {
         b.filterLengths = {25};
     }
     gl::HeadlessContext context(false);
-    std::printf("flowsurf bench on %s (ms per frame; frame pipelined, stages from GPU timestamps)\n",
+    std::printf("flowsurf bench on %s (ms per frame; frame pipelined, stages synchronised)\n",
                 context.description().c_str());
     // The driver and its version, for figures from several machines (bench/gpu/run.sh).
     std::printf("GL driver: %s; %s\n", reinterpret_cast<const char*>(glGetString(GL_VENDOR)),

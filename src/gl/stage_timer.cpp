@@ -14,7 +14,8 @@ constexpr size_t kMaxPending = 8;
 
 void StageTimer::beginFrame() {
     if (!enabled_) return;
-    if (queries_ < 0) queries_ = epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query");
+    if (queries_ < 0)
+        queries_ = !synchronous_ && (epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query"));
     if (!queries_) {
         glFinish();
         stage_.clear();

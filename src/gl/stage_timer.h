@@ -19,6 +19,14 @@ namespace flowsurf::gl {
 class StageTimer {
 public:
     void setEnabled(bool enabled) { enabled_ = enabled; }
+    // Synchronous: glFinish + a CPU clock at each boundary instead of timestamp queries.
+    // The pipeline drains at every stage, but each stage is charged its own work also on
+    // renderers that defer work until a flush (llvmpipe rasterises a draw when a later
+    // command needs it, so its timestamp lands inside the next stage). Call between frames.
+    void setSynchronous(bool on) {
+        synchronous_ = on;
+        queries_ = -1;
+    }
     bool enabled() const { return enabled_; }
     void beginFrame();
     // Marks the start of stage `name` (and the end of the previous one).
@@ -48,6 +56,7 @@ private:
     void add(const std::string& stage, double ms) const;
 
     bool enabled_ = false;
+    bool synchronous_ = false;
     int queries_ = -1;  // timer queries supported: -1 not yet asked
     std::vector<Mark> current_;
     // Mutable: meanMs() (const to its callers) folds in the frames still pending.
