@@ -69,6 +69,7 @@ struct vtkFlowSurfMapper::Internals
   fs::gl::Program composite, compositeHost;
   fs::gl::VertexArray emptyVao;
   fs::gl::Texture2D hostTable;  // the lookup table's 256 colours, RGBA8
+  std::vector<glm::vec3> hostTableColors;  // what hostTable holds: uploaded when it changes
   bool glChecked = false;
 
   // ParaView's look of the surface when the composite reproduces it (one surface pass per
@@ -83,6 +84,7 @@ struct vtkFlowSurfMapper::Internals
     compositeHost = {};
     emptyVao = {};
     hostTable = {};
+    hostTableColors.clear();
   }
 
   // The options the frame loop runs with: with the blend overlay F_s is ParaView's
@@ -395,19 +397,23 @@ void vtkFlowSurfMapper::Internals::drawComposite(
   if (host)
   {
     const fs::paraview::HostLook& look = *host;
-    if (!hostTable)
+    if (!hostTable || look.table != hostTableColors)
     {
-      hostTable = fs::gl::Texture2D(GL_RGBA8, 256, 1, GL_LINEAR);
-    }
-    std::vector<unsigned char> rgba(256 * 4, 255);
-    for (size_t i = 0; i < look.table.size() && i < 256; ++i)
-    {
-      for (int c = 0; c < 3; ++c)
+      if (!hostTable)
       {
-        rgba[i * 4 + size_t(c)] = (unsigned char)std::lround(std::clamp(look.table[i][c], 0.0f, 1.0f) * 255.0f);
+        hostTable = fs::gl::Texture2D(GL_RGBA8, 256, 1, GL_LINEAR);
       }
+      std::vector<unsigned char> rgba(256 * 4, 255);
+      for (size_t i = 0; i < look.table.size() && i < 256; ++i)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          rgba[i * 4 + size_t(c)] = (unsigned char)std::lround(std::clamp(look.table[i][c], 0.0f, 1.0f) * 255.0f);
+        }
+      }
+      glTextureSubImage2D(hostTable.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+      hostTableColors = look.table;
     }
-    glTextureSubImage2D(hostTable.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     glBindTextureUnit(2, method.surfaceShade().id());
     glBindTextureUnit(3, hostTable.id());
     glUniform1i(program.uniform("uMultiply"), blend);
