@@ -1,6 +1,6 @@
 // Overlay [L eq. 10], compute path: one invocation per pixel of the composite (RGBA8).
 #include "common/overlay.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = 0, rgba8) writeonly uniform image2D uComposite;
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);

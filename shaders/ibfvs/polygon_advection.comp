@@ -2,7 +2,7 @@
 // advection draw interpolated (RG32F) -> resampled F_a with the noise injected
 // (ibfvs/polygon_advection.glsl); the gray flow background elsewhere [L §IV-F.2].
 #include "ibfvs/polygon_advection.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = 1) uniform sampler2D uTexcoord;  // RG32F, from the draw
 layout(binding = 2) uniform sampler2D uDepth;     // the draw's depth, 1 = background
 layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;

@@ -1,7 +1,7 @@
 // ISA stages 3-4, compute path, pixel warp (isa/texture_advection.glsl): one invocation
 // per pixel writes the next F_a (R32F image).
 #include "isa/texture_advection.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

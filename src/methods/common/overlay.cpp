@@ -64,10 +64,7 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
         glGetNamedFramebufferAttachmentParameteriv(target.id(), GL_COLOR_ATTACHMENT0,
                                                    GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &composite);
         glBindImageTexture(0, GLuint(composite), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glDispatchCompute(GLuint((flow.width() + 7) / 8), GLuint((flow.height() + 7) / 8), 1);
-        // Read next as a texture, a read-back or a framebuffer (the edge mask draws on it).
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                        GL_PIXEL_BUFFER_BARRIER_BIT);
+        dispatchPerPixel(flow.width(), flow.height());  // read next also by the edge mask's draw
         return;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());

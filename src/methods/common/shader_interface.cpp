@@ -32,9 +32,16 @@ const std::string& shaderInterface() {
         s += enumDefines("KERNEL", kKernelNames);
         s += enumDefines("INTEGRATOR", kIntegratorNames);
         s += enumDefines("EDGE_FILL", kEdgeFillNames);
+        s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
         return s;
     }();
     return defines;
+}
+
+void dispatchPerPixel(int width, int height) {
+    glDispatchCompute(GLuint((width + kPixelGroup - 1) / kPixelGroup), GLuint((height + kPixelGroup - 1) / kPixelGroup), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_PIXEL_BUFFER_BARRIER_BIT);
 }
 
 gl::Program program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines) {

@@ -16,6 +16,14 @@ namespace flowsurf::methods {
 // "#define NOISE_MEAN 0.5\n#define KERNEL_GAUSSIAN 2\n#define MAX_LEVELS 9\n..."
 const std::string& shaderInterface();
 
+// Work-group side of the per-pixel compute passes (PIXEL_GROUP in GLSL).
+inline constexpr int kPixelGroup = 8;
+
+// A per-pixel compute pass over a width x height image with the bound program, then the
+// barrier that makes its image stores visible to what reads them next: textures, read-backs,
+// framebuffer draws.
+void dispatchPerPixel(int width, int height);
+
 // A linked program of the embedded `stages` with the interface and `defines` prepended.
 gl::Program program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines = "");
 

@@ -50,11 +50,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glBindTextureUnit(1, texcoord_.id());
     glBindTextureUnit(2, depth.id());
     glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(GLuint((viewport.width + 7) / 8), GLuint((viewport.height + 7) / 8), 1);
-    // Next read by the overlay, the next frame's draw and a parallel merge (textures,
-    // read-backs) or read back.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                    GL_PIXEL_BUFFER_BARRIER_BIT);
+    dispatchPerPixel(viewport.width, viewport.height);
 }
 
 void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,

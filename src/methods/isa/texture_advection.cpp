@@ -63,10 +63,7 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     glBindTextureUnit(2, surfaceDepth.id());
     if (path_ == GlPath::Compute) {
         glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glDispatchCompute(GLuint((nextFlow.width() + 7) / 8), GLuint((nextFlow.height() + 7) / 8), 1);
-        // Next read by the overlay and the next frame's advection (textures) or read back.
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                        GL_PIXEL_BUFFER_BARRIER_BIT);
+        dispatchPerPixel(nextFlow.width(), nextFlow.height());
         return;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, nextFlowFbo.id());
