@@ -1,6 +1,9 @@
 // Shared by the test_io_*.cpp unit tests: a fresh folder per test and small files.
 #pragma once
 
+#include "core/errors.h"
+#include "io/dataset_reader.h"
+
 #include <gtest/gtest.h>
 
 #include <vtkCellArray.h>
@@ -11,6 +14,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -60,6 +64,31 @@ inline void writeText(const std::string& path, const std::string& text) {
 inline std::string readBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Sets an environment variable for the scope.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
+    ~ScopedEnv() { unsetenv(name_); }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* name_;
+};
+
+// The FormatError's message when reading `path`; a hang, another type or no error say so
+// instead.
+inline std::string formatErrorOf(const std::string& path) {
+    try {
+        io::readDataset(path);
+    } catch (const FormatError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("wrong type: ") + e.what();
+    }
+    return "no exception";
 }
 
 inline vtkSmartPointer<vtkFloatArray> makeArray(const char* name, int components) {

@@ -18,32 +18,11 @@ using namespace flowsurf::testing_io;
 
 namespace {
 
-// Sets an environment variable for the scope.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
-    ~ScopedEnv() { unsetenv(name_); }
-
-private:
-    const char* name_;
-};
-
 std::string script(const ScratchDir& dir, const std::string& body) {
     const std::string path = dir.file("reader.sh");
     writeText(path, "#!/bin/sh\n" + body + "\n");
     chmod(path.c_str(), 0755);
     return path;
-}
-
-std::string formatErrorOf(const std::string& path) {
-    try {
-        io::readDataset(path);
-    } catch (const FormatError& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("wrong type: ") + e.what();
-    }
-    return "no exception";
 }
 
 std::string validPly(const ScratchDir& dir) {
