@@ -95,8 +95,8 @@ void StageTimer::add(const std::string& stage, double ms) const {
     totalMs_[stage] += ms;
 }
 
-std::vector<std::pair<std::string, double>> StageTimer::meanMs() const {
-    collect(0);
+std::vector<std::pair<std::string, double>> StageTimer::meanMs(bool waitForGpu) const {
+    collect(waitForGpu ? 0 : kMaxPending);
     std::vector<std::pair<std::string, double>> out;
     for (const auto& n : order_) out.emplace_back(n, frames_ ? totalMs_.at(n) / frames_ : 0.0);
     return out;

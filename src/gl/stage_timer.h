@@ -34,8 +34,10 @@ public:
     void endFrame();
     // Mean ms per frame for each stage since reset(), in first-seen order. A stage that
     // ran in only some frames (the dynamic stages) is averaged over all frames. Waits for
-    // the frames still on the GPU: the context must be current, as for every call here.
-    std::vector<std::pair<std::string, double>> meanMs() const;
+    // the frames still on the GPU, unless `waitForGpu` is false (a live display each frame:
+    // the frames whose timestamps are in so far). The context must be current, as for every
+    // call here.
+    std::vector<std::pair<std::string, double>> meanMs(bool waitForGpu = true) const;
     void reset();
 
 private:

@@ -180,7 +180,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
             auto& timer = pipeline.method(i).timer();
             ImGui::Text("%s%s", upper(pipeline.methodName(i)).c_str(),
                         pipeline.method(i).lastFrameDynamic() ? " (dynamic case)" : " (static case)");
-            for (const auto& [stage, ms] : timer.meanMs()) ImGui::BulletText("%-28s %7.2f ms", stage.c_str(), ms);
+            for (const auto& [stage, ms] : timer.meanMs(false)) ImGui::BulletText("%-28s %7.2f ms", stage.c_str(), ms);
         }
     }
 
