@@ -184,6 +184,8 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         }
     }
 
+    qualitySection(pipeline);
+
     // Outputs.
     if (ImGui::CollapsingHeader("Save")) {
         ImGui::InputText("##shot", &screenshotPath_);
@@ -214,6 +216,33 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     }
     ImGui::PopItemWidth();
     ImGui::End();
+}
+
+// How faithful each view's texture is to the field: off by default (a measured frame
+// costs a surface pass, a read-back and CPU work); on, every N-th frame is measured.
+void Window::qualitySection(ViewPipeline& pipeline) {
+    if (!ImGui::CollapsingHeader("Quality")) return;
+    bool on = qualityEvery_ > 0;
+    if (ImGui::Checkbox("measure", &on)) qualityEvery_ = on ? 10 : 0;
+    if (on) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(100);
+        ImGui::SliderInt("every N frames", &qualityEvery_, 2, 60);
+    }
+    if (!pipeline.ready()) return;
+    session::Playback& playback = pipeline.playback();
+    if (playback.qualityEvery() != qualityEvery_) playback.setQuality(qualityEvery_);
+    if (!on) return;
+    for (size_t i = 0; i < pipeline.viewCount() && i < playback.viewCount(); ++i) {
+        const auto& frames = playback.qualityFrames(i);
+        ImGui::Text("%s: %zu frames measured", upper(pipeline.methodName(i)).c_str(), frames.size());
+        if (frames.empty()) continue;
+        const quality::QualitySummary summary = playback.qualitySummary(i);
+        for (const quality::MetricInfo& m : quality::metricTable()) {
+            ImGui::BulletText("%-30s %8.3f  (median %.3f)", m.name, frames.back().*m.member, summary.median.*m.member);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.help);
+        }
+    }
 }
 
 }  // namespace flowsurf::app::view

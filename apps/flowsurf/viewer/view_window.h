@@ -46,6 +46,8 @@ private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
     void optionWidget(const struct OptionSpec& spec, const ViewerState& state);
     void emitSet(const std::string& name, const std::string& value);
+    // The panel's Quality section (doc/algorithms.md §9): off until turned on.
+    void qualitySection(ViewPipeline& pipeline);
 
     GLFWwindow* window_ = nullptr;
     std::vector<Event> queue_;
@@ -54,6 +56,7 @@ private:
     std::string configPath_ = "flowsurf_view.json", keyframePath_ = "flowsurf_camera_path.json";
     std::string screenshotPath_ = "flowsurf_screenshot.png", recordPath_ = "flowsurf_recording.mp4";
     std::string openPath_, windowShot_;
+    int qualityEvery_ = 0;  // measure every N frames (0: off)
 
     friend struct WindowCallbacks;
 };
