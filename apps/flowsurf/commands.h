@@ -18,8 +18,8 @@ int runCompare(const RenderOptions& options, const std::string& methods, const Q
 // "isa,ibfvs" -> methods; ConfigError naming a bad entry (--methods of compare, quality).
 std::vector<methods::Method> splitMethods(const std::string& list);
 // Frames 0..frames of `playback` from a fresh start (after its warm-up if `warmUp`),
-// measured every `every` frames; returns ms/frame over the frames the quality did not
-// touch, each timed alone.
+// measured every `every` frames; returns ms/frame, each frame timed alone, the quality's
+// own time left out.
 double advanceMeasured(session::Playback& playback, int frames, int every, bool warmUp);
 // The quality table of each method's animation (doc/algorithms.md, "Quality metrics").
 int runQuality(const RenderOptions& options, const std::string& methods, const QualityOutput& quality);

@@ -35,17 +35,15 @@ double advanceMeasured(Playback& playback, int frames, int every, bool warmUp) {
     playback.setQuality(every);
     playback.start(warmUp);
     double ms = 0.0;
-    int timed = 0;
     for (int k = 0; k <= frames; ++k) {
         glFinish();
         const auto t0 = std::chrono::steady_clock::now();
         playback.advance();
         glFinish();
-        if (playback.qualityRanLastFrame()) continue;
-        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        ++timed;
+        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() -
+              playback.qualityMsLastFrame();
     }
-    return timed ? ms / timed : quality::kNoValue;
+    return ms / (frames + 1);
 }
 
 int runCompare(const RenderOptions& o, const std::string& methodList, const QualityOutput& quality) {

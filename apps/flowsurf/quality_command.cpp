@@ -11,7 +11,6 @@
 
 #include <epoxy/gl.h>
 
-#include <chrono>
 #include <cstdio>
 
 namespace flowsurf::app {

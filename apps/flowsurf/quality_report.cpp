@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 
 namespace flowsurf::app {
@@ -35,6 +36,11 @@ void validateQualityOutput(const QualityOutput& q) {
     const std::string ext = ".json";
     if (q.file.size() <= ext.size() || q.file.compare(q.file.size() - ext.size(), ext.size(), ext) != 0)
         throw ConfigError("--quality: '" + q.file + "' must be a .json file");
+    // Checked now so that a report that cannot be written fails before any other output.
+    const std::filesystem::path dir = std::filesystem::path(q.file).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
+        throw IoError("--quality: cannot write '" + q.file + "': no directory '" + dir.string() + "'");
 }
 
 std::string qualityJson(const session::RenderOptions& o, const std::string& command, const std::string& glRenderer,

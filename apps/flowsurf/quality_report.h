@@ -16,14 +16,14 @@ struct QualityOutput {
     std::string file;  // empty: no report
     int every = 1;     // measure every N-th frame of an animation (a PNG: its last frame)
 };
-// Refuses a report path that is not a .json file and an interval below 1 (ConfigError),
-// before any work.
+// Refuses, before any work, a report path that is not a .json file or an interval below 1
+// (ConfigError), and a report path whose directory does not exist (IoError).
 void validateQualityOutput(const QualityOutput& q);
 
 // One method's frames and their summary.
 struct MethodQuality {
     std::string method;
-    double msPerFrame = 0.0;  // frames not measured (nor kept for the next measurement)
+    double msPerFrame = 0.0;  // the quality's own time left out; NaN: not timed
     std::vector<quality::FrameQuality> frames;
     quality::QualitySummary summary;
 };

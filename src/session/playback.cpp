@@ -7,6 +7,7 @@
 #include "methods/make_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace flowsurf::session {
@@ -180,6 +181,7 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
     const methods::SurfaceGpu& s = surface_->atTime(time);
     const methods::TimeLevels* levels = nullptr;
     bool levelsRead = false;
+    qualityMs_ = 0.0;
     for (size_t i = 0; i < methods_.size(); ++i) {
         methods::FlowMethod* m = methods_[i].get();
         if (m->usesTimeLevels() && !levelsRead) {
@@ -191,7 +193,6 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         m->renderFrame(in);
         if (qualityNext_ != QualityStep::None) collectQuality(i, s, camera, k);
     }
-    qualityRan_ = qualityNext_ != QualityStep::None;
     qualityNext_ = QualityStep::None;
     lastCamera_ = camera;
     lastTime_ = surface_->unsteady() ? time : 0.0;
@@ -257,8 +258,11 @@ void Playback::collectQuality(size_t view, const methods::SurfaceGpu& surface, c
             probes_.push_back(std::make_unique<quality::QualityProbe>(options_.size, qualityParams_,
                                                                       options_.params.common.cullBackFaces));
     }
+    glFinish();  // the method's frame is not the quality's time
+    const auto t0 = std::chrono::steady_clock::now();
     if (qualityNext_ == QualityStep::Keep) probes_[view]->keep(*methods_[view], camera, k);
     else qualityLog_[view].push_back(probes_[view]->measure(*methods_[view], surface, camera, k));
+    qualityMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 const std::vector<quality::FrameQuality>& Playback::qualityFrames(size_t view) const { return qualityLog_.at(view); }

@@ -122,8 +122,9 @@ public:
     const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const;
     quality::QualitySummary qualitySummary(size_t view) const;
     void clearQuality();
-    // True if the last frame measured or kept a frame for the quality (a timer skips it).
-    bool qualityRanLastFrame() const { return qualityRan_; }
+    // Wall time the quality took in the last frame (measuring, or keeping the frame for the
+    // next measurement; 0: none), for timers that leave it out.
+    double qualityMsLastFrame() const { return qualityMs_; }
 
 private:
     void build();                       // surface, renderers, cameras from options_
@@ -158,7 +159,7 @@ private:
     int qualityEvery_ = 0;
     quality::QualityParams qualityParams_;
     QualityStep qualityNext_ = QualityStep::None;
-    bool qualityRan_ = false;
+    double qualityMs_ = 0.0;
     int qualityCounter_ = 0;            // frames since the quality log was cleared, warm-up not
     std::vector<std::unique_ptr<quality::QualityProbe>> probes_;
     std::vector<std::vector<quality::FrameQuality>> qualityLog_;
