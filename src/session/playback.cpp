@@ -251,13 +251,22 @@ Playback::QualityStep Playback::qualityStep(int stillFrame, int frame) {
     return phase == qualityEvery_ - 2 ? QualityStep::Keep : QualityStep::None;
 }
 
+void Playback::makeProbes() {
+    if (probes_.size() == methods_.size()) return;
+    probes_.clear();
+    for (size_t i = 0; i < methods_.size(); ++i)
+        probes_.push_back(std::make_unique<quality::QualityProbe>(options_.size, qualityParams_,
+                                                                  options_.params.common.cullBackFaces));
+}
+
+quality::FrameQuality Playback::measureLastFrame(size_t view) {
+    makeProbes();
+    const uint32_t k = clock_ > 0 ? clock_ - 1 : 0;
+    return probes_.at(view)->measure(*methods_.at(view), surface_->atTime(lastTime_), lastCamera_, k);
+}
+
 void Playback::collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k) {
-    if (probes_.size() != methods_.size()) {
-        probes_.clear();
-        for (size_t i = 0; i < methods_.size(); ++i)
-            probes_.push_back(std::make_unique<quality::QualityProbe>(options_.size, qualityParams_,
-                                                                      options_.params.common.cullBackFaces));
-    }
+    makeProbes();
     glFinish();  // the method's frame is not the quality's time
     const auto t0 = std::chrono::steady_clock::now();
     if (qualityNext_ == QualityStep::Keep) probes_[view]->keep(*methods_[view], camera, k);

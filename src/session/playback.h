@@ -122,6 +122,9 @@ public:
     const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const;
     quality::QualitySummary qualitySummary(size_t view) const;
     void clearQuality();
+    // Measures view i's last frame now (surface and camera of the last frame); with the
+    // quality off it has no frame before it, so no correlations. Not added to the log.
+    quality::FrameQuality measureLastFrame(size_t view);
     // Wall time the quality took in the last frame (measuring, or keeping the frame for the
     // next measurement; 0: none), for timers that leave it out.
     double qualityMsLastFrame() const { return qualityMs_; }
@@ -138,6 +141,7 @@ private:
     // What the quality probes do with the frame renderAll draws next (setQuality).
     enum class QualityStep { None, Keep, Measure };
     QualityStep qualityStep(int stillFrame = -1, int frame = -1);
+    void makeProbes();
     void collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
