@@ -23,6 +23,9 @@ std::vector<methods::Method> splitMethods(const std::string& list);
 double advanceMeasured(session::Playback& playback, int frames, int every, bool warmUp);
 // The quality table of each method's animation (doc/algorithms.md, "Quality metrics").
 int runQuality(const RenderOptions& options, const std::string& methods, const QualityOutput& quality);
+// quality --auto-tune: a small parameter grid per method on this view, the trade-off
+// front of orientation error, frame correlation and ms/frame, and the best trade.
+int runAutoTune(const RenderOptions& options, const std::string& methods, const QualityOutput& quality);
 
 struct BenchOptions {
     std::string csv;          // also write CSV here

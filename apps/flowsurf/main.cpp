@@ -68,6 +68,10 @@ int main(int argc, char** argv) {
                                                          "orientation error, frame correlation, contrast, feature size");
     app::addRenderOptions(*qualityCmd, quality);
     qualityCmd->add_option("--methods", qualityMethods, "Comma-separated methods to measure")->capture_default_str();
+    bool autoTune = false;
+    qualityCmd->add_flag("--auto-tune", autoTune, "Try a small grid of each method's parameters (step, alpha, "
+                                                  "filter length, noise scale) on this view; print the trade-off "
+                                                  "between orientation error, frame correlation and ms/frame");
     for (auto [cmd, out] : {std::pair{renderCmd, &renderQuality}, {compareCmd, &compareQuality}, {qualityCmd, &qualityOut}}) {
         cmd->add_option("--quality", out->file, "Write the quality report (per method: median, worst and every "
                                                 "measured frame; the options and the GL renderer) as JSON")
@@ -182,7 +186,9 @@ int main(int argc, char** argv) {
 #endif
         }
         if (*compareCmd) return app::runCompare(compare, compareMethods, compareQuality);
-        if (*qualityCmd) return app::runQuality(quality, qualityMethods, qualityOut);
+        if (*qualityCmd)
+            return autoTune ? app::runAutoTune(quality, qualityMethods, qualityOut)
+                            : app::runQuality(quality, qualityMethods, qualityOut);
         if (*benchCmd) return app::runBench(bench);
     } catch (const std::exception&) {
         return reportCurrentError();

@@ -198,6 +198,13 @@ assert all(m['frames_measured'] == 4 and m['ms_per_frame'] > 0 for m in d['metho
 else
     bad "compare --quality"
 fi
+if "$FLOWSURF" quality builtin:sphere --size 64x64 --frames 2 --quality-every 1 --methods hybrid --auto-tune -q |
+   grep -qE '^best trade for hybrid: --filter-length [0-9]+ --lic-step-px [0-9]+ --noise-scale [0-9]+'; then
+    ok "quality --auto-tune names the best trade"
+else
+    bad "quality --auto-tune names the best trade"
+fi
+expect_fail "auto-tune with --quality" 2 "auto-tune"         "$WORK/q0.json" -- quality builtin:sphere --auto-tune --quality "$WORK/q0.json" -q
 expect_fail "quality unknown method" 2 "'lic' is not one of" "$WORK/q1.json" -- quality builtin:sphere --methods isa,lic --quality "$WORK/q1.json" -q
 expect_fail "quality not json"       2 "q2.txt' must be a .json" "$WORK/q2.txt" -- quality builtin:sphere --quality "$WORK/q2.txt" -q
 expect_fail "quality missing input"  3 "nosuch.vtp"          "$WORK/q3.json" -- quality "$WORK/nosuch.vtp" --quality "$WORK/q3.json" -q
