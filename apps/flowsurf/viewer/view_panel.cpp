@@ -184,7 +184,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         }
     }
 
-    qualitySection(pipeline);
+    qualitySection(state, pipeline);
 
     // Outputs.
     if (ImGui::CollapsingHeader("Save")) {
@@ -219,20 +219,21 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
 }
 
 // How faithful each view's texture is to the field: off by default (a measured frame
-// costs a surface pass, a read-back and CPU work); on, every N-th frame is measured.
-void Window::qualitySection(ViewPipeline& pipeline) {
+// costs a surface pass, a read-back and CPU work); on, every N-th frame is measured. The
+// widgets emit `set quality N|off`, recorded like every edit.
+void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
+    bool on = state.qualityEvery > 0;
+    if (on) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // turned on by an event or a replay
     if (!ImGui::CollapsingHeader("Quality")) return;
-    bool on = qualityEvery_ > 0;
-    if (ImGui::Checkbox("measure", &on)) qualityEvery_ = on ? 10 : 0;
+    if (ImGui::Checkbox("measure", &on)) emitSet("quality", on ? "10" : "off");
     if (on) {
+        int every = state.qualityEvery;
         ImGui::SameLine();
         ImGui::SetNextItemWidth(100);
-        ImGui::SliderInt("every N frames", &qualityEvery_, 2, 60);
+        if (ImGui::SliderInt("every N frames", &every, 2, 60)) emitSet("quality", std::to_string(every));
     }
-    if (!pipeline.ready()) return;
+    if (!on || !pipeline.ready()) return;
     session::Playback& playback = pipeline.playback();
-    if (playback.qualityEvery() != qualityEvery_) playback.setQuality(qualityEvery_);
-    if (!on) return;
     for (size_t i = 0; i < pipeline.viewCount() && i < playback.viewCount(); ++i) {
         const auto& frames = playback.qualityFrames(i);
         ImGui::Text("%s: %zu frames measured", upper(pipeline.methodName(i)).c_str(), frames.size());

@@ -47,7 +47,7 @@ private:
     void optionWidget(const struct OptionSpec& spec, const ViewerState& state);
     void emitSet(const std::string& name, const std::string& value);
     // The panel's Quality section (doc/algorithms.md §9): off until turned on.
-    void qualitySection(ViewPipeline& pipeline);
+    void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
 
     GLFWwindow* window_ = nullptr;
     std::vector<Event> queue_;
@@ -56,7 +56,6 @@ private:
     std::string configPath_ = "flowsurf_view.json", keyframePath_ = "flowsurf_camera_path.json";
     std::string screenshotPath_ = "flowsurf_screenshot.png", recordPath_ = "flowsurf_recording.mp4";
     std::string openPath_, windowShot_;
-    int qualityEvery_ = 0;  // measure every N frames (0: off)
 
     friend struct WindowCallbacks;
 };
