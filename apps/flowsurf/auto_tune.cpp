@@ -57,13 +57,15 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Axis>& axes
 }
 
 // Marks the trials no other trial beats in all three (error, 1 - correlation, ms), and
-// scores each: error in degrees + 100 (1 - frame correlation) + 5 log2(ms / fastest ms),
-// so 1 degree weighs as much as 0.01 of correlation and as 15 % of time.
+// scores each: error in degrees + 100 (1 - frame correlation) + 10 (1 - counted fraction)
+// + 5 log2(ms / fastest ms), so 1 degree weighs as much as 0.01 of correlation, a tenth of
+// the surface without clear streaks and 15 % of time.
 void rank(std::vector<Trial>& trials) {
     double fastest = 1e300;
     for (const Trial& t : trials) fastest = std::min(fastest, t.ms);
     for (Trial& t : trials) {
-        t.score = t.error + 100.0 * (1.0 - t.correlation) + 5.0 * std::log2(std::max(t.ms / fastest, 1.0));
+        t.score = t.error + 100.0 * (1.0 - t.correlation) + 10.0 * (1.0 - t.counted) +
+                  5.0 * std::log2(std::max(t.ms / fastest, 1.0));
         t.front = std::none_of(trials.begin(), trials.end(), [&](const Trial& o) {
             const bool noWorse = o.error <= t.error && o.correlation >= t.correlation && o.ms <= t.ms;
             return noWorse && (o.error < t.error || o.correlation > t.correlation || o.ms < t.ms);
