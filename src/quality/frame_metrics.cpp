@@ -143,18 +143,22 @@ ContrastStats contrast(const FrameSample& s, const QualityParams& p) {
                 if (!on(x + dx, y + dy) || std::abs(s.layer[size_t(y + dy) * w + x + dx] - l) > 0.01f)
                     band[size_t(y) * w + x] = 1;
         }
-    for (int pass = 0; pass < p.edgeBandPx; ++pass) {
-        std::vector<uint8_t> next = band;
+    // Chebyshev dilation by edgeBandPx: along rows, then along columns.
+    auto dilate = [&](int stepX, int stepY) {
+        std::vector<uint8_t> next(band.size(), 0);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
-                for (int dy = -1; dy <= 1 && !next[size_t(y) * w + x]; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx)
-                        if (x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h && band[size_t(y + dy) * w + x + dx]) {
-                            next[size_t(y) * w + x] = 1;
-                            break;
-                        }
+                for (int i = -p.edgeBandPx; i <= p.edgeBandPx; ++i) {
+                    const int px = x + i * stepX, py = y + i * stepY;
+                    if (px >= 0 && py >= 0 && px < w && py < h && band[size_t(py) * w + px]) {
+                        next[size_t(y) * w + x] = 1;
+                        break;
+                    }
+                }
         band.swap(next);
-    }
+    };
+    dilate(1, 0);
+    dilate(0, 1);
     struct Acc {
         double s = 0, s2 = 0;
         size_t n = 0;

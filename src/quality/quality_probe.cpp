@@ -58,6 +58,7 @@ FrameQuality QualityProbe::measure(const methods::FlowMethod& method, const meth
     now_.dirPx.assign(n, glm::vec2(0.0f));
     now_.prevPx.assign(previous ? n : 0, glm::vec2(NAN));
     const float depthTolerance = 0.02f * (prevCamera_.farPlane - prevCamera_.nearPlane);
+    const glm::mat4 prevViewProj = prevCamera_.viewProjection(viewport_.aspect());  // T(x) of §0, as core::projectToPixels
     for (size_t i = 0; i < n; ++i) {
         now_.layer[i] = vel[4 * i + 3];
         if (now_.layer[i] <= 0.0f) now_.depth[i] = 1.0f;  // the method's pixel the reference does not see
@@ -66,7 +67,10 @@ FrameQuality QualityProbe::measure(const methods::FlowMethod& method, const meth
         now_.dirPx[i] = projectedVelocityPx(viewProj, viewport_, p, v);
         if (!previous) continue;
         // Where the point was in the previous image, if it was the visible layer there.
-        const glm::vec3 q = core::projectToPixels(prevCamera_, viewport_, p);
+        const glm::vec4 clip = prevViewProj * glm::vec4(p, 1.0f);
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        const glm::vec3 q((ndc.x * 0.5f + 0.5f) * float(viewport_.width), (ndc.y * 0.5f + 0.5f) * float(viewport_.height),
+                          ndc.z * 0.5f + 0.5f);
         const int x = int(std::floor(q.x)), y = int(std::floor(q.y));
         if (x < 0 || y < 0 || x >= viewport_.width || y >= viewport_.height) continue;
         const float seen = prev_.depth[size_t(y) * viewport_.width + x];
