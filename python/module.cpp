@@ -2,6 +2,7 @@
 // numpy arrays in (any dtype, any strides: converted), numpy arrays out; rendering
 // releases the GIL. The keyword layer, mesh adapters and PNG encoding are in
 // flowsurf/__init__.py.
+#include <cmath>
 #include <flowsurf/flowsurf.h>
 
 #include <pybind11/numpy.h>
@@ -158,7 +159,24 @@ PYBIND11_MODULE(_flowsurf, m) {
         .def_property_readonly("time", &Renderer::time)
         .def_property_readonly("width", &Renderer::width)
         .def_property_readonly("height", &Renderer::height)
-        .def("gl_renderer", &Renderer::glRenderer);
+        .def("gl_renderer", &Renderer::glRenderer)
+        .def("set_quality_every", &Renderer::setQualityEvery)
+        .def("quality", [](const Renderer& r) {
+            Quality q;
+            {
+                py::gil_scoped_release release;
+                q = r.quality();
+            }
+            // Metrics by the JSON report's names; None where not measured (NaN).
+            auto named = [](const QualityMetrics& m) {
+                py::dict d;
+                for (const auto& [name, value] : m.named())
+                    d[py::str(name)] = std::isnan(value) ? py::object(py::none()) : py::object(py::float_(value));
+                return d;
+            };
+            return py::dict(py::arg("frames") = q.frames, py::arg("median") = named(q.median),
+                            py::arg("worst") = named(q.worst));
+        });
 
     m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
     m.def("_write_png", [](const std::string& path, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {

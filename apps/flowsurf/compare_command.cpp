@@ -5,6 +5,7 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "io/image_writer.h"
+#include "io/text_writer.h"
 #include "methods/common/text.h"
 #include "progress.h"
 #include "session/playback.h"
@@ -16,8 +17,6 @@
 #include <sstream>
 
 namespace flowsurf::app {
-
-namespace {
 
 std::vector<methods::Method> splitMethods(const std::string& list) {
     std::vector<methods::Method> out;
@@ -32,10 +31,24 @@ std::vector<methods::Method> splitMethods(const std::string& list) {
     return out;
 }
 
-}  // namespace
+double advanceMeasured(Playback& playback, int frames, int every, bool warmUp) {
+    playback.setQuality(every);
+    playback.start(warmUp);
+    double ms = 0.0;
+    for (int k = 0; k <= frames; ++k) {
+        glFinish();
+        const auto t0 = std::chrono::steady_clock::now();
+        playback.advance();
+        glFinish();
+        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() -
+              playback.qualityMsLastFrame();
+    }
+    return ms / (frames + 1);
+}
 
-int runCompare(const RenderOptions& o, const std::string& methodList) {
+int runCompare(const RenderOptions& o, const std::string& methodList, const QualityOutput& quality) {
     validateRenderOptions(o);
+    validateQualityOutput(quality);
     if (outputKind(o.output) != OutputKind::Png) throw ConfigError("compare: --output must be a .png file");
     const std::vector<methods::Method> names = splitMethods(methodList);
 
@@ -51,17 +64,24 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
     sheet.pixels.assign(size_t(sheet.width) * sheet.height * 3, 255);
     ProgressBar progress("compare", int(names.size()) * (o.frames + 1), !o.quiet);
     int done = 0;
+    std::vector<MethodQuality> qualities;
     for (size_t m = 0; m < names.size(); ++m) {
         // One method at a time, each timed alone; each sees the same data times.
         Playback playback(o, *steps, {names[m]});
         playback.onFrame([&] { progress.update(++done); });
-        glFinish();
-        auto t0 = std::chrono::steady_clock::now();
-        playback.start(false);  // every frame 0..frames is timed, as a PNG render without warm-up
-        for (int k = 0; k <= o.frames; ++k) playback.advance();
-        glFinish();
-        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
-                    (o.frames + 1);
+        double ms = 0.0;
+        if (quality.file.empty()) {
+            glFinish();
+            auto t0 = std::chrono::steady_clock::now();
+            playback.start(false);  // every frame 0..frames is timed, as a PNG render without warm-up
+            for (int k = 0; k <= o.frames; ++k) playback.advance();
+            glFinish();
+            ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+                 (o.frames + 1);
+        } else {
+            ms = advanceMeasured(playback, o.frames, quality.every, false);  // as above: no warm-up
+            qualities.push_back({playback.view(0).name(), ms, playback.qualityFrames(0), playback.qualitySummary(0)});
+        }
         const methods::FlowMethod* method = &playback.view(0);
         std::vector<uint8_t> img = gl::readRgb8TopDown(method->composite());
         const int x0 = int(m) * (o.size.width + gap);
@@ -77,6 +97,9 @@ int runCompare(const RenderOptions& o, const std::string& methodList) {
         if (!o.quiet) std::fprintf(stderr, "\nflowsurf: %s %.2f ms/frame\n", method->name(), ms);
     }
     progress.finish();
+    if (!quality.file.empty())
+        io::writeTextFile(quality.file, qualityJson(o, "compare", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                                                    quality.every, qualities));
     io::writePngRgb8(o.output, sheet.width, sheet.height, 3, sheet.pixels);
     if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
     return 0;

@@ -58,6 +58,28 @@ int main(int argc, char** argv) {
     app::addRenderOptions(*compareCmd, compare);
     compareCmd->add_option("--methods", compareMethods, "Comma-separated methods to compare")->capture_default_str();
 
+    // Quality reports (doc/algorithms.md, "Quality metrics"): `quality`, and --quality on
+    // render and compare.
+    app::RenderOptions quality;
+    std::string qualityMethods = "isa,ibfvs,hybrid";
+    app::QualityOutput renderQuality, compareQuality, qualityOut;
+    qualityOut.every = 5;
+    CLI::App* qualityCmd = app.add_subcommand("quality", "How faithful each method's texture is to the field: "
+                                                         "orientation error, frame correlation, contrast, feature size");
+    app::addRenderOptions(*qualityCmd, quality);
+    qualityCmd->add_option("--methods", qualityMethods, "Comma-separated methods to measure")->capture_default_str();
+    bool autoTune = false;
+    qualityCmd->add_flag("--auto-tune", autoTune, "Try a small grid of each method's parameters (step, alpha, "
+                                                  "filter length, noise scale) on this view; print the trade-off "
+                                                  "between orientation error, frame correlation and ms/frame");
+    for (auto [cmd, out] : {std::pair{renderCmd, &renderQuality}, {compareCmd, &compareQuality}, {qualityCmd, &qualityOut}}) {
+        cmd->add_option("--quality", out->file, "Write the quality report (per method: median, worst and every "
+                                                "measured frame; the options and the GL renderer) as JSON")
+            ->group("Output")->type_name("PATH");
+        cmd->add_option("--quality-every", out->every, "Measure every N-th animation frame (a PNG: its last frame)")
+            ->group("Output")->capture_default_str()->check(CLI::Range(1, 100000));
+    }
+
     app::RenderOptions view;
     app::view::ViewOptions viewOpts;
     CLI::App* viewCmd = app.add_subcommand("view", "Interactive viewer: turn, zoom, switch methods, play time");
@@ -122,7 +144,7 @@ int main(int argc, char** argv) {
         ->group("");  // hidden: not a measurement
 
     // --config FILE: the file's options first, the command line's on top of them.
-    for (CLI::App* cmd : {renderCmd, compareCmd, viewCmd})
+    for (CLI::App* cmd : {renderCmd, compareCmd, viewCmd, qualityCmd})
         cmd->add_option("--config", "JSON config (e.g. saved by the viewer); options given here override it")
             ->group("Output");
     try {
@@ -130,6 +152,7 @@ int main(int argc, char** argv) {
             app::applyConfigFile(*config, render);
             compare = render;
             view = render;
+            quality = render;
         }
     } catch (const std::exception&) {
         return reportCurrentError();
@@ -152,7 +175,7 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (*renderCmd) return app::runRender(render);
+        if (*renderCmd) return app::runRender(render, renderQuality);
         if (*infoCmd) return app::runInfo(infoPath, session::sourceOptions(infoRead));
         if (*viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
@@ -162,7 +185,10 @@ int main(int argc, char** argv) {
             throw ConfigError("view: this flowsurf was built without the viewer (FLOWSURF_BUILD_VIEWER=OFF)");
 #endif
         }
-        if (*compareCmd) return app::runCompare(compare, compareMethods);
+        if (*compareCmd) return app::runCompare(compare, compareMethods, compareQuality);
+        if (*qualityCmd)
+            return autoTune ? app::runAutoTune(quality, qualityMethods, qualityOut)
+                            : app::runQuality(quality, qualityMethods, qualityOut);
         if (*benchCmd) return app::runBench(bench);
     } catch (const std::exception&) {
         return reportCurrentError();

@@ -6,6 +6,7 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "io/image_writer.h"
+#include "io/text_writer.h"
 #include "io/video_writer.h"
 #include "progress.h"
 #include "session/playback.h"
@@ -34,9 +35,10 @@ int listBuiltins() {
 
 }  // namespace
 
-int runRender(const RenderOptions& o) {
+int runRender(const RenderOptions& o, const QualityOutput& quality) {
     if (o.listBuiltins) return listBuiltins();
     validateRenderOptions(o);
+    validateQualityOutput(quality);
     const OutputKind kind = outputKind(o.output);
 
     // Data: load and check the field before any GL work.
@@ -44,6 +46,7 @@ int runRender(const RenderOptions& o) {
     (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
     Playback playback(o, *steps);
+    if (!quality.file.empty()) playback.setQuality(quality.every);
     AnimatedSurface& surface = playback.surface();
 
     std::unique_ptr<io::VideoWriter> video;
@@ -60,7 +63,9 @@ int runRender(const RenderOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     int rendered = 0;
     if (kind == OutputKind::Png) {
-        ProgressBar progress("render", playback.historyFree() ? 1 : total, !o.quiet);
+        // A history-free frame alone; with --quality also the one before it (correlations).
+        const int stillFrames = !playback.historyFree() ? total : quality.file.empty() ? 1 : std::min(2, total);
+        ProgressBar progress("render", stillFrames, !o.quiet);
         playback.onFrame([&] { progress.update(++rendered); });
         playback.still(o.frames);
         progress.finish();
@@ -97,6 +102,12 @@ int runRender(const RenderOptions& o) {
     if (!o.flowTexture.empty())
         io::writePngGray16(o.flowTexture, o.size.width, o.size.height, gl::readGray16TopDown(method.flowTexture()));
     if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
+    if (!quality.file.empty()) {
+        const MethodQuality q{method.name(), quality::kNoValue, playback.qualityFrames(0), playback.qualitySummary(0)};
+        io::writeTextFile(quality.file, qualityJson(o, "render", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                                                    quality.every, {q}));
+        if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", quality.file.c_str());
+    }
     return 0;
 }
 

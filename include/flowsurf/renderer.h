@@ -14,6 +14,7 @@
 #include <flowsurf/surface.h>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -33,6 +34,28 @@ struct CameraView {
     float up[3] = {0, 1, 0};
     float fovDeg = 30.0f;      // vertical, perspective
     float orthoHeight = 0.0f;  // > 0: orthographic with this view height
+};
+
+// How faithful the texture is to the field it shows (doc/algorithms.md §9, the numbers of
+// `flowsurf quality`); NaN where a metric has too few pixels, and for the correlations
+// without the frame before.
+struct QualityMetrics {
+    static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    double orientationErrorDeg = kNone;     // median angle streaks vs projected field (deg)
+    double orientationErrorP90Deg = kNone;  // its 90th percentile (deg)
+    double countedFraction = kNone;         // surface pixels with coherent streaks, 0..1
+    double frameCorrelation = kNone;        // consecutive frames, same pixels (1 frozen, 0 flicker)
+    double frameCorrelationReprojected = kNone;  // ... following the surface with the camera
+    double contrast = kNone;                // standard deviation of F_a over the surface
+    double edgeContrastRatio = kNone;       // contrast near silhouettes / in the interior
+    double frequencyPx = kNone;             // feature size across the flow (pixels)
+    // The values by the names of the command line's JSON report, in its order.
+    std::vector<std::pair<std::string, double>> named() const;
+};
+struct Quality {
+    int frames = 0;          // frames measured
+    QualityMetrics median;   // median over them
+    QualityMetrics worst;    // worst frame per metric (highest error, lowest correlation...)
 };
 
 class Renderer {
@@ -89,6 +112,15 @@ public:
     std::vector<std::pair<std::string, double>> stageMs() const;
     // GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     std::string glRenderer() const;
+
+    // Quality: measure every N-th frame of render() (its last frame, and the one before for
+    // the correlations) and advance() (0, the default: off; a measured frame costs a
+    // surface pass and a read-back). Takes effect at the next render() or begin().
+    void setQualityEvery(int every);
+    // The quality of the frames measured since render()/begin(). With nothing measured
+    // (off), the last frame is measured now, without correlations. Throws ConfigError
+    // before anything is rendered.
+    Quality quality() const;
 
 private:
     struct Impl;

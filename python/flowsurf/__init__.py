@@ -203,6 +203,18 @@ class Renderer:
     def gl_renderer(self):
         return self._r.gl_renderer()
 
+    def set_quality_every(self, every):
+        """Measure every N-th frame of the next render() or frames() against the field (0,
+        the default: off); see quality()."""
+        self._r.set_quality_every(int(every))
+
+    def quality(self):
+        """How faithful the texture is to the field (doc/algorithms.md §9, the numbers of
+        `flowsurf quality`): {"frames": n, "median": {metric: value}, "worst": {...}} over
+        the frames measured since render() or frames() began; with measuring off, the last
+        frame measured now (no frame correlations). None where not measured."""
+        return self._r.quality()
+
 
 def render(surface, flow_texture=False, field=None, **options):
     """Renders `surface` as `flowsurf render` does: the image after `frames` frames (90),

@@ -280,3 +280,26 @@ def test_input_options_go_to_read_not_to_the_renderer():
         flowsurf.read("builtin:sphere", alpha=0.1)
     assert set(flowsurf.read_option_names()) == {"patches", "foam-case"}
     assert flowsurf.read("builtin:sphere", patches="wall.*").triangle_count > 0
+
+
+def test_quality_is_the_command_lines(tmp_path):
+    # Renderer.quality() and `render --quality` measure the same frame the same way.
+    subprocess.run([FLOWSURF, "render", "builtin:sphere", "--size", "96x80", "--frames", "20", "-q",
+                    "-o", str(tmp_path / "a.png"), "--quality", str(tmp_path / "a.json")], check=True)
+    import json
+    cli = json.load(open(tmp_path / "a.json"))["methods"][0]
+    r = flowsurf.Renderer(size=(96, 80), frames=20)
+    r.set_quality_every(1)
+    r.render(flowsurf.read("builtin:sphere"))
+    q = r.quality()
+    assert q["frames"] == cli["frames_measured"] == 1
+    assert list(q["median"]) == list(cli["median"])
+    for name, value in q["median"].items():
+        assert value == pytest.approx(cli["median"][name], rel=1e-9), name
+    assert 0 <= q["median"]["orientation_error_deg"] < 15
+    # Measuring off: the last frame on demand, no correlation without the frame before.
+    r.set_quality_every(0)
+    r.render(flowsurf.read("builtin:sphere"))
+    q0 = r.quality()
+    assert q0["median"]["frame_correlation"] is None
+    assert q0["median"]["orientation_error_deg"] == pytest.approx(q["median"]["orientation_error_deg"])

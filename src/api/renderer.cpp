@@ -31,6 +31,7 @@ struct Renderer::Impl {
     std::shared_ptr<const detail::SurfaceData> data;
     std::unique_ptr<core::StepProvider> steps;
     std::unique_ptr<session::Playback> playback;  // the frame loop of the command line
+    int qualityEvery = 0;
 
     // Holds the lock and the context for one public call.
     struct Scope {
@@ -54,6 +55,7 @@ struct Renderer::Impl {
         steps = data->provider();
         playback = std::make_unique<session::Playback>(options, *steps);
         playback->setStageTiming(true);
+        playback->setQuality(qualityEvery);
     }
 
     const methods::FlowMethod& rendered() const {
@@ -62,6 +64,33 @@ struct Renderer::Impl {
         return playback->view(0);
     }
 };
+
+namespace {
+
+QualityMetrics toPublic(const quality::FrameQuality& q) {
+    QualityMetrics m;
+    m.orientationErrorDeg = q.orientationErrorDeg;
+    m.orientationErrorP90Deg = q.orientationErrorP90Deg;
+    m.countedFraction = q.countedFraction;
+    m.frameCorrelation = q.frameCorrelation;
+    m.frameCorrelationReprojected = q.frameCorrelationReprojected;
+    m.contrast = q.contrast;
+    m.edgeContrastRatio = q.edgeContrastRatio;
+    m.frequencyPx = q.frequencyPx;
+    static_assert(sizeof(QualityMetrics) == std::tuple_size_v<std::decay_t<decltype(quality::metricTable())>> * sizeof(double),
+                  "QualityMetrics holds every metric of the table, in its order");
+    return m;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> QualityMetrics::named() const {
+    // Field i of QualityMetrics is metric i of the table (same order, all doubles).
+    const double* values = &orientationErrorDeg;
+    std::vector<std::pair<std::string, double>> out;
+    for (size_t i = 0; i < quality::metricTable().size(); ++i) out.emplace_back(quality::metricTable()[i].name, values[i]);
+    return out;
+}
 
 Renderer::Renderer(ContextMode mode) : impl_(std::make_unique<Impl>()) {
     std::lock_guard<std::recursive_mutex> lock(glMutex());
@@ -190,6 +219,29 @@ std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
     if (!impl_->playback) return {};
     Impl::Scope scope(*impl_);  // the timer reads its GPU queries
     return impl_->playback->view(0).timer().meanMs();
+}
+
+void Renderer::setQualityEvery(int every) {
+    if (every < 0) throw ConfigError("quality: measure every N frames, N >= 0 (0: off)");
+    impl_->qualityEvery = every;
+}
+
+Quality Renderer::quality() const {
+    Impl::Scope scope(*impl_);
+    impl_->rendered();  // throws before anything is rendered
+    session::Playback& p = *impl_->playback;
+    Quality q;
+    if (p.qualityFrames(0).empty()) {
+        const quality::FrameQuality now = p.measureLastFrame(0);
+        q.frames = 1;
+        q.median = q.worst = toPublic(now);
+        return q;
+    }
+    const quality::QualitySummary s = p.qualitySummary(0);
+    q.frames = s.frames;
+    q.median = toPublic(s.median);
+    q.worst = toPublic(s.worst);
+    return q;
 }
 
 std::string Renderer::glRenderer() const {

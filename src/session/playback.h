@@ -16,6 +16,7 @@
 #include "core/camera.h"
 #include "core/time_series.h"
 #include "methods/common/frame.h"
+#include "quality/quality_probe.h"
 #include "session/animated_surface.h"
 #include "session/options/options.h"
 #include "session/scene_setup.h"
@@ -110,6 +111,24 @@ public:
     // Composites of every view side by side, RGB8, rows top to bottom.
     std::vector<uint8_t> readImage(int* width, int* height) const;
 
+    // --- quality (doc/algorithms.md, "Quality metrics"): off by default ------------------
+    // every > 0: measure every view's F_a against the field on every `every`-th frame that
+    // is not warm-up (animation, still and live frames alike; a still measures its last
+    // frame only), reading back the frame before each for the correlations. 0: off.
+    void setQuality(int every, const quality::QualityParams& params = {});
+    int qualityEvery() const { return qualityEvery_; }
+    // The frames of view i measured since the animation (re)started, the build, or
+    // clearQuality(); and their median and worst.
+    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const;
+    quality::QualitySummary qualitySummary(size_t view) const;
+    void clearQuality();
+    // Measures view i's last frame now (surface and camera of the last frame); with the
+    // quality off it has no frame before it, so no correlations. Not added to the log.
+    quality::FrameQuality measureLastFrame(size_t view);
+    // Wall time the quality took in the last frame (measuring, or keeping the frame for the
+    // next measurement; 0: none), for timers that leave it out.
+    double qualityMsLastFrame() const { return qualityMs_; }
+
 private:
     void build();                       // surface, renderers, cameras from options_
     bool applyPending();                // a pending rebuild (true) or camera change, before a frame
@@ -119,6 +138,11 @@ private:
     void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
     void animationFrame(int f, uint32_t k);
     const FrameCameras& frameCameras();  // of the options, made when an animation needs them
+    // What the quality probes do with the frame renderAll draws next (setQuality).
+    enum class QualityStep { None, Keep, Measure };
+    QualityStep qualityStep(int stillFrame = -1, int frame = -1);
+    void makeProbes();
+    void collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
     core::StepProvider& steps_;
@@ -136,6 +160,13 @@ private:
     core::Camera lastCamera_;
     double lastTime_ = 0.0;
     std::function<void()> onFrame_;
+    int qualityEvery_ = 0;
+    quality::QualityParams qualityParams_;
+    QualityStep qualityNext_ = QualityStep::None;
+    double qualityMs_ = 0.0;
+    int qualityCounter_ = 0;            // frames since the quality log was cleared, warm-up not
+    std::vector<std::unique_ptr<quality::QualityProbe>> probes_;
+    std::vector<std::vector<quality::FrameQuality>> qualityLog_;
 };
 
 }  // namespace flowsurf::session

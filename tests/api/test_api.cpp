@@ -196,3 +196,30 @@ TEST(Api, OptionsAreAppliedAsTheTableSays) {
     r.advance();
     EXPECT_EQ(r.frame(), 1);
 }
+
+// Renderer::quality(): measured while rendering (the last frame and, for the
+// correlations, the one before) or, with measuring off, the last frame measured on
+// demand: the same image gives the same numbers, without correlations.
+TEST(Api, QualityOfTheLastFrame) {
+    const flowsurf::Surface s = surfaceOf(vortexPlane());
+    flowsurf::Renderer r;
+    r.set("size", "96x96");
+    EXPECT_THROW(r.quality(), flowsurf::ConfigError);
+    r.render(s, 30);
+    const flowsurf::Quality now = r.quality();
+    r.setQualityEvery(1);
+    r.render(s, 30);
+    const flowsurf::Quality kept = r.quality();
+    EXPECT_EQ(now.frames, 1);
+    EXPECT_EQ(kept.frames, 1);
+    EXPECT_EQ(now.median.orientationErrorDeg, kept.median.orientationErrorDeg);
+    EXPECT_EQ(now.median.frequencyPx, kept.median.frequencyPx);
+    EXPECT_LT(kept.median.orientationErrorDeg, 10.0);
+    EXPECT_TRUE(std::isnan(now.median.frameCorrelation));
+    EXPECT_GT(kept.median.frameCorrelation, 0.5);
+    const auto named = kept.median.named();
+    ASSERT_EQ(named.size(), 8u);
+    EXPECT_EQ(named.front().first, "orientation_error_deg");
+    EXPECT_EQ(named.front().second, kept.median.orientationErrorDeg);
+    EXPECT_THROW(r.setQualityEvery(-1), flowsurf::ConfigError);
+}

@@ -164,5 +164,52 @@ if command -v ffmpeg >/dev/null; then
     fi
 fi
 
+# quality: one row per method on stdout; --quality FILE.json on quality, render, compare
+# carries the options, the renderer and per method median, worst and frames.
+qout=$("$FLOWSURF" quality builtin:sphere --size 96x96 --frames 4 --quality-every 2 -q --quality "$WORK/q.json")
+if [ "$(grep -cE '^(isa|ibfvs|hybrid) +2 +[0-9.]+' <<<"$qout")" = 3 ] && grep -q '^method .*orient_err' <<<"$qout" &&
+   python3 -c "
+import json, sys; d = json.load(open(sys.argv[1]))
+assert d['gl_renderer'] and d['options']['size'] == '96x96' and d['command'] == 'quality'
+assert [m['method'] for m in d['methods']] == ['isa', 'ibfvs', 'hybrid']
+assert all(m['frames_measured'] == 2 and len(m['frames']) == 2 and m['median']['orientation_error_deg'] < 30 for m in d['methods'])
+" "$WORK/q.json"; then
+    ok "quality table and JSON"
+else
+    bad "quality table and JSON: $qout"
+fi
+if "$FLOWSURF" render builtin:vortex-plane --size 96x96 --frames 30 -q -o "$WORK/r.png" --quality "$WORK/r.json" &&
+   [ -s "$WORK/r.png" ] && python3 -c "
+import json, sys; d = json.load(open(sys.argv[1]))
+m = d['methods'][0]; assert m['method'] == 'isa' and m['frames_measured'] == 1 and m['frames'][0]['frame'] == 30
+assert 0.5 < m['median']['frame_correlation'] <= 1
+" "$WORK/r.json"; then
+    ok "render --quality"
+else
+    bad "render --quality"
+fi
+if "$FLOWSURF" compare builtin:sphere --methods isa,hybrid --size 64x64 --frames 3 -q -o "$WORK/c2.png" \
+       --quality "$WORK/c2.json" && [ -s "$WORK/c2.png" ] &&
+   python3 -c "
+import json, sys; d = json.load(open(sys.argv[1])); assert [m['method'] for m in d['methods']] == ['isa', 'hybrid']
+assert all(m['frames_measured'] == 4 and m['ms_per_frame'] > 0 for m in d['methods'])
+" "$WORK/c2.json"; then
+    ok "compare --quality"
+else
+    bad "compare --quality"
+fi
+if "$FLOWSURF" quality builtin:sphere --size 64x64 --frames 2 --quality-every 1 --methods hybrid --auto-tune -q |
+   grep -qE '^best trade for hybrid: --filter-length [0-9]+ --lic-step-px [0-9]+ --noise-scale [0-9]+'; then
+    ok "quality --auto-tune names the best trade"
+else
+    bad "quality --auto-tune names the best trade"
+fi
+expect_fail "auto-tune with --quality" 2 "auto-tune"         "$WORK/q0.json" -- quality builtin:sphere --auto-tune --quality "$WORK/q0.json" -q
+expect_fail "quality unknown method" 2 "'lic' is not one of" "$WORK/q1.json" -- quality builtin:sphere --methods isa,lic --quality "$WORK/q1.json" -q
+expect_fail "quality not json"       2 "q2.txt' must be a .json" "$WORK/q2.txt" -- quality builtin:sphere --quality "$WORK/q2.txt" -q
+expect_fail "quality missing input"  3 "nosuch.vtp"          "$WORK/q3.json" -- quality "$WORK/nosuch.vtp" --quality "$WORK/q3.json" -q
+expect_fail "quality every 0"        2 "quality-every"       "$WORK/q4.json" -- quality builtin:sphere --quality-every 0 --quality "$WORK/q4.json" -q
+expect_fail "render quality no dir"  3 "nodir"               "$WORK/q5.png" -- render builtin:sphere --size 64x64 --frames 2 -o "$WORK/q5.png" --quality "$WORK/nodir/q5.json" -q
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

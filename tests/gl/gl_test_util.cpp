@@ -2,6 +2,7 @@
 
 #include "gl/readback.h"
 #include "methods/make_renderer.h"
+#include "quality/structure_tensor.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -107,33 +108,9 @@ double pearson(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 float streakOrientation(const Rendered& r, int x, int y, float sigma) {
-    int rad = int(std::ceil(2.5f * sigma));
-    double jxx = 0, jxy = 0, jyy = 0;
-    for (int j = -rad; j <= rad; ++j)
-        for (int i = -rad; i <= rad; ++i) {
-            int px = x + i, py = y + j;
-            if (px < 1 || py < 1 || px >= r.width - 1 || py >= r.height - 1) continue;
-            if (!r.onSurface(px - 1, py) || !r.onSurface(px + 1, py) || !r.onSurface(px, py - 1) ||
-                !r.onSurface(px, py + 1))
-                continue;
-            double w = std::exp(-(i * i + j * j) / (2.0 * sigma * sigma));
-            double gx = 0.5 * (r.f(px + 1, py) - r.f(px - 1, py));
-            double gy = 0.5 * (r.f(px, py + 1) - r.f(px, py - 1));
-            jxx += w * gx * gx;
-            jxy += w * gx * gy;
-            jyy += w * gy * gy;
-        }
-    // Dominant gradient angle; streaks run perpendicular to it.
-    double gradAngle = 0.5 * std::atan2(2 * jxy, jxx - jyy);
-    double a = gradAngle + glm::half_pi<double>();
-    a = std::fmod(a + 2 * glm::pi<double>(), glm::pi<double>());
-    return float(a);
+    return quality::streakAt({r.width, r.height, r.flow.data(), r.depth.data()}, x, y, sigma).angle;
 }
 
-float orientationErrorDeg(float a, float b) {
-    float d = std::fmod(std::abs(a - b), glm::pi<float>());
-    d = std::min(d, glm::pi<float>() - d);
-    return glm::degrees(d);
-}
+float orientationErrorDeg(float a, float b) { return quality::orientationErrorDeg(a, b); }
 
 }  // namespace flowsurf::test

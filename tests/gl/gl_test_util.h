@@ -47,7 +47,7 @@ float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int d
 double pearson(const std::vector<double>& a, const std::vector<double>& b);
 
 // Direction of the streaks at (x, y): the minor eigenvector of the structure tensor
-// averaged with a Gaussian of `sigma` pixels; radians in [0, pi).
+// averaged with a Gaussian of `sigma` pixels; radians in [0, pi) (quality::streakAt).
 float streakOrientation(const Rendered& r, int x, int y, float sigma);
 
 // Smallest angle between two undirected orientations, degrees in [0, 90].

@@ -383,3 +383,24 @@ TEST_F(Viewer, LiveInputInTheRealWindowReplaysExactly) {
                   path("live.log") + "'"), 0) << err_;
     EXPECT_LE(meanAbsDiff(png(path("live_window.png")), png(path("live.png"))), 0.0);
 }
+
+// The panel's Quality section is the event `set quality N|off`: off by default, measured
+// every N frames when on, summarised per view in --stats; a bad value is reported and the
+// viewer goes on.
+TEST_F(Viewer, QualityMeasuredEveryNFramesWhenOn) {
+    ASSERT_EQ(replay("builtin:sphere",
+                     "at 0 set compare isa,hybrid\n"
+                     "at 1 set quality 0\n"
+                     "at 2 set quality 3\n"
+                     "at 14 quit\n",
+                     "--size 96x96 --stats '" + path("stats.json") + "'"), 0) << err_;
+    EXPECT_NE(err_.find("quality: '0'"), std::string::npos) << err_;
+    nlohmann::json stats = readJson(path("stats.json"));
+    ASSERT_TRUE(stats.contains("quality"));
+    for (const char* m : {"isa", "hybrid"}) {
+        EXPECT_GE(stats["quality"][m]["frames"].get<int>(), 3) << m;
+        EXPECT_LT(stats["quality"][m]["median"]["orientation_error_deg"].get<double>(), 15.0) << m;
+    }
+    ASSERT_EQ(replay("builtin:sphere", "at 5 quit\n", "--size 96x96 --stats '" + path("off.json") + "'"), 0) << err_;
+    EXPECT_FALSE(readJson(path("off.json")).contains("quality"));
+}

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -102,6 +103,8 @@ public:
             Requests req = state_.takeRequests();
             applyRequests(req);
             // (3) render
+            if (pipeline_.ready() && pipeline_.playback().qualityEvery() != state_.qualityEvery)
+                pipeline_.playback().setQuality(state_.qualityEvery);
             const bool rendered = renderIfNeeded();
             lastRendered_ = rendered;
             if (recorder_ && rendered) recordFrame();
@@ -331,8 +334,25 @@ private:
             doc["stage_ms"] = stages;
             doc["renderer"] = renderer_;
             doc["view_size"] = {pipeline_.viewSize().width, pipeline_.viewSize().height};
+            if (pipeline_.ready() && state_.qualityEvery > 0) doc["quality"] = qualityStats();
             io::writeTextFile(view_.stats, doc.dump(2) + "\n");
         }
+    }
+
+    // Per view: frames measured, and the median and worst of each metric (null: none).
+    nlohmann::ordered_json qualityStats() {
+        nlohmann::ordered_json views = nlohmann::ordered_json::object();
+        for (size_t i = 0; i < pipeline_.viewCount(); ++i) {
+            const quality::QualitySummary s = pipeline_.playback().qualitySummary(i);
+            auto value = [](double v) { return std::isnan(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v); };
+            nlohmann::ordered_json median = nlohmann::ordered_json::object(), worst = median;
+            for (const quality::MetricInfo& m : quality::metricTable()) {
+                median[m.name] = value(s.median.*m.member);
+                worst[m.name] = value(s.worst.*m.member);
+            }
+            views[pipeline_.methodName(i)] = {{"frames", s.frames}, {"median", median}, {"worst", worst}};
+        }
+        return views;
     }
 
     ViewOptions view_;

@@ -184,6 +184,8 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         }
     }
 
+    qualitySection(state, pipeline);
+
     // Outputs.
     if (ImGui::CollapsingHeader("Save")) {
         ImGui::InputText("##shot", &screenshotPath_);
@@ -214,6 +216,34 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     }
     ImGui::PopItemWidth();
     ImGui::End();
+}
+
+// How faithful each view's texture is to the field: off by default (a measured frame
+// costs a surface pass, a read-back and CPU work); on, every N-th frame is measured. The
+// widgets emit `set quality N|off`, recorded like every edit.
+void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
+    bool on = state.qualityEvery > 0;
+    if (on) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // turned on by an event or a replay
+    if (!ImGui::CollapsingHeader("Quality")) return;
+    if (ImGui::Checkbox("measure", &on)) emitSet("quality", on ? "10" : "off");
+    if (on) {
+        int every = state.qualityEvery;
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(100);
+        if (ImGui::SliderInt("every N frames", &every, 2, 60)) emitSet("quality", std::to_string(every));
+    }
+    if (!on || !pipeline.ready()) return;
+    session::Playback& playback = pipeline.playback();
+    for (size_t i = 0; i < pipeline.viewCount() && i < playback.viewCount(); ++i) {
+        const auto& frames = playback.qualityFrames(i);
+        ImGui::Text("%s: %zu frames measured", upper(pipeline.methodName(i)).c_str(), frames.size());
+        if (frames.empty()) continue;
+        const quality::QualitySummary summary = playback.qualitySummary(i);
+        for (const quality::MetricInfo& m : quality::metricTable()) {
+            ImGui::BulletText("%-30s %8.3f  (median %.3f)", m.name, frames.back().*m.member, summary.median.*m.member);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.help);
+        }
+    }
 }
 
 }  // namespace flowsurf::app::view

@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -310,6 +311,14 @@ void ViewerState::set(const std::string& name, const std::string& value) {
     if (name == "time-playing") { timePlaying = parseBool(name, value); return; }
     if (name == "loop") { loop = parseBool(name, value); return; }
     if (name == "panel") { showPanel = parseBool(name, value); return; }
+    if (name == "quality") {  // every N frames, or off
+        char* end = nullptr;
+        const long n = value == "off" ? 0 : std::strtol(value.c_str(), &end, 10);
+        if (value != "off" && (value.empty() || *end != '\0' || n < 1 || n > 100000))
+            throw ConfigError("quality: '" + value + "' is not a frame count 1..100000 or off");
+        qualityEvery = int(n);
+        return;
+    }
     if (name == "time-now") {
         double t = parseFloat(value, "time-now");
         time = std::clamp(t, std::min(timeStart, timeEnd), std::max(timeStart, timeEnd));

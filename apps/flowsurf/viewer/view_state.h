@@ -55,6 +55,7 @@ public:
     bool paused = false;               // no advection frames (the view still follows the camera)
     bool stepOnce = false;             // advance one frame while paused
     bool showPanel = true;
+    int qualityEvery = 0;              // measure the texture every N frames (0: off; doc/algorithms.md §9)
     bool recording = false;            // an MP4 is being written (set by the window side)
     // Time playback of a series (data time per frame: timePerFrame; held or looped at the end).
     bool timePlaying = true;

@@ -46,6 +46,8 @@ private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
     void optionWidget(const struct OptionSpec& spec, const ViewerState& state);
     void emitSet(const std::string& name, const std::string& value);
+    // The panel's Quality section (doc/algorithms.md §9): off until turned on.
+    void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
 
     GLFWwindow* window_ = nullptr;
     std::vector<Event> queue_;
