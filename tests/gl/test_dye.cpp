@@ -45,20 +45,32 @@ struct Blob {
 };
 
 // The dye seen in the image: red minus green is the concentration with a red dye on the
-// gray scheme without lighting.
+// gray scheme without lighting. The centroid is taken on the sphere (each pixel unprojected
+// onto it, the mean put back on it) and projected, so that the foreshortening of a blob
+// near the silhouette does not pull it towards the centre of the image.
 Blob measure(session::Playback& p) {
     int w = 0, h = 0;
     const std::vector<uint8_t> rgb = p.readImage(&w, &h);
+    const core::Camera cam = p.lastCamera();
+    const glm::mat4 inv = glm::inverse(cam.viewProjection(p.options().size.aspect()));
     Blob b;
+    glm::dvec3 onSphere(0.0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const uint8_t* c = &rgb[(size_t(y) * w + x) * 3];
             const double a = std::max(0, int(c[0]) - int(c[1])) / 255.0;
             if (a < 0.1) continue;
+            // The ray through the pixel centre, and its first hit of the unit sphere.
+            const glm::vec2 ndc = (glm::vec2(x + 0.5f, h - 1 - y + 0.5f) / glm::vec2(w, h)) * 2.0f - 1.0f;
+            const glm::vec4 far = inv * glm::vec4(ndc, 1.0f, 1.0f);
+            const glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - cam.eye);
+            const float bq = glm::dot(cam.eye, d), cq = glm::dot(cam.eye, cam.eye) - 1.0f;
+            const float disc = std::max(bq * bq - cq, 0.0f);
             b.mass += a;
-            b.centroid += a * glm::dvec2(x + 0.5, (h - 1 - y) + 0.5);
+            onSphere += a * glm::dvec3(cam.eye + (-bq - std::sqrt(disc)) * d);
         }
-    if (b.mass > 0.0) b.centroid /= b.mass;
+    if (b.mass > 0.0)
+        b.centroid = glm::dvec2(core::projectToPixels(cam, p.options().size, glm::normalize(glm::vec3(onSphere))));
     return b;
 }
 

@@ -25,6 +25,7 @@ DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, floa
     const size_t n = std::max<size_t>(band_.size(), 1);
     bandData_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
     values_ = gl::Buffer(GLsizeiptr(n * 3 * sizeof(glm::vec4)), nullptr);
+    departures_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
     setVelocity(mesh, field);
     clear();
 }
@@ -43,6 +44,7 @@ void DyeField::setVelocity(const core::SurfaceMesh& mesh, const std::string& fie
         maxSpeed_ = std::max(maxSpeed_, glm::length(vel[i]));
     }
     glNamedBufferSubData(bandData_.id(), 0, GLsizeiptr(data.size() * sizeof(glm::vec4)), data.data());
+    departureDt_ = 0.0f;
 }
 
 void DyeField::clear() {
@@ -82,8 +84,13 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, values_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeBandBinding, bandData_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeSourceBinding, emitters_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeDepartureBinding, departures_.id());
     const float decayFactor = std::exp(-std::max(decay, 0.0f) * std::abs(dt));
     if (dt != 0.0f && maxSpeed_ > 0.0f) {
+        if (dt != departureDt_) {
+            pass(3, dt, decayFactor, 0);
+            departureDt_ = dt;
+        }
         pass(0, dt, decayFactor, 0);
         pass(1, dt, decayFactor, int(emitters.size()));
     } else {

@@ -20,11 +20,12 @@
 namespace flowsurf::methods {
 
 // Work group of the band passes and the bindings the dye shaders share (shader_interface.cpp).
-inline constexpr int kDyeGroup = 64;
+inline constexpr int kDyeGroup = 256;
 inline constexpr int kDyeIndexUnit = 6;      // isampler3D: band voxel of each grid cell
 inline constexpr int kDyeValueBinding = 0;   // SSBO: values, three slots of the band's size
 inline constexpr int kDyeBandBinding = 1;    // SSBO: closest point and velocity per band voxel
 inline constexpr int kDyeSourceBinding = 2;  // SSBO: the emitters of this frame
+inline constexpr int kDyeDepartureBinding = 3;  // SSBO: departure points per band voxel
 
 // A source emitting this frame, on the surface.
 struct DyeEmitter {
@@ -70,7 +71,8 @@ private:
     std::vector<glm::uvec3> triangles_;
     gl::Program program_;
     gl::Handle<gl::detail::deleteTexture> indexTexture_;
-    gl::Buffer bandData_, values_, emitters_;
+    gl::Buffer bandData_, values_, emitters_, departures_;
+    float departureDt_ = 0.0f;  // dt the departure points are for (0: stale)
     int current_ = 0;  // slot of the current values (0 or 1); slot 2 holds the forward step
     float maxSpeed_ = 0.0f;
 };

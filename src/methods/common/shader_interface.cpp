@@ -39,6 +39,7 @@ const std::string& shaderInterface() {
         s += "#define DYE_VALUE_BINDING " + std::to_string(kDyeValueBinding) + "\n";
         s += "#define DYE_BAND_BINDING " + std::to_string(kDyeBandBinding) + "\n";
         s += "#define DYE_SOURCE_BINDING " + std::to_string(kDyeSourceBinding) + "\n";
+        s += "#define DYE_DEPARTURE_BINDING " + std::to_string(kDyeDepartureBinding) + "\n";
         return s;
     }();
     return defines;
