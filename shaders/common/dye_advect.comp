@@ -7,15 +7,20 @@
 // Values: RGBA32F premultiplied, slots of the band's size in one buffer.
 #include "common/dye_sample.glsl"
 layout(local_size_x = DYE_GROUP) in;
-struct BandVoxel { vec4 closest; vec4 velocity; };  // object space; velocity per data time
+struct BandVoxel { vec4 closest; vec4 velocity; };  // object space, w: brick; velocity per data time
 layout(std430, binding = DYE_BAND_BINDING) readonly buffer Band { BandVoxel band[]; };
 struct Emitter { vec4 posRadius; vec4 color; };
 layout(std430, binding = DYE_SOURCE_BINDING) readonly buffer Emitters { Emitter emitter[]; };
 // Per band voxel: the departure points cp - v dt and cp + v dt along the surface (pass 3),
 // kept while velocity and dt stay (every frame of steady data).
 layout(std430, binding = DYE_DEPARTURE_BINDING) buffer Departures { vec4 departurePoint[]; };
+// The band voxels this step updates (bricks holding dye and those it can reach), and per
+// brick a flag set where the step leaves dye.
+layout(std430, binding = DYE_ACTIVE_BINDING) readonly buffer Active { uint activeVoxel[]; };
+layout(std430, binding = DYE_FLAG_BINDING) writeonly buffer Flags { uint hasDye[]; };
 uniform int uPass;
-uniform int uCount;       // band voxels
+uniform int uUseList;     // 1: invocation g updates activeVoxel[g]; 0: band voxel g
+uniform int uCount;       // invocations
 uniform int uSource;      // slot of u
 uniform int uForward;     // slot of u^
 uniform int uTarget;      // slot written
@@ -52,8 +57,9 @@ vec3 departure(vec3 cp, vec3 step) {
 }
 
 void main() {
-    int i = int(gl_GlobalInvocationID.x);
-    if (i >= uCount) return;
+    int g = int(gl_GlobalInvocationID.x);
+    if (g >= uCount) return;
+    int i = uUseList != 0 ? int(activeVoxel[g]) : g;
     vec3 cp = band[i].closest.xyz;
     if (uPass == 3) {
         vec3 step = band[i].velocity.xyz * uDt;
@@ -79,4 +85,5 @@ void main() {
         u = mix(u, vec4(emitter[e].color.rgb, 1.0), a);
     }
     dyeValue[uTarget + i] = u;
+    if (max(max(u.r, u.g), max(u.b, u.a)) > 1.0 / 1024.0) hasDye[int(band[i].closest.w)] = 1u;
 }

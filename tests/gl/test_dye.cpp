@@ -12,6 +12,7 @@
 #include <glm/gtx/rotate_vector.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace flowsurf;
@@ -110,6 +111,9 @@ TEST(Dye, BlobFollowsTheRotationHidesAndComesBack) {
     EXPECT_GT(inkedVoxels(p), area0 / 2) << "and still there";
     for (int f = 2 * kQuarter + 1; f <= 4 * kQuarter; ++f) p.advance();
     const Blob b4 = measure(p);
+    std::printf("dye blob: quarter turn %.2f px off, area x%.2f; whole turn %.2f px off\n",
+                glm::distance(b1.centroid, expectedPx(p, glm::half_pi<float>())), areaRatio,
+                glm::distance(b4.centroid, b0.centroid));
     EXPECT_GT(b4.mass, 0.5 * b0.mass);
     EXPECT_LT(glm::distance(b4.centroid, b0.centroid), 3.0) << "a whole turn: back at the start";
 }

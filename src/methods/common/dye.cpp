@@ -26,6 +26,8 @@ DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, floa
     bandData_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
     values_ = gl::Buffer(GLsizeiptr(n * 3 * sizeof(glm::vec4)), nullptr);
     departures_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
+    active_ = gl::Buffer(GLsizeiptr(n * sizeof(uint32_t)), nullptr);
+    flags_ = gl::Buffer(GLsizeiptr((band_.brickStart.size()) * sizeof(uint32_t)), nullptr);
     setVelocity(mesh, field);
     clear();
 }
@@ -39,7 +41,7 @@ void DyeField::setVelocity(const core::SurfaceMesh& mesh, const std::string& fie
     std::vector<glm::vec4> data(std::max<size_t>(band_.size(), 1) * 2, glm::vec4(0.0f));
     maxSpeed_ = 0.0f;
     for (size_t i = 0; i < band_.size(); ++i) {
-        data[2 * i] = glm::vec4(band_.closest[i], 0.0f);
+        data[2 * i] = glm::vec4(band_.closest[i], float(band_.brick[i]));  // brick: exact below 2^24
         data[2 * i + 1] = glm::vec4(vel[i], 0.0f);
         maxSpeed_ = std::max(maxSpeed_, glm::length(vel[i]));
     }
@@ -51,24 +53,64 @@ void DyeField::clear() {
     const float zero = 0.0f;
     glClearNamedBufferData(values_.id(), GL_R32F, GL_RED, GL_FLOAT, &zero);
     current_ = 0;
+    hadDye_.assign(band_.brickStart.size() - 1, 0);
+    hadDyeBefore_ = hadDye_;
 }
 
-void DyeField::pass(int which, float dt, float decayFactor, int emitterCount) {
+void DyeField::pass(int which, float dt, float decayFactor, int emitterCount, int count) {
     const int n = int(band_.size());
     glUniform1i(program_.uniform("uPass"), which);
-    glUniform1i(program_.uniform("uCount"), n);
+    glUniform1i(program_.uniform("uCount"), count);
+    glUniform1i(program_.uniform("uUseList"), which != 3);
     glUniform1i(program_.uniform("uSource"), current_ * n);
     glUniform1i(program_.uniform("uForward"), 2 * n);
     glUniform1i(program_.uniform("uTarget"), (1 - current_) * n);
     glUniform1f(program_.uniform("uDt"), dt);
     glUniform1f(program_.uniform("uDecay"), decayFactor);
     glUniform1i(program_.uniform("uEmitters"), emitterCount);
-    glDispatchCompute(GLuint((n + kDyeGroup - 1) / kDyeGroup), 1, 1);
+    glDispatchCompute(GLuint((count + kDyeGroup - 1) / kDyeGroup), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+size_t DyeField::listActive(float dt, const std::vector<DyeEmitter>& emitters) {
+    const glm::ivec3 bd = band_.brickDims;
+    const float brickSize = float(kDyeBrick) * band_.grid.h;
+    std::vector<uint8_t> active(hadDye_.size(), 0);
+    auto brickOf = [&](const glm::vec3& p) {
+        return glm::clamp(glm::ivec3(glm::floor((p - band_.grid.origin) / brickSize)), glm::ivec3(0), bd - 1);
+    };
+    auto mark = [&](glm::ivec3 lo, glm::ivec3 hi) {
+        lo = glm::max(lo, glm::ivec3(0));
+        hi = glm::min(hi, bd - 1);
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) active[(size_t(z) * size_t(bd.y) + size_t(y)) * size_t(bd.x) + size_t(x)] = 1;
+    };
+    // Reach of one step: the forward and the backward departure point, and the stencil.
+    const int reach = int(std::ceil((2.0f * maxSpeed_ * std::abs(dt) + 2.0f * band_.grid.h) / brickSize));
+    for (int z = 0; z < bd.z; ++z)
+        for (int y = 0; y < bd.y; ++y)
+            for (int x = 0; x < bd.x; ++x) {
+                const size_t b = (size_t(z) * size_t(bd.y) + size_t(y)) * size_t(bd.x) + size_t(x);
+                if (hadDye_[b] || hadDyeBefore_[b]) mark(glm::ivec3(x, y, z) - reach, glm::ivec3(x, y, z) + reach);
+            }
+    for (const DyeEmitter& e : emitters) {
+        const glm::vec3 r(e.radius + 2.0f * band_.grid.h);
+        mark(brickOf(e.posObj - r), brickOf(e.posObj + r));
+    }
+    std::vector<uint32_t> list;
+    for (size_t b = 0; b < active.size(); ++b)
+        if (active[b])
+            for (uint32_t i = band_.brickStart[b]; i < band_.brickStart[b + 1]; ++i) list.push_back(i);
+    if (!list.empty())
+        glNamedBufferSubData(active_.id(), 0, GLsizeiptr(list.size() * sizeof(uint32_t)), list.data());
+    return list.size();
 }
 
 void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitters) {
     if (band_.size() == 0) return;
+    const size_t count = listActive(dt, emitters);
+    if (count == 0) return;  // no dye anywhere, none released
     std::vector<glm::vec4> e;
     for (const DyeEmitter& d : emitters) {
         e.emplace_back(d.posObj, d.radius);
@@ -76,6 +118,8 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     }
     if (e.empty()) e.emplace_back(0.0f);  // a buffer must have storage
     emitters_ = gl::Buffer(GLsizeiptr(e.size() * sizeof(glm::vec4)), e.data());
+    const uint32_t zero = 0;
+    glClearNamedBufferData(flags_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     program_.use();
     const DyeGrid& g = band_.grid;
     glUniform3fv(program_.uniform("uDyeOrigin"), 1, glm::value_ptr(g.origin));
@@ -85,20 +129,24 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeBandBinding, bandData_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeSourceBinding, emitters_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeDepartureBinding, departures_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeFlagBinding, flags_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeActiveBinding, active_.id());
     const float decayFactor = std::exp(-std::max(decay, 0.0f) * std::abs(dt));
+    const int emitterCount = int(emitters.size());
     if (dt != 0.0f && maxSpeed_ > 0.0f) {
         if (dt != departureDt_) {
-            pass(3, dt, decayFactor, 0);
+            pass(3, dt, decayFactor, 0, int(band_.size()));
             departureDt_ = dt;
         }
-        pass(0, dt, decayFactor, 0);
-        pass(1, dt, decayFactor, int(emitters.size()));
+        pass(0, dt, decayFactor, 0, int(count));
+        pass(1, dt, decayFactor, emitterCount, int(count));
     } else {
-        pass(2, dt, decayFactor, int(emitters.size()));
+        pass(2, dt, decayFactor, emitterCount, int(count));
     }
     current_ = 1 - current_;
-    // The overlay reads the values next, in a fragment or compute shader.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // Where dye is now: the next step's bricks (a small read-back, once per frame).
+    hadDyeBefore_.swap(hadDye_);
+    glGetNamedBufferSubData(flags_.id(), 0, GLsizeiptr(hadDye_.size() * sizeof(uint32_t)), hadDye_.data());
 }
 
 DyeView DyeField::view(const core::Camera& camera, const core::Viewport& viewport) const {

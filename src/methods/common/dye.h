@@ -26,6 +26,8 @@ inline constexpr int kDyeValueBinding = 0;   // SSBO: values, three slots of the
 inline constexpr int kDyeBandBinding = 1;    // SSBO: closest point and velocity per band voxel
 inline constexpr int kDyeSourceBinding = 2;  // SSBO: the emitters of this frame
 inline constexpr int kDyeDepartureBinding = 3;  // SSBO: departure points per band voxel
+inline constexpr int kDyeFlagBinding = 4;       // SSBO: per brick, 1 where a step left dye
+inline constexpr int kDyeActiveBinding = 5;     // SSBO: the band voxels a step updates
 
 // A source emitting this frame, on the surface.
 struct DyeEmitter {
@@ -64,14 +66,19 @@ public:
     std::vector<glm::vec4> readValues() const;
 
 private:
-    void pass(int pass, float dt, float decayFactor, int emitterCount);
+    void pass(int pass, float dt, float decayFactor, int emitterCount, int count);
+    // The band voxels of the bricks the next step can change: those that held dye in either
+    // of the last two steps (the two value slots) grown by how far the dye reaches in a
+    // step, and those the emitters cover. The rest hold no dye and stay as they are.
+    size_t listActive(float dt, const std::vector<DyeEmitter>& emitters);
 
     DyeBand band_;
     std::vector<glm::vec3> positions_;
     std::vector<glm::uvec3> triangles_;
     gl::Program program_;
     gl::Handle<gl::detail::deleteTexture> indexTexture_;
-    gl::Buffer bandData_, values_, emitters_, departures_;
+    gl::Buffer bandData_, values_, emitters_, departures_, flags_, active_;
+    std::vector<uint32_t> hadDye_, hadDyeBefore_;  // per brick: the flags of the last two steps
     float departureDt_ = 0.0f;  // dt the departure points are for (0: stale)
     int current_ = 0;  // slot of the current values (0 or 1); slot 2 holds the forward step
     float maxSpeed_ = 0.0f;

@@ -114,6 +114,37 @@ DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid) {
     }
     if (band.closest.size() > size_t(std::numeric_limits<int32_t>::max()))
         throw ConfigError("dye: the surface's narrow band is too large");
+
+    // Brick by brick (a counting sort on the brick of each voxel's cell).
+    band.brickDims = (grid.dims + kDyeBrick - 1) / kDyeBrick;
+    const size_t bricks = size_t(band.brickDims.x) * size_t(band.brickDims.y) * size_t(band.brickDims.z);
+    band.brick.assign(band.closest.size(), 0);
+    band.brickStart.assign(bricks + 1, 0);
+    for (int z = 0; z < grid.dims.z; ++z)
+        for (int y = 0; y < grid.dims.y; ++y)
+            for (int x = 0; x < grid.dims.x; ++x) {
+                const int32_t idx = band.index[cell(x, y, z)];
+                if (idx < 0) continue;
+                const glm::ivec3 b = glm::ivec3(x, y, z) / kDyeBrick;
+                band.brick[size_t(idx)] =
+                    uint32_t((size_t(b.z) * size_t(band.brickDims.y) + size_t(b.y)) * size_t(band.brickDims.x) + size_t(b.x));
+                ++band.brickStart[band.brick[size_t(idx)] + 1];
+            }
+    for (size_t b = 0; b < bricks; ++b) band.brickStart[b + 1] += band.brickStart[b];
+    std::vector<uint32_t> fill(band.brickStart.begin(), band.brickStart.end() - 1);
+    std::vector<uint32_t> order(band.closest.size());  // new index of each old one
+    for (size_t i = 0; i < order.size(); ++i) order[i] = fill[band.brick[i]]++;
+    auto permute = [&](auto& v) {
+        auto out = v;
+        for (size_t i = 0; i < order.size(); ++i) out[order[i]] = v[i];
+        v = std::move(out);
+    };
+    permute(band.closest);
+    permute(band.triangle);
+    permute(band.barycentric);
+    permute(band.brick);
+    for (int32_t& idx : band.index)
+        if (idx >= 0) idx = int32_t(order[size_t(idx)]);
     return band;
 }
 

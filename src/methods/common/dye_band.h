@@ -33,16 +33,23 @@ inline constexpr float kDyeBandVoxels = 2.0f;
 // most kDyeMaxGridCells cells.
 DyeGrid makeDyeGrid(const core::Bounds& bounds, float h);
 
+// Side of a brick in grid cells: the band's voxels are stored brick by brick, so the
+// voxels of the bricks that hold dye (and those it can reach next) are index ranges.
+inline constexpr int kDyeBrick = 8;
+
 struct DyeBand {
     DyeGrid grid;
+    glm::ivec3 brickDims{0};            // bricks per axis
+    std::vector<uint32_t> brickStart;   // per brick (x fastest) + 1: first band voxel; voxels of b: [start[b], start[b+1])
     std::vector<int32_t> index;         // per grid cell: band voxel or -1
     std::vector<glm::vec3> closest;     // per band voxel: cp(x), object space
     std::vector<uint32_t> triangle;     // per band voxel: triangle holding cp(x)
     std::vector<glm::vec3> barycentric; // per band voxel: cp(x) in that triangle
+    std::vector<uint32_t> brick;        // per band voxel: its brick
     size_t size() const { return closest.size(); }
 };
 
-// Band voxels within kDyeBandVoxels * h of the surface.
+// Band voxels within kDyeBandVoxels * h of the surface, ordered by brick.
 DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid);
 
 // Tangential velocity at each band voxel's closest point: barycentric blend of the vertex

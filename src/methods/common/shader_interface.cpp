@@ -40,6 +40,8 @@ const std::string& shaderInterface() {
         s += "#define DYE_BAND_BINDING " + std::to_string(kDyeBandBinding) + "\n";
         s += "#define DYE_SOURCE_BINDING " + std::to_string(kDyeSourceBinding) + "\n";
         s += "#define DYE_DEPARTURE_BINDING " + std::to_string(kDyeDepartureBinding) + "\n";
+        s += "#define DYE_FLAG_BINDING " + std::to_string(kDyeFlagBinding) + "\n";
+        s += "#define DYE_ACTIVE_BINDING " + std::to_string(kDyeActiveBinding) + "\n";
         return s;
     }();
     return defines;
