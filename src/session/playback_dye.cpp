@@ -67,6 +67,9 @@ std::vector<methods::DyeEmitter> Playback::dyeEmitters(const core::Camera& camer
 
 void Playback::stepDye(const core::Camera& camera, double time, double perFrame) {
     if (!dye_ && options_.dye.empty() && options_.dyeFileSources.empty()) return;
+    // Split over processes (ParaView under MPI) each would hold the band of its own piece and
+    // lose the ink that crosses into another: no dye there.
+    if (group_ && group_->size() > 1) return;
     const double t = surface_->unsteady() ? time : 0.0;
     const core::SurfaceMesh& mesh = surface_->meshAtTime(t);
     // The band: made at the first step, again when the geometry changes (the dye with it).
