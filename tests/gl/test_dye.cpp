@@ -177,3 +177,23 @@ TEST_P(DyeMethods, BlobUnderAnOrbitingCameraOnEveryMethodAndPath) {
     }
     EXPECT_EQ(images[0], images[1]);
 }
+
+// A time series (the double gyre, steps interpolated): the dye goes on over the steps with
+// each step's field (the band is kept: interpolated positions of a fixed mesh round, but
+// stay within a tenth of a voxel) and a continuous source draws a growing streak.
+TEST(Dye, TimeSeriesCarriesDyeOverTheSteps) {
+    core::DatasetSteps steps(core::makeBuiltin("builtin:double-gyre"));
+    session::RenderOptions o;
+    o.input = "builtin:double-gyre";
+    o.size = {160, 100};
+    o.frames = 40;
+    session::setOption(o, "dye", "0.5,0.15,0:0.04:red");
+    session::Playback p(o, steps);
+    p.start(false);
+    p.advance();
+    const methods::DyeField* first = p.dye();
+    const size_t area0 = inkedVoxels(p);
+    for (int f = 1; f <= 40; ++f) p.advance();
+    EXPECT_EQ(p.dye(), first) << "the band was made again: the dye started over";
+    EXPECT_GT(inkedVoxels(p), 4 * area0);
+}

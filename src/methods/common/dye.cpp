@@ -33,7 +33,15 @@ DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, floa
 }
 
 bool DyeField::sameGeometry(const core::SurfaceMesh& mesh) const {
-    return mesh.positions == positions_ && mesh.triangles == triangles_;
+    if (mesh.triangles != triangles_ || mesh.positions.size() != positions_.size()) return false;
+    // Interpolating two steps of a fixed mesh rounds the positions: a tenth of a voxel is
+    // the same geometry (measured from the band's own positions, so a slow drift adds up).
+    const float tolerance2 = 0.01f * band_.grid.h * band_.grid.h;
+    for (size_t i = 0; i < positions_.size(); ++i) {
+        const glm::vec3 d = mesh.positions[i] - positions_[i];
+        if (glm::dot(d, d) > tolerance2) return false;
+    }
+    return true;
 }
 
 void DyeField::setVelocity(const core::SurfaceMesh& mesh, const std::string& field) {

@@ -51,8 +51,8 @@ public:
     // Needs a current GL context.
     DyeField(const core::SurfaceMesh& mesh, const std::string& field, float h);
 
-    // True if `mesh` has the positions and triangles the band was built from (a new time
-    // step of the same geometry: only the velocity changes).
+    // True if `mesh` has the triangles the band was built from and its positions within a
+    // tenth of a voxel (a new time step of the same geometry: only the velocity changes).
     bool sameGeometry(const core::SurfaceMesh& mesh) const;
     void setVelocity(const core::SurfaceMesh& mesh, const std::string& field);
     void clear();
