@@ -10,10 +10,9 @@
 namespace flowsurf::session {
 
 namespace {
-// Voxel size of the dye's band and the default source radius, in pixels of the view the
-// dye starts at: the band resolves what that view shows; a radius of a few pixels.
+// Voxel size of the dye's band in pixels of the view the dye starts at: the band resolves
+// what that view shows (the default radius, methods::kDyeRadiusPx, is 3 voxels).
 constexpr float kDyeVoxelPx = 2.0f;
-constexpr float kDyeRadiusPx = 6.0f;
 
 // Image scale at p: pixels per object unit across the view.
 float pixelsPerUnitAt(const core::Camera& camera, const core::Viewport& viewport, const glm::vec3& p) {
@@ -49,7 +48,7 @@ std::vector<methods::DyeEmitter> Playback::dyeEmitters(const core::Camera& camer
         p.source = s;
         p.start = dyeFrame_;
         p.posObj = methods::closestOnSurface(mesh, s.point);
-        p.radius = s.radius > 0.0f ? s.radius : kDyeRadiusPx / pixelsPerUnitAt(camera, options_.size, p.posObj);
+        p.radius = s.radius > 0.0f ? s.radius : methods::kDyeRadiusPx / pixelsPerUnitAt(camera, options_.size, p.posObj);
         placed.push_back(p);
     }
     placedDye_ = std::move(placed);

@@ -6,6 +6,9 @@
 
 namespace flowsurf::methods {
 
+// Radius of a source given without one: pixels at the view of the dye's first frame.
+inline constexpr float kDyeRadiusPx = 6.0f;
+
 struct DyeSource {
     glm::vec3 point{0.0f};              // object space (snapped to the surface)
     float radius = 0.0f;                // object units; 0: a few pixels at the first frame's view

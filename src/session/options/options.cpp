@@ -405,7 +405,7 @@ std::vector<OptionSpec> buildTable() {
     const std::string gDye = "Dye";
     {
         OptionSpec s{"dye", "", gDye, "Dye source X,Y,Z[:RADIUS[:COLOR]] (repeatable, or ';'-separated): ink released "
-                     "at the surface point nearest X,Y,Z, RADIUS in object units (0: a few pixels), COLOR a name "
+                     "at the surface point nearest X,Y,Z, RADIUS in object units (0: " + formatFloat(methods::kDyeRadiusPx) + " pixels at the first frame's view), COLOR a name "
                      "(red, green, blue, yellow, cyan, magenta, orange...), #rrggbb or r,g,b",
                      OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
         s.set = [](RenderOptions& o, const std::string& v) { o.dye = parseDyeSources(v, "--dye"); };
