@@ -139,6 +139,7 @@ PYBIND11_MODULE(_flowsurf, m) {
         .def(py::init([]() { return std::make_unique<Renderer>(); }), py::call_guard<py::gil_scoped_release>())
         .def("set", &Renderer::set)
         .def("get", &Renderer::get)
+        .def("add_dye", &Renderer::addDye, py::arg("point"), py::arg("radius") = 0.0f, py::arg("color") = "")
         .def("render", &Renderer::render, py::call_guard<py::gil_scoped_release>())
         .def("begin", &Renderer::begin, py::call_guard<py::gil_scoped_release>())
         .def("advance", &Renderer::advance, py::call_guard<py::gil_scoped_release>())

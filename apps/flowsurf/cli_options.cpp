@@ -28,6 +28,16 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         CLI::Option* opt = nullptr;
         if (s->kind == OptionKind::Flag)
             opt = cmd.add_flag_callback(names, [&o, s] { s->set(o, "true"); }, help);
+        else if (s->repeatable)
+            opt = cmd.add_option_function<std::vector<std::string>>(
+                     names,
+                     [&o, s](const std::vector<std::string>& v) {
+                         std::string joined;
+                         for (const auto& item : v) joined += (joined.empty() ? "" : ";") + item;
+                         s->set(o, joined);
+                     },
+                     help)
+                      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         else
             opt = cmd.add_option_function<std::string>(names, [&o, s](const std::string& v) { s->set(o, v); }, help);
         static const char* const kTypeNames[] = {"", "INT", "FLOAT", "TEXT", "CHOICE", "WxH", "X,Y,Z", "COLOR", "PATH"};

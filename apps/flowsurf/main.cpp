@@ -172,6 +172,8 @@ int main(int argc, char** argv) {
     } catch (const ConfigError& e) {  // thrown by our value parsers inside CLI11 callbacks
         std::fprintf(stderr, "flowsurf: %s\n", e.what());
         return app::kUsage;
+    } catch (const std::exception&) {  // a file an option reads (--colormap-file, --dye-file)
+        return reportCurrentError();
     }
 
     try {

@@ -13,6 +13,7 @@
 
 #include <flowsurf/surface.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -77,6 +78,14 @@ public:
     std::string get(const std::string& option) const;
     // The names set() takes, in `--help` order.
     static std::vector<std::string> optionNames();
+
+    // Dye [issue 20]: adds a source of ink at the surface point nearest `point` (object
+    // space), `radius` in object units (0: a few pixels at the first frame's view), `color`
+    // a name, #rrggbb or "r,g,b" (empty: the next of the default colours). As the "dye"
+    // option (its value lists every source); a running animation goes on, the source
+    // emitting from the next frame ("dye-release" frames, 0: continuously). Throws
+    // ConfigError for a bad radius or colour.
+    void addDye(const std::array<float, 3>& point, float radius = 0.0f, const std::string& color = "");
 
     // The camera: explicit, or (default, and after fitCamera) fitted to the surface's
     // bounds as the command line does. An orbit ("orbit" option) turns it per frame.

@@ -9,6 +9,8 @@ Ertl 2004), rendered on the GPU (or Mesa's llvmpipe) into numpy arrays::
     img = flowsurf.render(s, method="hybrid", size=(800, 600), frames=90, seed=1)
     img, tex = flowsurf.render(s, method="isa", flow_texture=True)
     r = flowsurf.Renderer(method="ibfvs", size=(640, 480), alpha=0.1)
+    img = flowsurf.render(s, dye=[(0, 0, 1), {"point": (1, 0, 0), "radius": 0.05, "color": "red"}])
+    r.add_dye((0, 1, 0), radius=0.05, color="#00ff00")
     for frame in r.frames(s, n=120, orbit=1.0): ...
     r.stage_ms
 
@@ -36,8 +38,25 @@ _OPTIONS = set(option_names())
 _READ_OPTIONS = set(read_option_names())
 
 
+def _dye_text(source):
+    """One dye source as --dye's X,Y,Z[:RADIUS[:COLOR]]: a point (x, y, z), a dict with
+    point, radius and color, or the text itself."""
+    if isinstance(source, str):
+        return source
+    if isinstance(source, dict):
+        unknown = set(source) - {"point", "radius", "color"}
+        if unknown or "point" not in source:
+            raise ValueError("a dye source dict takes point, radius, color (got %r)" % (source,))
+        text = ",".join(repr(float(v)) for v in source["point"])
+        text += ":" + repr(float(source.get("radius", 0.0)))
+        return text + (":" + str(source["color"]) if source.get("color") else "")
+    return ",".join(repr(float(v)) for v in source)
+
+
 def _option_text(name, value):
     """A Python value as the command line's text for option `name`."""
+    if name == "dye" and isinstance(value, (tuple, list)) and value and not isinstance(value[0], (int, float)):
+        return ";".join(_dye_text(s) for s in value)  # several sources
     if isinstance(value, (bool, _np.bool_)):
         return "on" if value else "off"  # flags and on/off switches both read it
     if isinstance(value, (tuple, list, _np.ndarray)):
@@ -155,6 +174,15 @@ class Renderer:
     def set(self, **options):
         """Sets options by keyword; the next frame starts over unless only the camera changed."""
         _apply(self._r, options)
+
+    def add_dye(self, point, radius=0.0, color=None):
+        """Releases dye at the surface point nearest `point`: radius in object units (0: a few
+        pixels), colour a name, '#rrggbb' or 'r,g,b' (None: the next default colour). A running
+        animation goes on; the source emits from the next frame (dye_release frames, 0: always)."""
+        try:
+            self._r.add_dye([float(v) for v in point], float(radius), color or "")
+        except ValueError as e:
+            raise ValueError("add_dye: %s" % e) from None
 
     def get(self, name):
         """An option's value as the command line would print it."""

@@ -303,3 +303,39 @@ def test_quality_is_the_command_lines(tmp_path):
     q0 = r.quality()
     assert q0["median"]["frame_correlation"] is None
     assert q0["median"]["orientation_error_deg"] == pytest.approx(q["median"]["orientation_error_deg"])
+
+
+# --- dye [issue 20] ------------------------------------------------------------------
+
+def red_mass(img):
+    """Dye seen in the image: red above green (a red dye on the gray overlay, unlit)."""
+    d = img[..., 0].astype(int) - img[..., 1].astype(int)
+    return np.clip(d, 0, None).sum() / 255.0
+
+
+def test_dye_keyword_and_add_dye_release_ink_that_the_flow_carries():
+    pts, tris, vel, w = sphere()
+    s = flowsurf.Surface(pts, tris, vel)
+    look = dict(size=(128, 128), overlay="gray", lighting=False, eye=(0, 0, 5), target=(0, 0, 0),
+                time_per_frame=0.05, frames=10)
+    assert red_mass(flowsurf.render(s, **look)) == 0
+    img = flowsurf.render(s, dye=[(-0.6, 0, 0.8), {"point": (0, 0.5, 0.85), "radius": 0.1, "color": "red"}], **look)
+    assert red_mass(img) > 10
+    r = flowsurf.Renderer(dye_release=1, **look)
+    frames = r.frames(s, 12)
+    next(frames)
+    assert red_mass(r.image()) == 0
+    r.add_dye((0, 0, 1), radius=0.15, color="red")  # dropped into a running animation
+    next(frames)
+    first = r.image()
+    assert red_mass(first) > 10
+    for _ in range(8):
+        last = next(frames)
+    ys, xs = np.nonzero(first[..., 0].astype(int) - first[..., 1] > 60)
+    ys2, xs2 = np.nonzero(last[..., 0].astype(int) - last[..., 1] > 60)
+    assert xs2.mean() > xs.mean() + 5  # w ~ +y: the front of the sphere moves to +x
+    assert r.get("dye").startswith("0,0,1:0.15:#")
+    with pytest.raises(ValueError, match="add_dye"):
+        r.add_dye((0, 0, 1), radius=-1)
+    with pytest.raises(ValueError, match="dye"):
+        flowsurf.Renderer(dye="1,2")

@@ -17,6 +17,10 @@ uniform int uMask;            // texture contrast x sqrt(mask value)
 uniform int uLegend;
 uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 uniform vec3 uBackground;
+#include "common/dye_sample.glsl"
+uniform int uDye;             // 0: no dye
+uniform int uDyeSlot;         // first value of the current dye
+uniform mat4 uInvViewProj;    // window coordinates -> object space, this frame's camera
 
 // Diffuse key light above-left of the eye, two-sided (open CFD surfaces).
 const vec3 kLight = vec3(-0.35, 0.5, 0.8);
@@ -52,10 +56,22 @@ vec3 surfaceColor(ivec2 px) {
     return clamp(color, 0.0, 1.0);
 }
 
+// Dye [issue 20] over the surface colour: sampled in object space at the visible surface
+// point of the pixel (depth unprojected), so only what the camera sees shows dye.
+vec3 withDye(vec3 color, ivec2 px, float depth) {
+    vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;
+    vec4 p = uInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    vec4 d = clamp(sampleDye(p.xyz / p.w, uDyeSlot), 0.0, 1.0);  // premultiplied
+    float lit = uLighting != 0 ? 0.55 + 0.45 * diffuse(normalize(texelFetch(uShade, px, 0).xyz)) : 1.0;
+    return color * (1.0 - d.a) + d.rgb * lit;
+}
+
 // The displayed colour of pixel `px`.
 vec3 overlayColor(ivec2 px) {
-    vec3 color = texelFetch(uDepth, px, 0).r >= 1.0 ? uBackground  // texture clipping
-                                                   : surfaceColor(px);
+    float depth = texelFetch(uDepth, px, 0).r;
+    vec3 color = depth >= 1.0 ? uBackground  // texture clipping
+                              : surfaceColor(px);
+    if (uDye != 0 && depth < 1.0) color = clamp(withDye(color, px, depth), 0.0, 1.0);
     if (uLegend != 0) {
         ivec2 q = px - uLegendOrigin;
         if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uLegendImage, 0)))) {

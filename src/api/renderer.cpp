@@ -4,12 +4,14 @@
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
+#include "session/options/dye_sources.h"
 #include "session/options/options.h"
 #include "session/playback.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <iterator>
 #include <mutex>
 
 namespace flowsurf {
@@ -122,6 +124,17 @@ void Renderer::set(const std::string& option, const std::string& value) {
                           "images (readImage, readFlowTexture)");
     session::setOption(impl_->options, option, value);
     if (impl_->playback) impl_->playback->set(option, value);
+}
+
+void Renderer::addDye(const std::array<float, 3>& point, float radius, const std::string& color) {
+    std::vector<methods::DyeSource> sources = impl_->options.dye;
+    const std::string text = session::formatFloat(point[0]) + "," + session::formatFloat(point[1]) + "," +
+                             session::formatFloat(point[2]) + ":" + session::formatFloat(radius) +
+                             (color.empty() ? "" : ":" + color);
+    methods::DyeSource s = session::parseDyeSources(text, "addDye").at(0);
+    if (color.empty()) s.color = methods::kDyePalette[sources.size() % std::size(methods::kDyePalette)];
+    sources.push_back(s);
+    set("dye", session::dyeSourcesText(sources));
 }
 
 std::string Renderer::get(const std::string& option) const {

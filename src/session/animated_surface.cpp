@@ -126,4 +126,11 @@ const methods::SurfaceGpu& AnimatedSurface::atTime(double t) {
     return *surface_;
 }
 
+const core::SurfaceMesh& AnimatedSurface::meshAtTime(double t) {
+    atTime(t);
+    if (stream_) return stream_->meshAt(t);
+    if (!steadyMesh_) steadyMesh_ = std::make_unique<core::SurfaceMesh>(provider_.load(options_.timeStep));
+    return *steadyMesh_;
+}
+
 }  // namespace flowsurf::session

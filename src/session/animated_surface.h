@@ -33,6 +33,9 @@ public:
     const methods::TimeLevels* levelsAt(int frame) { return levelsAtTime(mapping_.at(frame), mapping_.perFrame); }
     // The same around data time t, with `perFrame` data time per animation frame.
     const methods::TimeLevels* levelsAtTime(double t, double perFrame);
+    // The mesh at data time t on the CPU (dye needs its triangles and vectors); uploads as
+    // atTime(t) does. Steady data is read again on the first call and kept.
+    const core::SurfaceMesh& meshAtTime(double t);
     bool unsteady() const { return stream_ != nullptr; }
     double timeAt(int frame) const { return mapping_.at(frame); }
     const core::TimeMapping& mapping() const { return mapping_; }
@@ -61,6 +64,7 @@ private:
     std::unique_ptr<core::StepStream> stream_;
     core::TimeMapping mapping_;
     std::unique_ptr<methods::SurfaceGpu> surface_;
+    std::unique_ptr<core::SurfaceMesh> steadyMesh_;  // meshAtTime() of steady data
     std::unique_ptr<methods::TimeLevelSource> levels_;
     methods::ProcessGroup* group_ = nullptr;
     size_t uploadedTopology_ = 0;  // step whose triangles surface_ holds

@@ -33,6 +33,8 @@ void Playback::build() {
     methods_.clear();
     surface_.reset();
     cameras_.reset();
+    dye_.reset();
+    resetDye();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
     const methods::MethodParams params = surface_->paramsFor(options_.params);
     views_ = shownViews();
@@ -100,6 +102,7 @@ void Playback::setStageTiming(bool on) {
 }
 
 void Playback::stepsChanged() {
+    dye_.reset();  // the geometry may have changed: the band is made again at the next step
     surface_.reset();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
 }
@@ -116,6 +119,7 @@ void Playback::restart() {
     clock_ = 0;
     warmedUp_ = 0;
     clearQuality();
+    resetDye();
     if (startWarm_) {
         const core::Camera camera = frameCameras().at(0);
         const double t = surface_->unsteady() ? surface_->timeAt(0) : 0.0;
@@ -132,6 +136,7 @@ void Playback::start(bool warmUp) {
 
 void Playback::animationFrame(int f, uint32_t k) {
     const double t = surface_->unsteady() ? surface_->timeAt(f) : 0.0;
+    stepDye(frameCameras().at(f), t, surface_->mapping().perFrame);
     renderAll(frameCameras().at(f), t, surface_->mapping().perFrame, k);
 }
 
@@ -149,10 +154,14 @@ void Playback::still(int f) {
     startWarm_ = false;
     applyPending();
     restart();
-    // A history-free method's frame f needs no frame before it.
-    for (int k = historyFree() ? std::max(0, f - 1) : 0; k <= f; ++k) {
+    // A history-free method's frame f needs no frame before it (the dye and the quality's
+    // frame before f do).
+    for (int k = 0; k <= f; ++k) {
         qualityNext_ = qualityStep(f, k);
-        if (k < f && historyFree() && qualityNext_ == QualityStep::None) continue;
+        if (k < f && historyFree() && qualityNext_ == QualityStep::None) {
+            stepDye(frameCameras().at(k), surface_->unsteady() ? surface_->timeAt(k) : 0.0, surface_->mapping().perFrame);
+            continue;
+        }
         animationFrame(k, uint32_t(k));
     }
     frame_ = f + 1;
@@ -173,6 +182,7 @@ void Playback::warmUp(const LiveFrame& at) {
 void Playback::render(const LiveFrame& f, bool advance) {
     applyPending();
     qualityNext_ = qualityStep();
+    if (advance) stepDye(f.camera, f.time, f.perFrame);
     renderAll(f.camera, f.time, f.perFrame, clock_);
     if (advance) ++clock_;
 }
@@ -190,6 +200,10 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         }
         methods::FrameInput in{&s, camera, k, m->usesTimeLevels() ? levels : nullptr};
         in.group = group_;
+        if (dye_ && dyeFrame_ > 0) {
+            dyeView_ = dye_->view(camera, options_.size);
+            in.dye = &dyeView_;
+        }
         m->renderFrame(in);
         if (qualityNext_ != QualityStep::None) collectQuality(i, s, camera, k);
     }

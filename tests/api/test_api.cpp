@@ -223,3 +223,36 @@ TEST(Api, QualityOfTheLastFrame) {
     EXPECT_EQ(named.front().second, kept.median.orientationErrorDeg);
     EXPECT_THROW(r.setQualityEvery(-1), flowsurf::ConfigError);
 }
+
+// Dye [issue 20] through the library: addDye is the "dye" option's list plus one; the ink
+// shows where released (the vortex turns it about the centre) and a bad colour throws.
+TEST(Api, AddDyeReleasesInkThatTheFlowCarries) {
+    const Arrays a = vortexPlane();
+    flowsurf::Surface s = surfaceOf(a);
+    flowsurf::Renderer r;
+    r.set("size", "96x96");
+    r.set("overlay", "gray");
+    r.set("lighting", "off");
+    r.set("time-per-frame", "0.05");
+    r.set("dye-release", "1");  // a blob
+    flowsurf::CameraView front;
+    front.eye[2] = 4.0f;
+    r.setCamera(front);
+    r.addDye({0.5f, 0.0f, 0.0f}, 0.1f, "red");
+    EXPECT_EQ(r.get("dye"), "0.5,0,0:0.1:#ff0000");
+    EXPECT_THROW(r.addDye({0.0f, 0.0f, 0.0f}, 0.1f, "no-such-colour"), flowsurf::ConfigError);
+    EXPECT_THROW(r.addDye({0.0f, 0.0f, 0.0f}, -1.0f), flowsurf::ConfigError);
+    r.render(s, 20);
+    const std::vector<uint8_t> rgb = image(r);
+    double red = 0.0, cx = 0.0, cy = 0.0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) {
+            const uint8_t* c = &rgb[(size_t(y) * 96 + x) * 3];
+            const double v = std::max(0, int(c[0]) - int(c[1])) / 255.0;
+            red += v, cx += v * x, cy += v * y;
+        }
+    ASSERT_GT(red, 10.0);
+    // Counter-clockwise by 20 * 0.05 = 1 radian from (0.5, 0): up and to the left of where it began.
+    const double angle = std::atan2(-(cy / red - 47.5), cx / red - 47.5);
+    EXPECT_NEAR(angle, 1.0, 0.1);
+}

@@ -50,6 +50,10 @@ expect_fail "absurd image size"   2 "out of range"         "$WORK/oc.png" -- ren
 expect_fail "unknown method"      2 "method"               "$WORK/od.png" -- render builtin:sphere --method lic -o "$WORK/od.png" -q
 expect_fail "bad output kind"     2 "\.gif"                "$WORK/oe.gif" -- render builtin:sphere -o "$WORK/oe.gif" -q
 expect_fail "unwritable output"   3 "nodir"                "$WORK/nodir/of.png" -- render builtin:sphere --size 64x64 --frames 2 -o "$WORK/nodir/of.png" -q
+expect_fail "bad dye point"       2 "--dye"                "$WORK/og.png" -- render builtin:sphere --dye 1,2 -o "$WORK/og.png" -q
+expect_fail "negative dye radius" 2 "--dye.*radius"        "$WORK/oh.png" -- render builtin:sphere --dye 0,0,1:-1 -o "$WORK/oh.png" -q
+expect_fail "bad dye release"     2 "--dye-release"        "$WORK/oi.png" -- render builtin:sphere --dye-release=-3 -o "$WORK/oi.png" -q
+expect_fail "missing dye file"    3 "nosuch.json"          "$WORK/oj.png" -- render builtin:sphere --dye-file "$WORK/nosuch.json" -o "$WORK/oj.png" -q
 echo '{"keyframes": [{"frame": 0}]}' > "$WORK/noeye.json"
 echo '{"keyframes": [' > "$WORK/broken.json"
 expect_fail "camera path no eye"  4 "noeye.json: keyframe 0" "$WORK/og.png" -- render builtin:sphere --camera-path "$WORK/noeye.json" -o "$WORK/og.png" -q

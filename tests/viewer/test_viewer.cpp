@@ -404,3 +404,40 @@ TEST_F(Viewer, QualityMeasuredEveryNFramesWhenOn) {
     ASSERT_EQ(replay("builtin:sphere", "at 5 quit\n", "--size 96x96 --stats '" + path("off.json") + "'"), 0) << err_;
     EXPECT_FALSE(readJson(path("off.json")).contains("quality"));
 }
+
+// Dye [issue 20]: a ctrl + click in the real window drops a source at the surface point
+// under the cursor (on the unit sphere), recorded as a `set dye` event; the replayed
+// session shows the ink on the surface only, and none before the event.
+TEST_F(Viewer, CtrlClickDropsDyeOnTheSurfaceAndReplays) {
+    if (std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") != 0)
+        GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    const std::string script = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/dye_click.sh";
+    ASSERT_EQ(std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + script + "' '" + exe_ + "' '" + dir_ + "'")
+                              .c_str()),
+              0);
+    std::ifstream in(path("dye.log"));
+    std::string line, dyeValue;
+    while (std::getline(in, line))
+        if (auto at = line.find(" set dye "); at != std::string::npos) dyeValue = line.substr(at + 9);
+    ASSERT_FALSE(dyeValue.empty()) << "no `set dye` event recorded";
+    glm::vec3 p(0.0f);
+    ASSERT_EQ(std::sscanf(dyeValue.c_str(), "%f,%f,%f", &p.x, &p.y, &p.z), 3) << dyeValue;
+    EXPECT_NEAR(glm::length(p), 1.0f, 0.01f) << "the point under the cursor, on the unit sphere";
+    EXPECT_GT(p.z, 0.0f) << "on the side facing the camera";
+
+    // Replayed: red ink where the sphere is, none on the background, none before.
+    ASSERT_EQ(replay("builtin:sphere",
+                     "at 2 screenshot " + path("before.png") + "\n"
+                     "at 3 set dye " + dyeValue.substr(0, dyeValue.find(':')) + ":0.15:red\n"
+                     "at 20 screenshot " + path("after.png") + "\n"
+                     "at 21 quit\n",
+                     "--size 200x160 --overlay gray --lighting off"), 0) << err_;
+    auto red = [](const io::PngImage& im) {
+        size_t n = 0;
+        for (size_t i = 0; i < size_t(im.width) * im.height; ++i)
+            n += !isBackground(im, i) && im.samples[i * 3] > 200 && im.samples[i * 3 + 1] < 60;
+        return n;
+    };
+    EXPECT_EQ(red(png(path("before.png"))), 0u);
+    EXPECT_GT(red(png(path("after.png"))), 30u);
+}

@@ -244,6 +244,10 @@ private:
         const bool changed = mustRender_ || !core::sameCamera(camera, lastCamera_) || state_.time != lastTime_;
         if (!state_.advancing() && !changed) return false;
         try {
+            // Options that apply live (effect None: the dye sources) go to the playback as they are.
+            for (const OptionSpec& spec : renderOptionTable())
+                if (spec.effect == OptionEffect::None && spec.get(state_.options) != spec.get(pipeline_.playback().options()))
+                    pipeline_.playback().set(spec.name, spec.get(state_.options));
             pipeline_.render({camera, state_.time, state_.timePerFrame}, state_.advancing());
         } catch (const std::exception& e) {
             report(e.what());

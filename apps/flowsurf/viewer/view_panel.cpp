@@ -4,6 +4,7 @@
 #include "view_window.h"
 
 #include "cli_options.h"
+#include "session/options/dye_sources.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -83,6 +84,29 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("--%s: %s (default %s)", spec.name.c_str(), spec.help.c_str(),
                                                   defaultText(spec).c_str());
+}
+
+void Window::dyePanel(const ViewerState& state) {
+    ImGui::TextWrapped("ctrl + click on the surface releases dye there");
+    std::vector<methods::DyeSource> sources = state.options.dye;
+    int removed = -1;
+    bool moved = false;
+    for (size_t i = 0; i < sources.size(); ++i) {
+        ImGui::PushID(int(i));
+        methods::DyeSource& s = sources[i];
+        ImGui::ColorButton("##c", ImVec4(s.color.r, s.color.g, s.color.b, 1.0f), ImGuiColorEditFlags_NoTooltip);
+        ImGui::SameLine();
+        // Edited in place; the option changes when the field is left (one event per move).
+        ImGui::InputFloat3("##p", &s.point.x, "%.4g");
+        moved |= ImGui::IsItemDeactivatedAfterEdit();
+        ImGui::SameLine();
+        if (ImGui::SmallButton("x")) removed = int(i);
+        ImGui::PopID();
+    }
+    if (removed >= 0) sources.erase(sources.begin() + removed);
+    if (removed >= 0 || moved) emitSet("dye", session::dyeSourcesText(sources));
+    for (const OptionSpec& spec : renderOptionTable())
+        if (spec.group == "Dye" && spec.name != "dye") optionWidget(spec, state);
 }
 
 void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
@@ -174,6 +198,8 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
             for (const OptionSpec& spec : renderOptionTable())
                 if (spec.group == group && spec.name != "method") optionWidget(spec, state);
 
+    if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
+
     // Per-stage times of each view (mean over the last frames).
     if (pipeline.ready() && ImGui::CollapsingHeader("Stage times", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (size_t i = 0; i < pipeline.viewCount(); ++i) {
@@ -212,6 +238,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         ImGui::BulletText("middle drag or shift + left drag: pan");
         ImGui::BulletText("wheel: zoom towards the cursor; right drag: zoom");
         ImGui::BulletText("drop a file on the window: open it");
+        ImGui::BulletText("ctrl + click on the surface: release dye there");
         for (const KeyBinding& k : keyTable()) ImGui::BulletText("%-6s %s", k.name, k.description);
     }
     ImGui::PopItemWidth();

@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "io/image_writer.h"
+#include "session/options/dye_sources.h"
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -10,7 +11,9 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <cstdio>
 #include <utility>
 
@@ -39,6 +42,21 @@ struct WindowCallbacks {
                                                                 : nullptr;
         if (!name) return;
         Window& s = self(w);
+        if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL)) {
+            // ctrl + click: dye at the surface point under the cursor (resolved in present()).
+            double cx = 0, cy = 0;
+            int ww = 1, wh = 1, fw = 1, fh = 1;
+            glfwGetCursorPos(w, &cx, &cy);
+            glfwGetWindowSize(w, &ww, &wh);
+            glfwGetFramebufferSize(w, &fw, &fh);
+            s.dyeClick_ = glm::vec2(float(cx * fw / std::max(ww, 1)), float(cy * fh / std::max(wh, 1)));
+            s.swallowRelease_ = true;
+            return;
+        }
+        if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_RELEASE && s.swallowRelease_) {
+            s.swallowRelease_ = false;
+            return;
+        }
         Event e{s.frame_, action == GLFW_PRESS ? EventType::MouseDown : EventType::MouseUp, name};
         e.shift = action == GLFW_PRESS && (mods & GLFW_MOD_SHIFT);
         s.queue_.push_back(e);
@@ -143,7 +161,33 @@ void Window::emitSet(const std::string& name, const std::string& value) {
     queue_.push_back(e);
 }
 
+void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
+    const glm::vec2 click = *dyeClick_;
+    dyeClick_.reset();
+    if (!pipeline.ready() || pipeline.viewCount() == 0) return;
+    const core::Viewport v = pipeline.viewSize();
+    const int view = std::clamp(int(click.x) / std::max(v.width, 1), 0, int(pipeline.viewCount()) - 1);
+    const int x = int(click.x) - view * v.width, y = v.height - 1 - int(click.y);  // GL rows bottom to top
+    if (x < 0 || x >= v.width || y < 0 || y >= v.height) return;
+    float depth = 1.0f;
+    glGetTextureSubImage(pipeline.method(size_t(view)).surfaceDepth().id(), 0, x, y, 0, 1, 1, 1, GL_DEPTH_COMPONENT,
+                         GL_FLOAT, sizeof depth, &depth);
+    if (depth >= 1.0f) return;  // background: nothing to dye
+    const glm::mat4 inv = glm::inverse(pipeline.playback().lastCamera().viewProjection(v.aspect()));
+    const glm::vec4 ndc((x + 0.5f) / float(v.width) * 2.0f - 1.0f, (y + 0.5f) / float(v.height) * 2.0f - 1.0f,
+                        depth * 2.0f - 1.0f, 1.0f);
+    const glm::vec4 p = inv * ndc;
+    std::vector<methods::DyeSource> sources = state.options.dye;
+    methods::DyeSource s;
+    s.point = glm::vec3(p) / p.w;
+    s.color = methods::kDyePalette[sources.size() % std::size(methods::kDyePalette)];
+    // As the option's text reads it back, so the log replays exactly this source.
+    sources.push_back(session::parseDyeSources(session::dyeSourcesText({s})).at(0));
+    emitSet("dye", session::dyeSourcesText(sources));
+}
+
 void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
+    if (dyeClick_) dropDye(state, pipeline);
     int fw = 0, fh = 0;
     framebufferSize(&fw, &fh);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -7,6 +7,7 @@
 #include "view_state.h"
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,6 +49,11 @@ private:
     void emitSet(const std::string& name, const std::string& value);
     // The panel's Quality section (doc/algorithms.md §9): off until turned on.
     void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
+    // Dye [issue 20]: the panel's list of sources, and a ctrl + click turned into a source
+    // at the surface point under the cursor (the view's depth read back and unprojected),
+    // emitted as `set dye` so that the event log replays it without a read-back.
+    void dyePanel(const ViewerState& state);
+    void dropDye(const ViewerState& state, ViewPipeline& pipeline);
 
     GLFWwindow* window_ = nullptr;
     std::vector<Event> queue_;
@@ -56,6 +62,8 @@ private:
     std::string configPath_ = "flowsurf_view.json", keyframePath_ = "flowsurf_camera_path.json";
     std::string screenshotPath_ = "flowsurf_screenshot.png", recordPath_ = "flowsurf_recording.mp4";
     std::string openPath_, windowShot_;
+    std::optional<glm::vec2> dyeClick_;  // framebuffer pixels of a ctrl + click, origin top-left
+    bool swallowRelease_ = false;        // the release of that click is not a drag's end
 
     friend struct WindowCallbacks;
 };

@@ -4,6 +4,7 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "gl/stage_timer.h"
+#include "methods/common/dye.h"
 #include "methods/common/params.h"
 #include "methods/common/process_group.h"
 #include "methods/common/surface_gpu.h"
@@ -26,6 +27,8 @@ struct FrameInput {
     // (sort-last parallel rendering, process_group.h); null: this process alone. Each method
     // merges its per-pixel buffers over the group by depth before its image-space stages.
     ProcessGroup* group = nullptr;
+    // The dye to show over the texture in the overlay (session::Playback's), or null.
+    const DyeView* dye = nullptr;
 };
 
 class FlowMethod {

@@ -21,7 +21,15 @@ Overlay::Overlay(const CommonParams& params)
       path_(resolveGlPath(params.glPath)),
       program_(makeProgram(path_)),
       colormap_(makeColormapTexture(params)),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()),
+      noDyeValues_(sizeof(glm::vec4), nullptr) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &id);
+    noDyeIndex_ = gl::Handle<gl::detail::deleteTexture>(id);
+    glTextureStorage3D(id, 1, GL_R32I, 1, 1, 1);
+    const int32_t none = -1;
+    glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RED_INTEGER, GL_INT, &none);
+}
 
 void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) const {
     const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
@@ -40,7 +48,8 @@ void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) con
 }
 
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-                    const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const {
+                    const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
+                    const DyeView* dye) const {
     if (params_.legend) updateLegend(surface, flow.width(), flow.height());
     program_.use();
     glUniform1i(program_.uniform("uScheme"), int(params_.overlay));
@@ -58,6 +67,15 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glBindTextureUnit(3, colormap_.id());
     glBindTextureUnit(4, mask.id());
     glBindTextureUnit(5, params_.legend ? legend_.id() : colormap_.id());
+    glUniform1i(program_.uniform("uDye"), dye != nullptr);
+    glBindTextureUnit(kDyeIndexUnit, dye ? dye->index : noDyeIndex_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, dye ? dye->values : noDyeValues_.id());
+    if (dye) {
+        glUniform1i(program_.uniform("uDyeSlot"), dye->slot);
+        glUniform3fv(program_.uniform("uDyeOrigin"), 1, &dye->grid.origin.x);
+        glUniform1f(program_.uniform("uDyeH"), dye->grid.h);
+        glUniformMatrix4fv(program_.uniform("uInvViewProj"), 1, GL_FALSE, &dye->invViewProj[0][0]);
+    }
     if (path_ == GlPath::Compute) {
         // The composite is the target's colour attachment (RGBA8, as every method keeps it).
         GLint composite = 0;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "methods/common/dye.h"
 #include "methods/common/params.h"
 #include "methods/common/surface_gpu.h"
 
@@ -17,9 +18,11 @@ class Overlay {
 public:
     explicit Overlay(const CommonParams& params);
     // `surface` gives the colour range and name the legend shows. `target`: the composite
-    // (RGBA8) as the colour attachment 0 of a framebuffer.
+    // (RGBA8) as the colour attachment 0 of a framebuffer. `dye`: the dye to show over the
+    // surface (FrameInput::dye), or null.
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-               const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface) const;
+               const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
+               const DyeView* dye = nullptr) const;
 
 private:
     // Re-rasterises the legend when its range or title changed (auto ranges move).
@@ -30,6 +33,9 @@ private:
     gl::Program program_;
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
+    // Bound in place of the dye's grid and values when there is none (one cell, -1).
+    gl::Handle<gl::detail::deleteTexture> noDyeIndex_;
+    gl::Buffer noDyeValues_;
     mutable gl::Texture2D legend_;
     mutable glm::ivec2 legendOrigin_{0};
     mutable glm::vec2 legendRange_{0.0f, -1.0f};

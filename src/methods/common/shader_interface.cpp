@@ -1,6 +1,7 @@
 #include "methods/common/shader_interface.h"
 
 #include "core/noise.h"
+#include "methods/common/dye.h"
 #include "methods/common/params.h"
 #include "methods/common/time_levels.h"
 
@@ -33,6 +34,14 @@ const std::string& shaderInterface() {
         s += enumDefines("INTEGRATOR", kIntegratorNames);
         s += enumDefines("EDGE_FILL", kEdgeFillNames);
         s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
+        s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";
+        s += "#define DYE_INDEX_UNIT " + std::to_string(kDyeIndexUnit) + "\n";
+        s += "#define DYE_VALUE_BINDING " + std::to_string(kDyeValueBinding) + "\n";
+        s += "#define DYE_BAND_BINDING " + std::to_string(kDyeBandBinding) + "\n";
+        s += "#define DYE_SOURCE_BINDING " + std::to_string(kDyeSourceBinding) + "\n";
+        s += "#define DYE_DEPARTURE_BINDING " + std::to_string(kDyeDepartureBinding) + "\n";
+        s += "#define DYE_FLAG_BINDING " + std::to_string(kDyeFlagBinding) + "\n";
+        s += "#define DYE_ACTIVE_BINDING " + std::to_string(kDyeActiveBinding) + "\n";
         return s;
     }();
     return defines;

@@ -44,7 +44,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface);
+    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye);
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {

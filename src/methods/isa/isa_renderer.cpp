@@ -82,7 +82,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface);
+    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye);
     timer_.endFrame();
 }
 

@@ -1,6 +1,6 @@
 // flowsurf — writes the FlowSurf representation's server-manager XML (ParaView 5.11) to
-// stdout, one property per row of the option table that a ParaView user sets: the Method
-// and Overlay groups and the warm-up, named "FlowSurf" + the option in CamelCase (--filter-length ->
+// stdout, one property per row of the option table that a ParaView user sets: the Method,
+// Overlay and Dye groups and the warm-up, named "FlowSurf" + the option in CamelCase (--filter-length ->
 // FlowSurfFilterLength). colormap, lighting and background are ParaView's own (Coloring,
 // the light kit, the view's background) and are left out. Run at configure time.
 #include "session/options/options.h"
@@ -38,8 +38,9 @@ std::string escape(const std::string& s) {
 }
 
 bool exposed(const OptionSpec& s) {
-    // The method's options, and the warm-up that the mapper's frame loop runs.
-    if (s.group != "Method" && s.group != "Overlay" && s.name != "warmup") return false;
+    // The method's options, the dye (sources as --dye's text: x,y,z:radius:colour;...), and
+    // the warm-up that the mapper's frame loop runs.
+    if (s.group != "Method" && s.group != "Overlay" && s.group != "Dye" && s.name != "warmup") return false;
     return s.name != "colormap" && s.name != "lighting" && s.name != "background";
 }
 

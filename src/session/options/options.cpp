@@ -4,6 +4,7 @@
 
 #include "core/errors.h"
 #include "session/options/colormap_file.h"
+#include "session/options/dye_sources.h"
 
 #include <algorithm>
 #include <cctype>
@@ -398,6 +399,38 @@ std::vector<OptionSpec> buildTable() {
         s.set = [](RenderOptions& o, const std::string& v) { o.params.common.background = parseColor(v); };
         s.get = [](const RenderOptions& o) { return vec3Text(o.params.common.background); };
         add(s);
+    }
+
+    // Dye [issue 20]: changes apply live (session::Playback), hence effect None.
+    const std::string gDye = "Dye";
+    {
+        OptionSpec s{"dye", "", gDye, "Dye source X,Y,Z[:RADIUS[:COLOR]] (repeatable, or ';'-separated): ink released "
+                     "at the surface point nearest X,Y,Z, RADIUS in object units (0: " + formatFloat(methods::kDyeRadiusPx) + " pixels at the first frame's view), COLOR a name "
+                     "(red, green, blue, yellow, cyan, magenta, orange...), #rrggbb or r,g,b",
+                     OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) { o.dye = parseDyeSources(v, "--dye"); };
+        s.get = [](const RenderOptions& o) { return dyeSourcesText(o.dye); };
+        s.repeatable = true;
+        add(s);
+        effect(OptionEffect::None);
+    }
+    add(number("dye-release", gDye, "Frames a dye source emits from its start (0: continuously, a streakline; N: a "
+               "blob that then travels)", &RenderOptions::dyeRelease, 0, 100000000));
+    effect(OptionEffect::None);
+    add(number("dye-decay", gDye, "Dye fades at this rate per data time unit (0: never)", &RenderOptions::dyeDecay, 0,
+               1e30));
+    effect(OptionEffect::None);
+    {
+        OptionSpec s{"dye-file", "", gDye, "Dye sources from a JSON file: [{\"point\": [x,y,z], \"radius\": r, "
+                     "\"color\": \"red\", \"start\": frame, \"stop\": frame}, ...] (see README)",
+                     OptionKind::Path, 0, 0, {}, true, nullptr, nullptr};
+        s.set = [](RenderOptions& o, const std::string& v) {
+            o.dyeFileSources = v.empty() ? std::vector<methods::DyeSource>{} : readDyeFile(v);
+            o.dyeFile = v;
+        };
+        s.get = [](const RenderOptions& o) { return o.dyeFile; };
+        add(s);
+        effect(OptionEffect::None);
     }
 
     // Camera

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "methods/common/dye_source.h"
 #include "methods/common/params.h"
 
 #include <functional>
@@ -47,6 +48,13 @@ struct RenderOptions {
     float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
+    // Dye [issue 20]: sources (--dye, repeatable) and those of --dye-file, each emitting from
+    // its start frame for --dye-release frames (0: continuously) unless its stop frame says.
+    std::vector<methods::DyeSource> dye;
+    int dyeRelease = 0;
+    float dyeDecay = 0.0f;              // per data time unit
+    std::string dyeFile;
+    std::vector<methods::DyeSource> dyeFileSources;  // read from dyeFile
     methods::MethodParams params;
 };
 
@@ -84,6 +92,8 @@ struct OptionSpec {
     // "fit the bounds").
     std::function<std::string(const RenderOptions&)> get;
     OptionEffect effect = OptionEffect::Rebuild;  // what a change means after the start
+    // Given several times on the command line: the values joined by ';' are set at once.
+    bool repeatable = false;
 };
 
 // Every option of render/compare/view, in --help order. The positional input is "input".

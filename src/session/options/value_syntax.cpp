@@ -76,6 +76,12 @@ glm::vec3 parseColor(const std::string& text, const std::string& what) {
     if (t == "black") return glm::vec3(0.0f);
     if (t == "white") return glm::vec3(1.0f);
     if (t == "gray" || t == "grey") return glm::vec3(0.5f);
+    // Dye colours by name (--dye): full-saturation hues.
+    static const std::pair<const char*, glm::vec3> kNamed[] = {
+        {"red", {1, 0, 0}},    {"green", {0, 0.8f, 0}}, {"blue", {0, 0.2f, 1}},     {"yellow", {1, 0.9f, 0}},
+        {"cyan", {0, 0.9f, 1}}, {"magenta", {1, 0, 1}},  {"orange", {1, 0.5f, 0}}};
+    for (const auto& [name, c] : kNamed)
+        if (t == name) return c;
     glm::vec3 c = parseVec3(text, what);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
         throw ConfigError(what + ": components of '" + text + "' must be in 0..1");

@@ -1,0 +1,87 @@
+// flowsurf — dye on the surface [issue 20]: concentration kept in object space on the narrow
+// band of dye_band.h, advected on the GPU by the surface's tangential velocity and shown by
+// every method's overlay at the visible surface point of each pixel (so it survives camera
+// motion, zoom and occlusion). Method-independent: session::Playback owns one and steps it
+// once per animation frame.
+// Advection: semi-Lagrangian on the closest points, u'(x) = u(cp(x) - v dt) (closest point
+// method), with the MacCormack correction and the min/max limiter of [Selle et al. 2008,
+// J. Sci. Comput. 35] for second-order accuracy and little numerical diffusion.
+// Values: RGBA32F per band voxel, premultiplied (rgb = colour x concentration, a = concentration).
+#pragma once
+
+#include "core/camera.h"
+#include "core/mesh.h"
+#include "gl/objects.h"
+#include "methods/common/dye_band.h"
+
+#include <string>
+#include <vector>
+
+namespace flowsurf::methods {
+
+// Work group of the band passes and the bindings the dye shaders share (shader_interface.cpp).
+inline constexpr int kDyeGroup = 256;
+inline constexpr int kDyeIndexUnit = 6;      // isampler3D: band voxel of each grid cell
+inline constexpr int kDyeValueBinding = 0;   // SSBO: values, three slots of the band's size
+inline constexpr int kDyeBandBinding = 1;    // SSBO: closest point and velocity per band voxel
+inline constexpr int kDyeSourceBinding = 2;  // SSBO: the emitters of this frame
+inline constexpr int kDyeDepartureBinding = 3;  // SSBO: departure points per band voxel
+inline constexpr int kDyeFlagBinding = 4;       // SSBO: per brick, 1 where a step left dye
+inline constexpr int kDyeActiveBinding = 5;     // SSBO: the band voxels a step updates
+
+// A source emitting this frame, on the surface.
+struct DyeEmitter {
+    glm::vec3 posObj{0.0f};
+    float radius = 0.0f;  // object units
+    glm::vec3 color{1.0f};
+};
+
+// What the overlay needs to sample the dye at the visible surface (FrameInput::dye).
+struct DyeView {
+    GLuint index = 0;       // R32I 3D texture
+    GLuint values = 0;      // SSBO
+    int slot = 0;           // first vec4 of the current values
+    DyeGrid grid;
+    glm::mat4 invViewProj{1.0f};  // window -> object space of this frame's camera
+};
+
+class DyeField {
+public:
+    // The band of `mesh` with voxel size `h` (object units) and the velocity of `field`.
+    // Needs a current GL context.
+    DyeField(const core::SurfaceMesh& mesh, const std::string& field, float h);
+
+    // True if `mesh` has the triangles the band was built from and its positions within a
+    // tenth of a voxel (a new time step of the same geometry: only the velocity changes).
+    bool sameGeometry(const core::SurfaceMesh& mesh) const;
+    void setVelocity(const core::SurfaceMesh& mesh, const std::string& field);
+    void clear();
+    // One frame: advect by `dt` data time (0: none), decay by exp(-decay dt), then emit.
+    void step(float dt, float decay, const std::vector<DyeEmitter>& emitters);
+    DyeView view(const core::Camera& camera, const core::Viewport& viewport) const;
+    const DyeBand& band() const { return band_; }
+    // Largest band velocity (object units per data time).
+    float maxSpeed() const { return maxSpeed_; }
+    // The current values read back (tests): RGBA per band voxel.
+    std::vector<glm::vec4> readValues() const;
+
+private:
+    void pass(int pass, float dt, float decayFactor, int emitterCount, int count);
+    // The band voxels of the bricks the next step can change: those that held dye in either
+    // of the last two steps (the two value slots) grown by how far the dye reaches in a
+    // step, and those the emitters cover. The rest hold no dye and stay as they are.
+    size_t listActive(float dt, const std::vector<DyeEmitter>& emitters);
+
+    DyeBand band_;
+    std::vector<glm::vec3> positions_;
+    std::vector<glm::uvec3> triangles_;
+    gl::Program program_;
+    gl::Handle<gl::detail::deleteTexture> indexTexture_;
+    gl::Buffer bandData_, values_, emitters_, departures_, flags_, active_;
+    std::vector<uint32_t> hadDye_, hadDyeBefore_;  // per brick: the flags of the last two steps
+    float departureDt_ = 0.0f;  // dt the departure points are for (0: stale)
+    int current_ = 0;  // slot of the current values (0 or 1); slot 2 holds the forward step
+    float maxSpeed_ = 0.0f;
+};
+
+}  // namespace flowsurf::methods
