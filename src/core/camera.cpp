@@ -93,7 +93,8 @@ Camera orbitCamera(const Camera& camera, float degrees) {
     return c;
 }
 
-float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds) {
+float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds,
+                       std::span<const glm::vec3> samples) {
     if (camera.orthographic()) return float(viewport.height) / camera.orthoHeight;
     // The nearest box corner along the view axis bounds the scale of what is visible
     // (the bounding sphere would be far too pessimistic for flat domains).
@@ -103,6 +104,22 @@ float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bou
         glm::vec3 p(i & 1 ? bounds.hi.x : bounds.lo.x, i & 2 ? bounds.hi.y : bounds.lo.y,
                     i & 4 ? bounds.hi.z : bounds.lo.z);
         nearest = std::min(nearest, glm::dot(p - camera.eye, fwd));
+    }
+    if (!samples.empty()) {
+        // The nearest sample in the frustum (with a margin of a tenth of the view).
+        const glm::vec3 right = glm::normalize(glm::cross(fwd, camera.up));
+        const glm::vec3 up = glm::cross(right, fwd);
+        const float tanY = 1.1f * std::tan(glm::radians(camera.fovDeg) * 0.5f);
+        const float tanX = tanY * float(viewport.width) / float(viewport.height);
+        float nearestSample = std::numeric_limits<float>::max();
+        for (const glm::vec3& p : samples) {
+            const glm::vec3 d = p - camera.eye;
+            const float z = glm::dot(d, fwd);
+            if (z > camera.nearPlane && std::abs(glm::dot(d, right)) <= z * tanX && std::abs(glm::dot(d, up)) <= z * tanY)
+                nearestSample = std::min(nearestSample, z);
+        }
+        // Half its depth: a point between the samples may be nearer.
+        if (nearestSample < std::numeric_limits<float>::max()) nearest = std::max(nearest, 0.5f * nearestSample);
     }
     nearest = std::max(nearest, camera.nearPlane);
     float viewHeight = 2.0f * nearest * std::tan(glm::radians(camera.fovDeg) * 0.5f);

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
+
 namespace flowsurf::core {
 
 // The image sizes every front end accepts, each side in pixels.
@@ -51,8 +53,13 @@ void fitClipPlanes(Camera& camera, const Bounds& bounds);
 // Turns the eye about the target around the up axis by `degrees` (the --orbit path).
 Camera orbitCamera(const Camera& camera, float degrees);
 
-// Upper bound of the image scale (pixels per object unit) over the bounding sphere:
-// used to turn a step given in pixels into dt.
-float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds);
+// Upper bound of the image scale (pixels per object unit) of what is visible: used to turn
+// a step given in pixels into dt. Perspective: the scale at the depth of the bounds' nearest
+// corner, or, when `samples` (points on the surface) are given and the nearest of them in
+// the view frustum is more than twice as deep, at half that depth: a camera close to or
+// inside the bounds, whose nearest corner is off screen or behind it. Never nearer than the
+// near plane.
+float maxPixelsPerUnit(const Camera& camera, const Viewport& viewport, const Bounds& bounds,
+                       std::span<const glm::vec3> samples = {});
 
 }  // namespace flowsurf::core

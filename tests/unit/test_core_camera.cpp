@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 using namespace flowsurf::core;
 
 TEST(Camera, OrthographicProjectionMapsToPixels) {
@@ -33,6 +35,34 @@ TEST(Camera, PerspectiveCentreAndFovEdge) {
     // With a 90 degree fov, y = distance lands on the top edge.
     EXPECT_NEAR(projectToPixels(c, vp, {0, 10, 0}).y, 100.0f, 1e-3f);
     EXPECT_NEAR(projectToPixels(c, vp, {0, 5, 0}).y, 75.0f, 1e-3f);
+}
+
+// A camera inside the bounds (walking through a street canyon, an engine port): the
+// nearest corner is behind it, so the scale comes from the nearest visible surface point
+// (at half its depth, a margin for points between the samples). Points behind the camera
+// or outside the view do not count; without any, the near plane's scale is the bound.
+TEST(Camera, ScaleInsideTheBoundsFollowsTheNearestVisibleSurface) {
+    Camera c;
+    c.eye = {0, 0, 0};
+    c.target = {0, 0, -1};
+    c.fovDeg = 90.0f;
+    c.nearPlane = 0.01f;
+    c.farPlane = 100.0f;
+    Viewport vp{100, 100};
+    const Bounds box{{-50, -50, -50}, {50, 50, 50}};
+    const std::vector<glm::vec3> samples = {
+        {0, 0, -20}, {3, 0, -10},  // visible: the nearest is 10 deep
+        {0, 0, 5},                 // behind the camera
+        {9, 0, -2},                // 2 deep but far outside the view
+    };
+    // At depth 10 / 2 a 90 degree view is 10 units high: 10 px per unit.
+    EXPECT_NEAR(maxPixelsPerUnit(c, vp, box, samples), 10.0f, 1e-3f);
+    EXPECT_NEAR(maxPixelsPerUnit(c, vp, box), 100.0f / (2.0f * 0.01f), 1e-1f);
+    // Outside the bounds, with the surface as near as the box, the corner rule holds.
+    c.eye = {0, 0, 60};
+    c.target = {0, 0, 0};
+    const std::vector<glm::vec3> face = {{0, 0, 50}, {20, 10, 50}};
+    EXPECT_EQ(maxPixelsPerUnit(c, vp, box, face), maxPixelsPerUnit(c, vp, box));
 }
 
 TEST(Camera, FitKeepsBoundsInsideTheImage) {

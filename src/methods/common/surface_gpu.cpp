@@ -176,6 +176,9 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     }
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
+    positionSamples_.clear();
+    const size_t stride = std::max<size_t>(1, (mesh.vertexCount() + kPositionSamples - 1) / kPositionSamples);
+    for (size_t i = 0; i < mesh.vertexCount(); i += stride) positionSamples_.push_back(mesh.positions[i]);
     return interleaved;
 }
 

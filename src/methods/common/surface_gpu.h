@@ -78,6 +78,10 @@ public:
     // The field is a line field (principal directions): its sign carries no meaning.
     bool lineField() const { return lineField_; }
     const core::Bounds& bounds() const { return bounds_; }
+    // Up to kPositionSamples vertex positions spread over the mesh (every n-th): where the
+    // surface is when the bounds say too little (a camera inside them, dtForStep).
+    static constexpr size_t kPositionSamples = 4096;
+    const std::vector<glm::vec3>& positionSamples() const { return positionSamples_; }
     // Increments with every upload: methods compare it to see the dynamic case.
     uint64_t generation() const { return generation_; }
 
@@ -99,6 +103,7 @@ private:
     std::string colorName_;
     bool lineField_ = false;
     core::Bounds bounds_;
+    std::vector<glm::vec3> positionSamples_;
     uint64_t generation_ = 0;
 };
 
