@@ -56,13 +56,9 @@ void main() {
     vec4 leftEdge = meanPosition(own, left, own, left), belowEdge = meanPosition(own, below, own, below),
          cornerMean = meanPosition(own, left, below, corner);
     ivec2 t = 2 * px;
-    if (cornerMean.w == 0.0) {  // background all round: no lookups
-        for (int k = 0; k < 4; ++k) imageStore(uNoiseImage, t + ivec2(k & 1, k >> 1), vec4(NOISE_MEAN));
-        return;
-    }
     vec2 octaves = octavesAt(own.w >= 0.5 ? own.xyz : cornerMean.xyz);
     imageStore(uNoiseImage, t + ivec2(1, 1), vec4(own.w >= 0.5 ? noiseAt(own.xyz, octaves) : NOISE_MEAN));
     imageStore(uNoiseImage, t + ivec2(0, 1), vec4(leftEdge.w > 0.0 ? noiseAt(leftEdge.xyz, octaves) : NOISE_MEAN));
     imageStore(uNoiseImage, t + ivec2(1, 0), vec4(belowEdge.w > 0.0 ? noiseAt(belowEdge.xyz, octaves) : NOISE_MEAN));
-    imageStore(uNoiseImage, t, vec4(noiseAt(cornerMean.xyz, octaves)));
+    imageStore(uNoiseImage, t, vec4(cornerMean.w > 0.0 ? noiseAt(cornerMean.xyz, octaves) : NOISE_MEAN));
 }
