@@ -7,13 +7,10 @@
 // off an edge), so no streak crosses an occluding edge. For unsteady flow (UNSTEADY) each
 // step also advances the particle's data time, and the velocity is read from the image of
 // that time: pathlines instead of streamlines.
-// The noise at a particle is read from the frame's noise image (hybrid/noise_image.comp:
-// the solid noise on the visible surface at twice the image resolution) at its
-// projection, one bilinear 2D lookup per step instead of two trilinear 3D ones.
-// What the loop needs of the position is affine in it: the clip coordinates (projection)
-// and the layer depth. The loop carries those two instead and moves them through
-// per-pixel step maps (the step length folded in), and it reads no uniform: llvmpipe
-// reads a uniform inside divergent control flow with one load per lane.
+// What the loop needs of the position is affine in it: the clip coordinates (projection),
+// the noise coordinates and the layer depth. The loop carries those three instead and
+// moves them through per-pixel step maps (the step length folded in), and it reads no
+// uniform: llvmpipe reads a uniform inside divergent control flow with one load per lane.
 #include "hybrid/kernels.glsl"
 layout(binding = 0) uniform sampler2D uPosObj;    // RGBA32F seed positions, w = coverage
 #ifdef UNSTEADY
@@ -35,7 +32,7 @@ float levelOf(float t) {
 #else
 layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
 #endif
-layout(binding = 3) uniform sampler2D uNoiseImage;  // R32F, 2W x 2H, bilinear: texel 2i+1 on pixel i's centre
+layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
 uniform mat4 uTexFromObj;     // P-space -> image texture coordinates (x, y, -, w): eq. 2
 uniform vec4 uLayerDepthRow;  // layer depth of a P-space point (methods::layerDepthRow)
 uniform vec3 uEye;
@@ -43,6 +40,7 @@ uniform int uOrtho;
 uniform int uFilterLength;   // L = 2 * half + 1 samples
 uniform float uStepPerDist;  // P-space step per unit of distance to the eye (dt ~ d)
 uniform float uStepOrtho;    // P-space step for orthographic views
+uniform float uFreqAtUnit;   // noise texels per P-space unit at distance 1 (ortho: absolute)
 uniform float uDepthTolerance;  // fraction of the depth range
 // Compile-time choices (program variants; a uniform branch per step halves the speed on
 // llvmpipe): KERNEL one of KERNEL_BOX .. KERNEL_HANN; INTEGRATOR one of INTEGRATOR_EULER,
@@ -50,10 +48,11 @@ uniform float uDepthTolerance;  // fraction of the depth range
 // (principal directions): each sample is turned to agree with the particle's previous
 // step, so a streamline never folds back at a sign flip.
 
-// A P-space displacement d mapped to the particle's clip coordinates and layer depth
-// (times the step length h: d = h v for a velocity v).
+// A P-space displacement d mapped to the particle's clip coordinates, noise coordinates
+// and layer depth (times the step length h: d = h v for a velocity v).
 struct StepMap {
     mat3 clip;
+    mat3 noise;
     vec3 depth;
     float invTolerance;  // 1 / the depth tolerance
 };
@@ -70,8 +69,7 @@ vec4 velocityImage(vec2 s, float t) {
 // projection leaves the image, or its depth differs from the visible layer's there (the
 // image's w; 0 on the background, and a blend of both sides within a pixel of an edge).
 // One exit, no early return: llvmpipe pays for each return inside the loop with an extra
-// execution mask (measured: the bounds check as an early return cost 6 % of the frame);
-// the lookup outside the image is clamped and discarded.
+// execution mask; the lookup outside the image is clamped and discarded.
 bool velocityAt(vec3 c, float d, float t, vec3 ref, float invTolerance, out vec3 v) {
     vec2 s = c.xy / c.z;
     vec4 vel = velocityImage(s, t);
@@ -99,14 +97,34 @@ bool stepVelocity(vec3 c, float d, StepMap m, float t, float dt, inout vec3 ref,
     v = (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
     return on;
 }
+// A fixed oblique rotation of the lookup: flat data lying in an axis plane (a CFD slice)
+// would otherwise sample the lattice along a texel plane and show its grid.
+// 0.7 rad about (1, 2, 3), columns.
+const mat3 kNoiseRotation = mat3(0.781639, 0.550117, -0.293958,
+                                 -0.482929, 0.832030, 0.272956,
+                                 0.394740, -0.071392, 0.916015);
+// Constant image-space frequency [W §5]: two octave-snapped scales mixed by the
+// fractional part f of log2 of the seed's distance. q: the finer octave's coordinates;
+// the coarser one's are q * coarse (1/2; orthographic views: 1, f = 0).
+float noiseAt(vec3 q, float coarse, float f) {
+    return mix(texture(uNoise, q).r, texture(uNoise, q * coarse).r, f);
+}
+
 // The LIC value I of pixel px; false off the surface (background pixels do no work).
 bool licAt(ivec2 px, out float result) {
     vec4 seed = texelFetch(uPosObj, px, 0);
     if (seed.w < 0.5) return false;
-    float h = uOrtho != 0 ? uStepOrtho : uStepPerDist * length(seed.xyz - uEye);
+    float dist = length(seed.xyz - uEye);
+    float fineFreq = uFreqAtUnit, coarse = 1.0, f = 0.0;
+    if (uOrtho == 0) {
+        float l = log2(max(dist, 1e-6));
+        f = fract(l);
+        fineFreq = uFreqAtUnit * exp2(-floor(l));
+        coarse = 0.5;
+    }
+    float h = uOrtho != 0 ? uStepOrtho : uStepPerDist * dist;
     vec3 clip0 = (uTexFromObj * vec4(seed.xyz, 1.0)).xyw;
-    // Image point s -> noise image coordinates: its texel 2i+1 lies on pixel i's centre.
-    vec2 noiseOffset = 0.25 / vec2(textureSize(uNoiseImage, 0) / 2);
+    vec3 noise0 = kNoiseRotation * seed.xyz * fineFreq;
     float depth0 = dot(uLayerDepthRow, vec4(seed.xyz, 1.0));
     mat3 clipOfObj = mat3(uTexFromObj[0].xyw, uTexFromObj[1].xyw, uTexFromObj[2].xyw);
     float invTolerance = 1.0 / uDepthTolerance;
@@ -119,12 +137,13 @@ bool licAt(ivec2 px, out float result) {
     float dt = 0.0;
     float velocityScale = 1.0;
 #endif
-    float lic = texelFetch(uNoiseImage, 2 * px + 1, 0).r, weight = 1.0;  // k(0) = 1: the seed's own sample
+    float lic = noiseAt(noise0, coarse, f), weight = 1.0;  // k(0) = 1
     vec3 ref0 = velocityImage(clip0.xy / clip0.z, 0.0).xyz;  // both halves start along the seed's vector
     for (int dir = -1; dir <= 1; dir += 2) {  // backward and forward halves
         float hs = float(dir) * h * velocityScale;
-        StepMap m = StepMap(clipOfObj * hs, uLayerDepthRow.xyz * hs, invTolerance);
-        vec3 c = clip0, ref = ref0;
+        StepMap m = StepMap(clipOfObj * hs, kNoiseRotation * (fineFreq * hs), uLayerDepthRow.xyz * hs,
+                                  invTolerance);
+        vec3 c = clip0, q = noise0, ref = ref0;
         float d = depth0;
         KernelWalk k = kernelWalk(du);
         for (int i = 1; i <= halfLength; ++i) {
@@ -132,9 +151,10 @@ bool licAt(ivec2 px, out float result) {
             vec3 v;
             if (!stepVelocity(c, d, m, float(dir * (i - 1)) * dt, float(dir) * dt, ref, v)) break;
             c += m.clip * v;
+            q += m.noise * v;
             d += dot(m.depth, v);
             kernelNext(k);
-            lic += k.weight * texture(uNoiseImage, c.xy / c.z + noiseOffset).r;
+            lic += k.weight * noiseAt(q, coarse, f);
             weight += k.weight;
         }
     }

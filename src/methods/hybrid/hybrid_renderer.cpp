@@ -13,7 +13,6 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       seeds_(viewport, true, params.common.cullBackFaces),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
-      noiseImage_(viewport),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
       overlay_(params.common),
       lic_(GL_R32F, viewport),
@@ -50,22 +49,22 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
 
-    // (2) solid noise N(r, t) at this frame's phase [W §5], sampled on the visible surface
-    // at twice the image resolution (the particles' noise lookups)
+    // (2) solid noise N(r, t) at this frame's phase [W §5]
     timer_.begin("solid noise");
     noise_.update(in.frame, c.noise);
-    noiseImage_.render(seeds_, noise_.texture(), noise_.size(), in.camera, c.noise.scale, params_.hybrid.depthTolerance);
 
     // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
     timer_.begin("particle tracing");
     TracingInput t;
     t.seeds = &seeds_;
-    t.noiseImage = noiseImage_.texture().id();
+    t.noise = noise_.texture();
+    t.noiseSize = noise_.size();
     t.camera = in.camera;
     t.viewport = viewport_;
     t.stepPx = params_.hybrid.stepPx;
     t.lineField = in.surface->lineField();
     t.speedRef = speedRef;
+    t.noiseScalePx = c.noise.scale;
     if (unsteady) {
         const TimeLevels& lv = *in.levels;
         t.velocityLevels = levels_.texture();

@@ -9,7 +9,6 @@
 #include "methods/common/render_targets.h"
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/common/surface_gbuffer.h"
-#include "methods/hybrid/noise_image.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
 
@@ -36,7 +35,6 @@ private:
     SurfaceGBuffer seeds_;  // seed textures [W §4]: position, velocity, shade, depth
     VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
-    NoiseImage noiseImage_;  // the solid noise on the visible surface, 2x the image resolution
     ParticleTracing tracing_;
     Overlay overlay_;
     ColorTarget lic_;              // I, R32F

@@ -78,6 +78,11 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     const float speed = std::max(in.speedRef, 1e-30f);
     glUniform1f(program.uniform("uStepPerDist"), in.stepPx * pixelPerDist / speed);
     glUniform1f(program.uniform("uStepOrtho"), in.stepPx * pixelOrtho / speed);
+    // Texture coordinates per P-space unit so that one texel spans half the noise scale:
+    // the blur and the lower octave make features about four texels wide.
+    const float texel = 2.0f / float(in.noiseSize);
+    glUniform1f(program.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
+                                                                    : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
     glBindTextureUnit(0, in.seeds->position().id());
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
@@ -90,7 +95,7 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     } else {
         glBindTextureUnit(1, in.seeds->velocity().id());
     }
-    glBindTextureUnit(3, in.noiseImage);
+    glBindTextureUnit(3, in.noise);
 }
 
 }  // namespace flowsurf::methods::hybrid

@@ -1,8 +1,8 @@
 // Hybrid steps 2-5 — particle tracing in P-space with D-space velocity lookups and LIC
 // accumulation with the chosen kernel [W §3-5, eqs. 2, 3, 5] (shaders/hybrid/
 // particle_tracing.glsl: one pass with a per-pixel loop, as a fragment or a compute
-// shader, GlPath). Inputs: seed textures, the noise image. Output: the LIC result I (R32F);
-// the noise mean on the background. Cost: pixels x L x (one velocity and one noise fetch).
+// shader, GlPath). Inputs: seed textures, solid noise. Output: the LIC result I (R32F);
+// the noise mean on the background. Cost: pixels x L x (one velocity and two noise fetches).
 #pragma once
 
 #include "core/camera.h"
@@ -18,11 +18,13 @@ namespace flowsurf::methods::hybrid {
 
 struct TracingInput {
     const SurfaceGBuffer* seeds = nullptr;  // with positions
-    GLuint noiseImage = 0;     // the frame's noise image (NoiseImage): R32F, 2W x 2H
+    GLuint noise = 0;          // 3D texture
+    int noiseSize = 64;
     core::Camera camera;
     core::Viewport viewport;
     float stepPx = 2.0f;       // arc length per step in pixels at the seed's distance
     float speedRef = 1.0f;     // speed that moves stepPx per step
+    float noiseScalePx = 2.0f; // one noise texel ~ this many pixels
     // Unsteady flow [W §3]: velocity per time level (3D texture, layer j at data time
     // levelTimes[j] relative to the frame's, velocities divided by speedRef); 0: the seeds'
     // velocity image.
