@@ -3,8 +3,8 @@
 flowsurf half of hybrid_vs_lic_file.sh; timed like surface_lic_bench.py times ParaView's
 Surface LIC): one warm-up frame, then K frames with the camera orbiting `--orbit` degrees
 per frame, each timed as advance() plus the read-back of the RGB image. Prints one CSV
-line `L,ms_per_frame,min_ms,tracing_ms` (tracing_ms: the median particle-tracing stage)
-and writes the first frame's camera (JSON: eye, target, up, fov) for the LIC half.
+line `L,ms_per_frame,min_ms,tracing_ms,cpu_ms_per_frame` (tracing_ms: the median
+particle-tracing stage; cpu_ms_per_frame: CPU time of all threads, llvmpipe's included) and writes the first frame's camera (JSON: eye, target, up, fov) for the LIC half.
 
 Needs the Python module: PYTHONPATH=build/python /usr/bin/python3 hybrid_file_bench.py ...
 """
@@ -38,12 +38,14 @@ def main():
         with open(args.camera_json, "w") as f:
             json.dump(r.camera, f)
     times, tracing = [], []
+    cpu0 = time.process_time()
     for _ in range(args.frames):
         t0 = time.perf_counter()
         next(frames)
         times.append(1000.0 * (time.perf_counter() - t0))
         tracing.append(r.stage_ms.get("particle tracing", float("nan")))
-    print("%d,%.2f,%.2f,%.2f" % (args.length, statistics.mean(times), min(times), statistics.median(tracing)))
+    cpu_ms = 1000.0 * (time.process_time() - cpu0) / args.frames
+    print("%d,%.2f,%.2f,%.2f,%.2f" % (args.length, statistics.mean(times), min(times), statistics.median(tracing), cpu_ms))
 
 
 if __name__ == "__main__":

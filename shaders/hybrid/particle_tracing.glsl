@@ -66,34 +66,36 @@ vec4 velocityImage(vec2 s, float t) {
 }
 // Velocity at the particle (clip coordinates c, layer depth d) and its data time t after
 // the frame's (unused for steady flow); false where it is off the visible surface: its
-// depth differs from the visible layer's there (the image's w; 0 on the background, and
-// a blend of both sides within a pixel of an edge).
+// projection leaves the image, or its depth differs from the visible layer's there (the
+// image's w; 0 on the background, and a blend of both sides within a pixel of an edge).
+// One exit, no early return: llvmpipe pays for each return inside the loop with an extra
+// execution mask; the lookup outside the image is clamped and discarded.
 bool velocityAt(vec3 c, float d, float t, vec3 ref, float invTolerance, out vec3 v) {
     vec2 s = c.xy / c.z;
-    if (any(lessThan(s, vec2(0.0))) || any(greaterThan(s, vec2(1.0)))) return false;
     vec4 vel = velocityImage(s, t);
-    if (abs(d - vel.w) * invTolerance > 1.0) return false;
     v = vel.xyz;
 #if LINE_FIELD
     if (dot(v, ref) < 0.0) v = -v;
 #endif
-    return true;
+    return all(greaterThanEqual(s, vec2(0.0))) && all(lessThanEqual(s, vec2(1.0))) &&
+           abs(d - vel.w) * invTolerance <= 1.0;
 }
 // The velocity v of one step from data time t to t + dt (a pathline through unsteady
 // data; dt = 0 for steady flow): the integrator's stages are taken through the step map.
+// False if any stage is off the surface (one exit, as velocityAt).
 bool stepVelocity(vec3 c, float d, StepMap m, float t, float dt, inout vec3 ref, out vec3 v) {
     vec3 k1, k2, k3, k4;
-    if (!velocityAt(c, d, t, ref, m.invTolerance, k1)) return false;
+    bool on = velocityAt(c, d, t, ref, m.invTolerance, k1);
     ref = k1;
-    if (INTEGRATOR == INTEGRATOR_EULER) { v = k1; return true; }
-    if (!velocityAt(c + 0.5 * (m.clip * k1), d + 0.5 * dot(m.depth, k1), t + 0.5 * dt, ref, m.invTolerance, k2))
-        return false;
-    if (INTEGRATOR == INTEGRATOR_RK2) { v = k2; return true; }
-    if (!velocityAt(c + 0.5 * (m.clip * k2), d + 0.5 * dot(m.depth, k2), t + 0.5 * dt, ref, m.invTolerance, k3))
-        return false;
-    if (!velocityAt(c + m.clip * k3, d + dot(m.depth, k3), t + dt, ref, m.invTolerance, k4)) return false;
+    v = k1;
+    if (INTEGRATOR == INTEGRATOR_EULER) return on;
+    on = velocityAt(c + 0.5 * (m.clip * k1), d + 0.5 * dot(m.depth, k1), t + 0.5 * dt, ref, m.invTolerance, k2) && on;
+    v = k2;
+    if (INTEGRATOR == INTEGRATOR_RK2) return on;
+    on = velocityAt(c + 0.5 * (m.clip * k2), d + 0.5 * dot(m.depth, k2), t + 0.5 * dt, ref, m.invTolerance, k3) && on;
+    on = velocityAt(c + m.clip * k3, d + dot(m.depth, k3), t + dt, ref, m.invTolerance, k4) && on;
     v = (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
-    return true;
+    return on;
 }
 // A fixed oblique rotation of the lookup: flat data lying in an axis plane (a CFD slice)
 // would otherwise sample the lattice along a texel plane and show its grid.
