@@ -1,5 +1,6 @@
-// The compute path (--gl-path compute) renders the images of the fragment path: ISA's and
-// IBFVS's texture advection with noise injection and the overlay in each colour scheme.
+// The compute path (--gl-path compute) renders the images of the fragment path: ISA's
+// advection mesh, ISA's and IBFVS's texture advection with noise injection and the overlay
+// in each colour scheme.
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
 #include "methods/common/gl_path.h"

@@ -6,11 +6,25 @@
 
 namespace flowsurf::methods::isa {
 
-AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes)
+namespace {
+gl::Program makeProgram(GlPath path) {
+    if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}});
+    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/advection_mesh.frag"}});
+}
+}  // namespace
+
+AdvectionMesh::AdvectionMesh(const core::Viewport& viewport, int gridRes, GlPath path)
     : viewport_(viewport),
       gridRes_(gridRes),
+      path_(path),
       vertices_(GL_RGBA32F, gridRes + 1, gridRes + 1, GL_LINEAR),
-      program_(program({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}})) {}
+      program_(makeProgram(path)) {
+    if (path_ == GlPath::Compute) return;
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_COLOR_ATTACHMENT0, vertices_);
+    fbo_.finish(1);
+    emptyVao_ = gl::VertexArray::create();
+}
 
 void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& depth,
                             const gl::Texture2D& sourceDepth, const core::Camera& camera,
@@ -30,11 +44,20 @@ void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& 
     glBindTextureUnit(0, velocity.id());
     glBindTextureUnit(1, depth.id());
     glBindTextureUnit(2, sourceDepth.id());
-    glBindImageTexture(0, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    GLuint groups = GLuint((gridRes_ + 1 + 7) / 8);  // 8 x 8: measured 2x faster than 16 x 16 on llvmpipe
-    glDispatchCompute(groups, groups, 1);
-    // The next stage reads the mesh through texture fetches.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    if (path_ == GlPath::Compute) {
+        glBindImageTexture(0, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        GLuint groups = GLuint((gridRes_ + 1 + 7) / 8);  // 8 x 8: measured 2x faster than 16 x 16 on llvmpipe
+        glDispatchCompute(groups, groups, 1);
+        // The next stage reads the mesh through texture fetches.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, gridRes_ + 1, gridRes_ + 1);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 }  // namespace flowsurf::methods::isa

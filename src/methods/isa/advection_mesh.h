@@ -1,7 +1,8 @@
 // ISA stage 2 — advection mesh [L §IV-D.1, eq. 12] with edge detection [L eq. 14]
-// (shaders/isa/advection_mesh.comp, shaders/isa/edge_detection.glsl). Inputs: velocity
-// and depth images. Output: an (R+1)^2 RGBA32F texture (texcoord, edge flag) that the
-// static case reuses. Cost grows with the grid M = R^2.
+// (shaders/isa/advection_mesh.glsl, one invocation per grid vertex in a compute pass or a
+// full-screen fragment pass by GlPath). Inputs: velocity and depth images. Output: an
+// (R+1)^2 RGBA32F texture (texcoord, edge flag) that the static case reuses. Cost grows
+// with the grid M = R^2.
 #pragma once
 
 #include "core/camera.h"
@@ -12,7 +13,7 @@ namespace flowsurf::methods::isa {
 
 class AdvectionMesh {
 public:
-    AdvectionMesh(const core::Viewport& viewport, int gridRes);
+    AdvectionMesh(const core::Viewport& viewport, int gridRes, GlPath path);
     // `sourceCamera`/`sourceDepth`: the view and depth image the source texture was
     // made in (the current ones unless the camera moved and the remedy reprojects).
     void compute(const gl::Texture2D& velocity, const gl::Texture2D& depth, const gl::Texture2D& sourceDepth,
@@ -24,7 +25,10 @@ public:
 private:
     core::Viewport viewport_;
     int gridRes_;
+    GlPath path_;
     gl::Texture2D vertices_;
+    gl::Framebuffer fbo_;  // fragment path: vertices_ as the colour target
+    gl::VertexArray emptyVao_;
     gl::Program program_;
 };
 

@@ -1,5 +1,6 @@
 #include "methods/isa/isa_renderer.h"
 
+#include "methods/common/gl_path.h"
 
 namespace flowsurf::methods::isa {
 
@@ -10,7 +11,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false),
                      SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
-      advectionMesh_(viewport, params.isa.gridRes),
+      advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),
       overlay_(params.common),
       motion_(params.common.onCameraMove),
