@@ -8,19 +8,23 @@ layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: 
 layout(binding = 3) uniform sampler2D uColormap;   // 256 x 1 RGBA8
 layout(binding = 4) uniform sampler2D uMaskValue;  // texture mask value 0..1
 layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
-uniform int uScheme;          // OVERLAY_BLEND (eq. 10), OVERLAY_GRAY, ..._GRAY_LIT, ..._HUE_LIT, ..._COOLWARM
+// SCHEME (a define per program: OVERLAY_BLEND (eq. 10), OVERLAY_GRAY, ..._GRAY_LIT,
+// ..._HUE_LIT, ..._COOLWARM), WITH_LEGEND and WITH_DYE (0 or 1) select the program's
+// variant: a software rasteriser runs every branch of a shader, taken or not.
 uniform float uBeta;          // texture strength
 uniform float uContrast;      // display gain of the texture about its mean
 uniform int uUseColormap;     // 0: white surface
 uniform int uLighting;
 uniform int uMask;            // texture contrast x sqrt(mask value)
-uniform int uLegend;
+#if WITH_LEGEND
 uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
+#endif
 uniform vec3 uBackground;
+#if WITH_DYE
 #include "common/dye_sample.glsl"
-uniform int uDye;             // 0: no dye
 uniform int uDyeSlot;         // first value of the current dye
 uniform mat4 uInvViewProj;    // window coordinates -> object space, this frame's camera
+#endif
 
 // Diffuse key light above-left of the eye, two-sided (open CFD surfaces).
 const vec3 kLight = vec3(-0.35, 0.5, 0.8);
@@ -34,14 +38,14 @@ vec3 surfaceColor(ivec2 px) {
     fa = clamp(NOISE_MEAN + (fa - NOISE_MEAN) * gain, 0.0, 1.0);
     float lit = uLighting != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
     vec3 color;
-    if (uScheme == OVERLAY_GRAY) {
+    if (SCHEME == OVERLAY_GRAY) {
         color = vec3(fa);
-    } else if (uScheme == OVERLAY_GRAY_LIT) {
+    } else if (SCHEME == OVERLAY_GRAY_LIT) {
         color = vec3(fa) * (0.3 + 0.7 * diffuse(n));
-    } else if (uScheme == OVERLAY_HUE_LIT) {
+    } else if (SCHEME == OVERLAY_HUE_LIT) {
         vec3 blue = vec3(0.15, 0.3, 0.95), yellow = vec3(1.0, 0.9, 0.2);
         color = mix(blue, yellow, fa) * (0.3 + 0.7 * diffuse(n));
-    } else if (uScheme == OVERLAY_COOLWARM) {
+    } else if (SCHEME == OVERLAY_COOLWARM) {
         float k = 0.5 * (1.0 + dot(n, normalize(kLight)));  // Gooch: cool facing away, warm towards
         vec3 gooch = mix(vec3(0.25, 0.35, 0.85), vec3(0.95, 0.75, 0.35), k);
         color = vec3(fa) * gooch * 1.2;
@@ -56,6 +60,7 @@ vec3 surfaceColor(ivec2 px) {
     return clamp(color, 0.0, 1.0);
 }
 
+#if WITH_DYE
 // Dye [issue 20] over the surface colour: sampled in object space at the visible surface
 // point of the pixel (depth unprojected), so only what the camera sees shows dye.
 vec3 withDye(vec3 color, ivec2 px, float depth) {
@@ -65,19 +70,24 @@ vec3 withDye(vec3 color, ivec2 px, float depth) {
     float lit = uLighting != 0 ? 0.55 + 0.45 * diffuse(normalize(texelFetch(uShade, px, 0).xyz)) : 1.0;
     return color * (1.0 - d.a) + d.rgb * lit;
 }
+#endif
 
 // The displayed colour of pixel `px`.
 vec3 overlayColor(ivec2 px) {
     float depth = texelFetch(uDepth, px, 0).r;
     vec3 color = depth >= 1.0 ? uBackground  // texture clipping
                               : surfaceColor(px);
-    if (uDye != 0 && depth < 1.0) color = clamp(withDye(color, px, depth), 0.0, 1.0);
-    if (uLegend != 0) {
+#if WITH_DYE
+    if (depth < 1.0) color = clamp(withDye(color, px, depth), 0.0, 1.0);
+#endif
+#if WITH_LEGEND
+    {
         ivec2 q = px - uLegendOrigin;
         if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uLegendImage, 0)))) {
             vec4 l = texelFetch(uLegendImage, q, 0);
             color = mix(color, l.rgb, l.a);
         }
     }
+#endif
     return color;
 }

@@ -10,26 +10,22 @@
 namespace flowsurf::methods {
 
 namespace {
-gl::Program makeProgram(GlPath path) {
-    if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "common/overlay.comp"}});
-    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}});
+// The variant for these parameters (SCHEME, WITH_LEGEND, WITH_DYE in overlay.glsl).
+gl::Program makeProgram(GlPath path, const CommonParams& params, bool withDye) {
+    const std::string defines = "#define SCHEME " + std::to_string(int(params.overlay)) + "\n#define WITH_LEGEND " +
+                                (params.legend ? "1" : "0") + "\n#define WITH_DYE " + (withDye ? "1" : "0") + "\n";
+    if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "common/overlay.comp"}}, defines);
+    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}},
+                   defines);
 }
 }  // namespace
 
 Overlay::Overlay(const CommonParams& params)
     : params_(params),
       path_(resolveGlPath(params.glPath)),
-      program_(makeProgram(path_)),
+      program_(makeProgram(path_, params, false)),
       colormap_(makeColormapTexture(params)),
-      emptyVao_(gl::VertexArray::create()),
-      noDyeValues_(sizeof(glm::vec4), nullptr) {
-    GLuint id = 0;
-    glCreateTextures(GL_TEXTURE_3D, 1, &id);
-    noDyeIndex_ = gl::Handle<gl::detail::deleteTexture>(id);
-    glTextureStorage3D(id, 1, GL_R32I, 1, 1, 1);
-    const int32_t none = -1;
-    glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RED_INTEGER, GL_INT, &none);
-}
+      emptyVao_(gl::VertexArray::create()) {}
 
 void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) const {
     const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
@@ -51,30 +47,30 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
                     const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
                     const DyeView* dye) const {
     if (params_.legend) updateLegend(surface, flow.width(), flow.height());
-    program_.use();
-    glUniform1i(program_.uniform("uScheme"), int(params_.overlay));
-    glUniform1f(program_.uniform("uBeta"), params_.beta);
-    glUniform1f(program_.uniform("uContrast"), params_.contrast);
-    glUniform1i(program_.uniform("uUseColormap"), params_.colormap != Colormap::None || !params_.colormapTable.empty());
-    glUniform1i(program_.uniform("uLighting"), params_.lighting);
-    glUniform1i(program_.uniform("uMask"), params_.velocityMask || !params_.maskBy.empty());
-    glUniform3fv(program_.uniform("uBackground"), 1, &params_.background.x);
-    glUniform1i(program_.uniform("uLegend"), params_.legend);
-    glUniform2i(program_.uniform("uLegendOrigin"), legendOrigin_.x, legendOrigin_.y);
+    if (dye && !dyeProgram_) dyeProgram_ = makeProgram(path_, params_, true);
+    const gl::Program& prog = dye ? dyeProgram_ : program_;
+    prog.use();
+    // Per variant, some of these are compiled out (location -1: GL ignores the call).
+    glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
+    glUniform1f(prog.uniformIfActive("uContrast"), params_.contrast);
+    glUniform1i(prog.uniformIfActive("uUseColormap"), params_.colormap != Colormap::None || !params_.colormapTable.empty());
+    glUniform1i(prog.uniformIfActive("uLighting"), params_.lighting);
+    glUniform1i(prog.uniformIfActive("uMask"), params_.velocityMask || !params_.maskBy.empty());
+    glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);
+    if (params_.legend) glUniform2i(prog.uniform("uLegendOrigin"), legendOrigin_.x, legendOrigin_.y);
     glBindTextureUnit(0, flow.id());
     glBindTextureUnit(1, depth.id());
     glBindTextureUnit(2, shade.id());
     glBindTextureUnit(3, colormap_.id());
     glBindTextureUnit(4, mask.id());
     glBindTextureUnit(5, params_.legend ? legend_.id() : colormap_.id());
-    glUniform1i(program_.uniform("uDye"), dye != nullptr);
-    glBindTextureUnit(kDyeIndexUnit, dye ? dye->index : noDyeIndex_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, dye ? dye->values : noDyeValues_.id());
     if (dye) {
-        glUniform1i(program_.uniform("uDyeSlot"), dye->slot);
-        glUniform3fv(program_.uniform("uDyeOrigin"), 1, &dye->grid.origin.x);
-        glUniform1f(program_.uniform("uDyeH"), dye->grid.h);
-        glUniformMatrix4fv(program_.uniform("uInvViewProj"), 1, GL_FALSE, &dye->invViewProj[0][0]);
+        glBindTextureUnit(kDyeIndexUnit, dye->index);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, dye->values);
+        glUniform1i(prog.uniform("uDyeSlot"), dye->slot);
+        glUniform3fv(prog.uniform("uDyeOrigin"), 1, &dye->grid.origin.x);
+        glUniform1f(prog.uniform("uDyeH"), dye->grid.h);
+        glUniformMatrix4fv(prog.uniform("uInvViewProj"), 1, GL_FALSE, &dye->invViewProj[0][0]);
     }
     if (path_ == GlPath::Compute) {
         // The composite is the target's colour attachment (RGBA8, as every method keeps it).

@@ -30,12 +30,10 @@ private:
 
     CommonParams params_;
     GlPath path_;
-    gl::Program program_;
+    gl::Program program_;               // without dye
+    mutable gl::Program dyeProgram_;    // with dye, made when a frame first has some
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
-    // Bound in place of the dye's grid and values when there is none (one cell, -1).
-    gl::Handle<gl::detail::deleteTexture> noDyeIndex_;
-    gl::Buffer noDyeValues_;
     mutable gl::Texture2D legend_;
     mutable glm::ivec2 legendOrigin_{0};
     mutable glm::vec2 legendRange_{0.0f, -1.0f};
