@@ -99,6 +99,15 @@ TEST(CliOptions, SizeAndColourSyntaxes) {
     EXPECT_EQ(parseColor("white"), glm::vec3(1.0f));
     EXPECT_EQ(parseColor("0,0.5,1"), glm::vec3(0, 0.5f, 1));
     EXPECT_THROW(parseColor("0,0.5,2"), ConfigError);
+    EXPECT_EQ(parseColor("Magenta"), glm::vec3(1, 0, 1));
+    // An unknown name says what a colour may be, names included.
+    try {
+        parseColor("purplish", "--dye");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--dye: 'purplish' is not a colour"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("cyan"), std::string::npos) << e.what();
+    }
 }
 
 // Every option of the table: its default text reads back to the default, and the

@@ -82,6 +82,11 @@ glm::vec3 parseColor(const std::string& text, const std::string& what) {
         {"cyan", {0, 0.9f, 1}}, {"magenta", {1, 0, 1}},  {"orange", {1, 0.5f, 0}}};
     for (const auto& [name, c] : kNamed)
         if (t == name) return c;
+    if (text.find(',') == std::string::npos) {
+        std::string names = "black, white, gray";
+        for (const auto& named : kNamed) names += std::string(", ") + named.first;
+        throw ConfigError(what + ": '" + text + "' is not a colour (#RRGGBB, r,g,b in 0..1, or one of " + names + ")");
+    }
     glm::vec3 c = parseVec3(text, what);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
         throw ConfigError(what + ": components of '" + text + "' must be in 0..1");
