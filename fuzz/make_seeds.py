@@ -100,6 +100,12 @@ seed("fuzz_camera_path", "path.json", json.dumps({"keyframes": [
     {"frame": 60, "eye": [5, 0, 0]}]}))
 seed("fuzz_camera_path", "empty.json", '{"keyframes": []}')
 
+# Dye files: a list of sources, or {"sources": [...]}.
+seed("fuzz_dye_file", "sources.json", json.dumps([
+    {"point": [0, 0, 1], "radius": 0.1, "color": "red", "start": 0, "stop": 30},
+    {"point": [1, 2, 0], "color": "#00ff00"}, {"point": [0, 1, 0], "color": [0.2, 0.4, 1]}]))
+seed("fuzz_dye_file", "object.json", '{"sources": [{"point": [0, 0, 1], "start": 5}]}')
+
 # Config JSON: the keys are option names without dashes.
 seed("fuzz_config", "config.json", json.dumps({
     "method": "hybrid", "size": "320x240", "alpha": 0.1, "frames": 10, "edge-fill": "gray",

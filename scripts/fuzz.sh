@@ -20,7 +20,7 @@ while [ $# -gt 0 ]; do
         *) targets+=("$1"); shift ;;
     esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_ply fuzz_obj fuzz_ensight fuzz_camera_path fuzz_config fuzz_event_log fuzz_options)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_ply fuzz_obj fuzz_ensight fuzz_camera_path fuzz_dye_file fuzz_config fuzz_event_log fuzz_options)
 B=build-fuzz
 werror=OFF
 [ "${CI:-}" = true ] && werror=ON  # CI builds warning-free (clang's warnings here)
