@@ -36,6 +36,12 @@ void dumpImages(const Rendered& r, const std::string& dir) {
 }
 }  // namespace
 
+methods::MethodParams testParams() {
+    methods::MethodParams p;
+    p.common.noise.seed = 7;
+    return p;
+}
+
 Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport) {
     Rendered r;
     r.width = viewport.width;

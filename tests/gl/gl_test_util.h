@@ -29,6 +29,9 @@ struct Rendered {
     float f(int x, int y) const { return flow[size_t(y) * width + x]; }
 };
 
+// The methods' defaults with the tests' fixed noise seed (7).
+methods::MethodParams testParams();
+
 // Reads back the last frame of `method`: F_a, depth and the composite.
 Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport);
 

@@ -14,12 +14,6 @@ using namespace flowsurf;
 
 namespace {
 
-methods::MethodParams defaultParams() {
-    methods::MethodParams p;
-    p.common.noise.seed = 7;
-    return p;
-}
-
 class MethodProperties : public ::testing::TestWithParam<std::string> {
 protected:
     // Image-space methods need a history of frames; the hybrid LIC is complete in one.
@@ -35,7 +29,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, MethodProperties, ::testing::Values("isa", "ib
 // flow must be several times the length across it.
 TEST_P(MethodProperties, UniformFlowStreaksAlongFlow) {
     core::Dataset d = core::makeBuiltin("builtin:uniform-plane");
-    test::Rendered r = test::renderScene(d, GetParam(), defaultParams(), {256, 256}, test::orthoFront(2.2f), frames(80));
+    test::Rendered r = test::renderScene(d, GetParam(), test::testParams(), {256, 256}, test::orthoFront(2.2f), frames(80));
     float along = test::correlationLength(r, 40, 40, 216, 216, 1, 0);
     float across = test::correlationLength(r, 40, 40, 216, 216, 0, 1);
     std::printf("correlation length along %.0f px, across %.0f px\n", along, across);
@@ -85,7 +79,7 @@ struct SpinningSphere {
 // The paper's behaviour [L]: bilinear resampling of F_a, noise sampled at the pixel, and
 // the step of 2 px that point-sampled noise of scale 2 px needs.
 methods::MethodParams paperParams() {
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.common.resample = methods::Resample::Bilinear;
     p.common.noiseInjection = methods::NoiseInjectionMode::Point;
     p.common.stepPx = 2.0f;
@@ -100,7 +94,7 @@ methods::MethodParams paperParams() {
 // hybrid measured 3.56 deg, tolerance 10 (its own tests hold it to 5).
 TEST_P(MethodProperties, SphereOrientationMatchesProjectedField) {
     SpinningSphere s;
-    test::Rendered r = s.render(GetParam(), defaultParams(), frames(100));
+    test::Rendered r = s.render(GetParam(), test::testParams(), frames(100));
     float median = s.medianErrorDeg(r, 4.0f);
     std::printf("median orientation error %.2f deg (sigma 4 px)\n", median);
     EXPECT_LE(median, GetParam() == "hybrid" ? 10.0f : 3.5f);
@@ -111,7 +105,7 @@ TEST_P(MethodProperties, SphereOrientationMatchesProjectedField) {
 // 1-3; 7.5 deg with the paper's bilinear, point-noise defaults); the hybrid 3.80 deg.
 TEST_P(MethodProperties, SphereOrientationFineScale) {
     SpinningSphere s;
-    test::Rendered r = s.render(GetParam(), defaultParams(), frames(100));
+    test::Rendered r = s.render(GetParam(), test::testParams(), frames(100));
     float median = s.medianErrorDeg(r, 2.0f);
     std::printf("median orientation error %.2f deg (sigma 2 px)\n", median);
     EXPECT_LE(median, 5.0f);
@@ -123,8 +117,8 @@ TEST_P(MethodProperties, SphereOrientationFineScale) {
 TEST(ImageSpaceMethods, ConsecutiveFramesCorrelate) {
     SpinningSphere s;
     for (const std::string method : {"isa", "ibfvs"}) {
-        methods::SurfaceGpu surface(s.data.steps.front().mesh, "velocity", defaultParams().common);
-        auto m = methods::makeMethod(method, defaultParams(), s.vp);
+        methods::SurfaceGpu surface(s.data.steps.front().mesh, "velocity", test::testParams().common);
+        auto m = methods::makeMethod(method, test::testParams(), s.vp);
         test::Rendered prev;
         double worst = 1.0;
         for (int k = 0; k <= 100; ++k) {
@@ -158,7 +152,7 @@ TEST(ImageSpaceMethods, PaperBehaviourReachable) {
                                                                           {"ibfvs", 4.06f, 7.57f}};
     for (const auto& b : before) {
         test::Rendered paper = s.render(b.method, paperParams(), 100);
-        test::Rendered now = s.render(b.method, defaultParams(), 100);
+        test::Rendered now = s.render(b.method, test::testParams(), 100);
         float coarse = s.medianErrorDeg(paper, 4.0f), fine = s.medianErrorDeg(paper, 2.0f);
         float fineNow = s.medianErrorDeg(now, 2.0f);
         std::printf("%s, paper's options: %.2f / %.2f deg (defaults %.2f at sigma 2)\n", b.method, coarse, fine,
@@ -172,7 +166,7 @@ TEST(ImageSpaceMethods, PaperBehaviourReachable) {
 // Texture clipping: every background pixel equals the background colour exactly.
 TEST_P(MethodProperties, BackgroundStaysBackgroundColour) {
     core::Dataset d = core::makeBuiltin("builtin:tori");
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.common.background = {0.2f, 0.4f, 0.6f};
     const core::Viewport vp{256, 192};
     core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.6f, 1.0f});
@@ -195,11 +189,11 @@ TEST_P(MethodProperties, DeterministicForSameSeed) {
     core::Dataset d = core::makeBuiltin("builtin:vortex-plane");
     const core::Viewport vp{200, 160};
     core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.3f, 1.0f});
-    test::Rendered a = test::renderScene(d, GetParam(), defaultParams(), vp, cam, frames(40));
-    test::Rendered b = test::renderScene(d, GetParam(), defaultParams(), vp, cam, frames(40));
+    test::Rendered a = test::renderScene(d, GetParam(), test::testParams(), vp, cam, frames(40));
+    test::Rendered b = test::renderScene(d, GetParam(), test::testParams(), vp, cam, frames(40));
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.flow, b.flow);
-    methods::MethodParams other = defaultParams();
+    methods::MethodParams other = test::testParams();
     other.common.noise.seed = 8;
     test::Rendered c = test::renderScene(d, GetParam(), other, vp, cam, frames(40));
     EXPECT_NE(a.flow, c.flow) << "a different seed must give a different texture";
@@ -226,7 +220,7 @@ TEST(IsaProperties, EdgeBlendingStopsTextureAtOccludingEdge) {
         return sum / n;
     };
     for (int mode = 0; mode < 3; ++mode) {
-        methods::MethodParams p = defaultParams();
+        methods::MethodParams p = test::testParams();
         p.isa.edgeBlending = mode > 0;
         p.isa.edgeFill = mode == 2 ? methods::EdgeFill::Gray : methods::EdgeFill::Noise;
         test::Rendered a = test::renderScene(d, "isa", p, vp, cam, 60);
@@ -274,7 +268,7 @@ TEST(IsaProperties, NoiseEdgeFillStartsStreaksAtFullContrast) {
     const int edge = 128, lag = 4;
     double nearContrast[2], nearCorr[2];
     for (int fill = 0; fill < 2; ++fill) {
-        methods::MethodParams p = defaultParams();
+        methods::MethodParams p = test::testParams();
         p.isa.edgeFill = fill == 0 ? methods::EdgeFill::Gray : methods::EdgeFill::Noise;
         test::Rendered r = test::renderScene(d, "isa", p, vp, cam, 120);
         BandStats interior = bandStats(r, 180, 236, lag);
@@ -298,7 +292,7 @@ TEST(IsaProperties, MeshAndPixelWarpAgree) {
     core::Dataset d = core::makeBuiltin("builtin:vortex-plane");
     const core::Viewport vp{192, 160};
     core::Camera cam = core::fitCamera(d.bounds(), vp, {0.2f, 0.3f, 1.0f});
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.isa.gridRes = 96;
     test::Rendered pixel = test::renderScene(d, "isa", p, vp, cam, 12);
     p.isa.warp = methods::IsaWarp::Mesh;

@@ -21,15 +21,9 @@ using namespace flowsurf;
 
 namespace {
 
-methods::MethodParams defaultParams() {
-    methods::MethodParams p;
-    p.common.noise.seed = 7;
-    return p;
-}
-
 // The paper's ISA/IBFVS settings [L]: bilinear resampling, point-sampled noise, 2 px step.
 methods::MethodParams paperParams() {
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.common.resample = methods::Resample::Bilinear;
     p.common.noiseInjection = methods::NoiseInjectionMode::Point;
     p.common.stepPx = 2.0f;
@@ -169,7 +163,7 @@ INSTANTIATE_TEST_SUITE_P(ScenesAndMethods, QualityAnalytic,
 // the exact analytic field at the same pixels within 1 degree, and is small.
 TEST_P(QualityAnalytic, OrientationErrorAgreesWithExactField) {
     const auto& [scene, method] = GetParam();
-    Measured m = measureScene(scene, method, defaultParams(), framesFor(method));
+    Measured m = measureScene(scene, method, test::testParams(), framesFor(method));
     ASSERT_FALSE(std::isnan(m.q.orientationErrorDeg));
     EXPECT_GT(m.q.countedFraction, 0.3);
     EXPECT_NEAR(m.q.orientationErrorDeg, m.directMedianDeg, 1.0);
@@ -181,17 +175,17 @@ TEST_P(QualityAnalytic, OrientationErrorAgreesWithExactField) {
 // (ISA, IBFVS) or a short box filter with long steps (hybrid).
 TEST(QualityDegraded, WorseSettingsReportLargerErrors) {
     for (const std::string method : {"isa", "ibfvs", "hybrid"}) {
-        const double good = measureScene("sphere", method, defaultParams(), framesFor(method)).q.orientationErrorDeg;
+        const double good = measureScene("sphere", method, test::testParams(), framesFor(method)).q.orientationErrorDeg;
         std::vector<methods::MethodParams> worse;
         if (method == "hybrid") {
-            methods::MethodParams p = defaultParams();
+            methods::MethodParams p = test::testParams();
             p.hybrid.kernel = methods::LicKernel::Box;
             p.hybrid.filterLength = 5;
             p.hybrid.stepPx = 4.0f;
             worse.push_back(p);
         } else {
             worse.push_back(paperParams());
-            methods::MethodParams p = defaultParams();
+            methods::MethodParams p = test::testParams();
             p.common.stepPx = 12.0f;
             worse.push_back(p);
         }
@@ -205,7 +199,7 @@ TEST(QualityDegraded, WorseSettingsReportLargerErrors) {
 // A frozen texture correlates fully with the frame before: the hybrid LIC of a solid noise
 // whose profile does not move (period of 10^9 frames), camera and data still.
 TEST(QualityCorrelation, FrozenTextureReportsOne) {
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.common.noise.period = 1e9f;
     const Measured m = measureScene("sphere", "hybrid", p, 3);
     EXPECT_GT(m.q.frameCorrelation, 0.999);
@@ -215,7 +209,7 @@ TEST(QualityCorrelation, FrozenTextureReportsOne) {
 // Fresh noise every frame correlates with nothing: ISA with alpha = 1 shows the injected
 // noise alone, and a square profile of period 4 frames is uncorrelated at a lag of 1.
 TEST(QualityCorrelation, FreshNoiseReportsZero) {
-    methods::MethodParams p = defaultParams();
+    methods::MethodParams p = test::testParams();
     p.common.alpha = 1.0f;
     p.common.noise.period = 4.0f;
     const Measured m = measureScene("sphere", "isa", p, 10);
@@ -238,8 +232,8 @@ TEST(QualityFrequency, ZoomKeepsFeatureSize) {
     core::Camera near = far;
     near.orthoHeight = far.orthoHeight / 2;
     for (const std::string method : {"isa", "ibfvs", "hybrid"}) {
-        const double a = measureScene("vortex-plane", method, defaultParams(), framesFor(method), far).q.frequencyPx;
-        const double b = measureScene("vortex-plane", method, defaultParams(), framesFor(method), near).q.frequencyPx;
+        const double a = measureScene("vortex-plane", method, test::testParams(), framesFor(method), far).q.frequencyPx;
+        const double b = measureScene("vortex-plane", method, test::testParams(), framesFor(method), near).q.frequencyPx;
         EXPECT_NEAR(b / a, 1.0, 0.15) << method << ": " << a << " px, zoomed " << b << " px";
     }
 }

@@ -4,21 +4,17 @@
 #include "session/options/config_file.h"
 #include "io/text_writer.h"
 #include "cli_options.h"
+#include "cli_parse.h"
 
 #include <gtest/gtest.h>
+
+#include <utility>
 
 using namespace flowsurf;
 using namespace flowsurf::app;
 
 namespace {
-RenderOptions parse(std::vector<std::string> args) {
-    CLI::App app;
-    RenderOptions o;
-    addRenderOptions(app, o);
-    std::vector<std::string> rev(args.rbegin(), args.rend());
-    app.parse(rev);
-    return o;
-}
+RenderOptions parse(std::vector<std::string> args) { return testing_cli::parseRenderArgs(std::move(args)); }
 }  // namespace
 
 TEST(CliOptions, ParsesTheDocumentedNames) {

@@ -4,8 +4,11 @@
 #include "io/text_writer.h"
 #include "session/options/dye_sources.h"
 #include "cli_options.h"
+#include "cli_parse.h"
 
 #include <gtest/gtest.h>
+
+#include <utility>
 
 #include <cstdio>
 #include <fstream>
@@ -15,14 +18,7 @@ using namespace flowsurf;
 using namespace flowsurf::app;
 
 namespace {
-RenderOptions parseArgs(std::vector<std::string> args) {
-    CLI::App app;
-    RenderOptions o;
-    addRenderOptions(app, o);
-    std::vector<std::string> rev(args.rbegin(), args.rend());
-    app.parse(rev);
-    return o;
-}
+RenderOptions parseArgs(std::vector<std::string> args) { return testing_cli::parseRenderArgs(std::move(args)); }
 
 std::string messageOf(const std::function<void()>& f) {
     try {
