@@ -30,6 +30,13 @@ Buffer::Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags) : size_(byt
     glNamedBufferStorage(id, bytes, data, flags);
 }
 
+BufferTexture::BufferTexture(GLenum internalFormat, const Buffer& buffer) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+    h_ = Handle<detail::deleteTexture>(id);
+    glTextureBuffer(id, internalFormat, buffer.id());
+}
+
 Framebuffer Framebuffer::create() {
     Framebuffer f;
     GLuint id = 0;

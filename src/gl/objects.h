@@ -71,6 +71,19 @@ private:
     GLsizeiptr size_ = 0;
 };
 
+// A buffer texture: `buffer`'s bytes read as texels of `internalFormat` (texelFetch on a
+// samplerBuffer); it does not own the buffer.
+class BufferTexture {
+public:
+    BufferTexture() = default;
+    BufferTexture(GLenum internalFormat, const Buffer& buffer);
+    GLuint id() const { return h_.id(); }
+    explicit operator bool() const { return bool(h_); }
+
+private:
+    Handle<detail::deleteTexture> h_;
+};
+
 class Framebuffer {
 public:
     Framebuffer() = default;

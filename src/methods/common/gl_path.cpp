@@ -32,4 +32,16 @@ GlPath resolveGlPath(GlPath requested) {
     return glPathFor(requested, r ? std::string_view(r) : std::string_view());
 }
 
+bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels) {
+    if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
+    return renderer.find("llvmpipe") != std::string_view::npos &&
+           double(triangles) >= kComputeRasterTrianglesPerPixel * double(pixels);
+}
+
+bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels) {
+    if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return useComputeRaster(requested, r ? std::string_view(r) : std::string_view(), triangles, pixels);
+}
+
 }  // namespace flowsurf::methods

@@ -16,4 +16,14 @@ GlPath glPathFor(GlPath requested, std::string_view renderer);
 // The same for the current GL context's renderer.
 GlPath resolveGlPath(GlPath requested);
 
+// Whether the surface passes rasterise with compute shaders (SurfaceRaster, params.h) for a
+// surface of `triangles` drawn into `pixels`: as requested, or for Auto on a software
+// renderer (llvmpipe) when triangles >= kComputeRasterTrianglesPerPixel x pixels. There GL
+// transforms, sets up and bins every triangle on one thread, while the visibility buffer
+// spreads the triangles over all cores but pays a resolve per pixel; the crossover measured
+// in doc/bench/surface_raster_llvmpipe.md. GPUs rasterise in fixed-function hardware: GL.
+inline constexpr double kComputeRasterTrianglesPerPixel = 0.3;
+bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels);
+bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels);  // current context
+
 }  // namespace flowsurf::methods

@@ -48,6 +48,13 @@ enum class NoiseInjectionMode { Point, Swept };
 // Auto: chosen per GL renderer (methods::resolveGlPath).
 enum class GlPath { Auto, Compute, Fragment };
 
+// Who rasterises the surface into the per-pixel buffers (ISA's velocity image, the hybrid's
+// seed textures). Gl: the GL rasteriser. Compute: a visibility buffer filled by compute
+// shaders, one invocation per triangle (methods/common/surface_raster.h); the same buffers
+// up to float rounding. Auto: compute on a software renderer when the triangles are many
+// for the image (methods::useComputeRaster), else GL.
+enum class SurfaceRaster { Auto, Gl, Compute };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
@@ -95,6 +102,7 @@ struct CommonParams {
     // clipped by the rasteriser before they cost fragment work.
     bool cullBackFaces = false;
     GlPath glPath = GlPath::Auto;  // per-pixel passes as compute or fragment shaders
+    SurfaceRaster surfaceRaster = SurfaceRaster::Auto;  // who rasterises the surface passes
 };
 
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
@@ -180,6 +188,9 @@ inline constexpr EnumNames<NoiseInjectionMode, 2> kNoiseInjectionNames{{{NoiseIn
 inline constexpr EnumNames<GlPath, 3> kGlPathNames{{{GlPath::Auto, "auto"},
                                                      {GlPath::Compute, "compute"},
                                                      {GlPath::Fragment, "fragment"}}};
+inline constexpr EnumNames<SurfaceRaster, 3> kSurfaceRasterNames{{{SurfaceRaster::Auto, "auto"},
+                                                                   {SurfaceRaster::Gl, "gl"},
+                                                                   {SurfaceRaster::Compute, "compute"}}};
 // The methods: ISA and IBFVS [L], the hybrid physical/device-space LIC [W]; in the order
 // the viewer cycles through them.
 enum class Method { Isa, Ibfvs, Hybrid };

@@ -3,6 +3,7 @@
 #include "core/noise.h"
 #include "methods/common/dye.h"
 #include "methods/common/params.h"
+#include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
 
 #include <cctype>
@@ -33,6 +34,7 @@ const std::string& shaderInterface() {
         s += enumDefines("KERNEL", kKernelNames);
         s += enumDefines("INTEGRATOR", kIntegratorNames);
         s += enumDefines("EDGE_FILL", kEdgeFillNames);
+        s += "#define VERTEX_TEXELS " + std::to_string(SurfaceGpu::kVertexFloats / 4) + "\n";
         s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
         s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";
         s += "#define DYE_INDEX_UNIT " + std::to_string(kDyeIndexUnit) + "\n";

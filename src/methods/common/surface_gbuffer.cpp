@@ -1,5 +1,6 @@
 #include "methods/common/surface_gbuffer.h"
 
+#include "methods/common/gl_path.h"
 #include "methods/common/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,7 +10,7 @@
 namespace flowsurf::methods {
 
 SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces,
-                               bool clearBackground)
+                               bool clearBackground, SurfaceRaster raster)
     : viewport_(viewport),
       velocity_(GL_RGBA32F, viewport.width, viewport.height, GL_LINEAR),
       shade_(GL_RGBA16F, viewport.width, viewport.height, GL_NEAREST),
@@ -18,6 +19,7 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       fbo_(gl::Framebuffer::create()),
       program_(program({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : "")),
+      raster_(raster),
       targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces),
       clearBackground_(clearBackground) {
@@ -42,6 +44,10 @@ glm::vec4 layerDepthRow(const core::Camera& camera) {
 }
 
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
+    if (surface.vertexTexture() && useComputeRaster(raster_, surface.triangleCount(), size_t(viewport_.width) * viewport_.height)) {
+        renderVisibility(surface, camera);
+        return;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
@@ -63,6 +69,36 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     surface.draw();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
+}
+
+void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Camera& camera) {
+    if (!visibility_) {
+        visibility_ = std::make_unique<VisibilityBuffer>(viewport_);
+        resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_resolve.frag"}},
+                           targets_ == 4 ? "#define WITH_POSITION 1\n" : "");
+        emptyVao_ = gl::VertexArray::create();
+    }
+    const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
+    visibility_->rasterize(surface, viewProj, cullBackFaces_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, viewport_.width, viewport_.height);
+    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+    if (clearBackground_)
+        for (int i = 0; i < targets_; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDisable(GL_BLEND);
+    resolve_.use();
+    glUniformMatrix4fv(resolve_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    glUniformMatrix4fv(resolve_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniform4fv(resolve_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
+    glUniform2i(resolve_.uniform("uSize"), viewport_.width, viewport_.height);
+    visibility_->bind(surface);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
 }
 
 void SurfaceGBuffer::merge(ProcessGroup& group) {

@@ -10,6 +10,9 @@
 #include "gl/objects.h"
 #include "methods/common/process_group.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/visibility_buffer.h"
+
+#include <memory>
 
 namespace flowsurf::methods {
 
@@ -25,8 +28,10 @@ public:
     // `clearBackground` false: the colour buffers are not cleared, so the background (depth
     // 1) keeps stale values; for consumers that read them on the surface only (ISA), one
     // full-image write per buffer less in every dynamic frame.
+    // `raster`: who rasterises (params.h SurfaceRaster), decided per render from the
+    // surface's triangle count.
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false,
-                   bool clearBackground = true);
+                   bool clearBackground = true, SurfaceRaster raster = SurfaceRaster::Auto);
     void render(const SurfaceGpu& surface, const core::Camera& camera);
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
@@ -38,10 +43,16 @@ public:
     const gl::Texture2D& position() const { return position_; }  // withPosition only
 
 private:
+    void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera);
+
     core::Viewport viewport_;
     gl::Texture2D velocity_, shade_, mask_, depth_, position_;
     gl::Framebuffer fbo_;
     gl::Program program_;
+    SurfaceRaster raster_;
+    std::unique_ptr<VisibilityBuffer> visibility_;  // made on first use
+    gl::Program resolve_;                         // visibility buffer -> these buffers
+    gl::VertexArray emptyVao_;
     int targets_;
     bool cullBackFaces_;
     bool clearBackground_;

@@ -165,14 +165,14 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     const float clampSpeed = st.clampSpeed;
     clampSpeed_ = params.normalize ? 0.0f : clampSpeed;
     std::vector<float> interleaved;
-    interleaved.reserve(mesh.vertexCount() * 11);
+    interleaved.reserve(mesh.vertexCount() * kVertexFloats);
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         glm::vec3 v = vel[i];
         if (params.normalize && speed[i] > 0.0f) v /= speed[i];
         else if (clampSpeed > 0.0f && speed[i] > clampSpeed) v *= clampSpeed / speed[i];
         const glm::vec3& p = mesh.positions[i];
         const glm::vec3& n = mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, color[i], mask[i]});
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, color[i], mask[i], 0.0f});
     }
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
@@ -184,7 +184,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
 
 bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName,
                                 const CommonParams& params, const SurfaceStatistics* whole) {
-    if (GLsizeiptr(mesh.vertexCount() * 11 * sizeof(float)) != vertices_.size() ||
+    if (GLsizeiptr(mesh.vertexCount() * kVertexStride) != vertices_.size() ||
         mesh.triangleCount() != triangles_)
         return false;
     std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
@@ -199,11 +199,17 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     triangles_ = mesh.triangleCount();
     // An empty piece (a process of a parallel render holding no triangles) draws nothing;
     // GL buffers need at least one byte.
-    interleaved.resize(std::max<size_t>(interleaved.size(), 11));
+    interleaved.resize(std::max<size_t>(interleaved.size(), kVertexFloats));
     vertices_ = gl::Buffer(GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_DYNAMIC_STORAGE_BIT);
     const glm::uvec3 none{0, 0, 0};
     indices_ = gl::Buffer(GLsizeiptr(std::max<size_t>(mesh.triangles.size(), 1) * sizeof(glm::uvec3)),
                           mesh.triangles.empty() ? &none : mesh.triangles.data(), 0);
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (interleaved.size() / 4 <= size_t(maxTexels) && std::max<size_t>(triangles_, 1) <= size_t(maxTexels)) {
+        vertexTexture_ = gl::BufferTexture(GL_RGBA32F, vertices_);
+        triangleTexture_ = gl::BufferTexture(GL_RGB32UI, indices_);
+    }
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, kVertexStride);

@@ -59,12 +59,19 @@ public:
     void drawEdgesAdjacency() const;
     bool hasEdges() const { return edgeCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
-    // The interleaved vertices (11 floats: position, normal, velocity, colour value and
-    // mask value, both mapped to 0..1 by their ranges, NaN where undefined) and the
-    // triangle indices, for passes that pair the geometry with other per-vertex data.
+    // The interleaved vertices (kVertexFloats floats: position, normal, velocity, colour
+    // value and mask value, both mapped to 0..1 by their ranges, NaN where undefined, and
+    // one float of padding, so that a vertex is three RGBA32F texels) and the triangle
+    // indices, for passes that pair the geometry with other per-vertex data.
     GLuint vertexBuffer() const { return vertices_.id(); }
     GLuint indexBuffer() const { return indices_.id(); }
-    static constexpr GLsizei kVertexStride = 11 * sizeof(float);
+    static constexpr int kVertexFloats = 12;
+    static constexpr GLsizei kVertexStride = kVertexFloats * sizeof(float);
+    // The same two buffers as buffer textures: vertices as RGBA32F (three texels a vertex),
+    // triangles as RGB32UI (one texel a triangle). Null when either is longer than the
+    // renderer's GL_MAX_TEXTURE_BUFFER_SIZE.
+    const gl::BufferTexture& vertexTexture() const { return vertexTexture_; }
+    const gl::BufferTexture& triangleTexture() const { return triangleTexture_; }
     size_t triangleCount() const { return triangles_; }
     // Largest speed of the advection velocity (after clamping/normalising): sets dt.
     float maxSpeed() const { return maxSpeed_; }
@@ -92,6 +99,7 @@ private:
                                   const CommonParams& params, const SurfaceStatistics* whole);
 
     gl::Buffer vertices_, indices_;
+    gl::BufferTexture vertexTexture_, triangleTexture_;
     gl::VertexArray vao_, edgeVao_;
     gl::Buffer edgeIndices_;
     size_t edgeCount_ = 0;

@@ -10,7 +10,7 @@ namespace flowsurf::methods::hybrid {
 HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      seeds_(viewport, true, params.common.cullBackFaces),
+      seeds_(viewport, true, params.common.cullBackFaces, true, params.common.surfaceRaster),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),

@@ -8,8 +8,8 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
     : params_(params),
       viewport_(viewport),
       // Every ISA stage reads the velocity image's colours where its depth is < 1 only.
-      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false),
-                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false)},
+      velocityImage_{SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false, params.common.surfaceRaster),
+                     SurfaceGBuffer(viewport, false, params.common.cullBackFaces, false, params.common.surfaceRaster)},
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),

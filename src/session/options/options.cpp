@@ -320,6 +320,10 @@ std::vector<OptionSpec> buildTable() {
              FS_REF(params.common.cullBackFaces)));
     add(choice("gl-path", gMethod, "Per-pixel passes as compute or fragment shaders (same images); auto picks "
                "per GL renderer", methods::kGlPathNames, FS_REF(params.common.glPath)));
+    add(choice("surface-raster", gMethod, "Who rasterises the surface (ISA's velocity image, the hybrid's seeds): "
+               "gl, or compute shaders (a visibility buffer; faster for many small triangles on a software "
+               "renderer); auto picks compute on llvmpipe when triangles > 0.3 x pixels",
+               methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)));
     add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));
     add(choice("on-camera-move", gMethod, "When the camera moves: translate (reproject the texture with the "
                "surface), freeze, none [L §IV-I]", methods::kCameraMoveNames, FS_REF(params.common.onCameraMove)));

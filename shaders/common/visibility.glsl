@@ -1,0 +1,23 @@
+// The surface as a visibility buffer (methods/common/visibility_buffer.h): per pixel the depth
+// and the id of the nearest triangle, kept with 32-bit atomics in two passes (pass 0: the
+// least depth; pass 1: the least triangle id among those at that depth, so that the result
+// does not depend on the order the triangles run in). Shared by the compute pass (small
+// triangles) and the GL pass (the triangles sent back to the GL rasteriser).
+layout(binding = 0) uniform samplerBuffer uVertices;    // SurfaceGpu's vertices, VERTEX_TEXELS a vertex
+layout(binding = 1) uniform usamplerBuffer uTriangles;  // SurfaceGpu's triangles, one a texel
+layout(std430, binding = 2) coherent buffer Depth { uint depthBits[]; };  // float bits; ~0u: none
+layout(std430, binding = 3) coherent buffer Ids { uint triangleIds[]; };   // ~0u: none
+uniform mat4 uViewProj;
+uniform ivec2 uSize;  // image size in pixels
+uniform int uPass;    // 0: least depth; 1: least triangle id at that depth
+
+uvec3 triangleVertices(uint tri) { return texelFetch(uTriangles, int(tri)).xyz; }
+vec3 vertexPosition(uint v) { return texelFetch(uVertices, int(v) * VERTEX_TEXELS).xyz; }
+
+// One covered pixel of triangle `tri` at window depth `depth` (the same float in both
+// passes: the same code computes it from the same inputs).
+void visit(uint pixel, float depth, uint tri) {
+    uint bits = floatBitsToUint(depth);
+    if (uPass == 0) atomicMin(depthBits[pixel], bits);
+    else if (depthBits[pixel] == bits) atomicMin(triangleIds[pixel], tri);
+}

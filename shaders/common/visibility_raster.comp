@@ -1,0 +1,78 @@
+// Visibility pass, compute part: one invocation per triangle rasterises it into the
+// visibility buffer (visibility.glsl) when it is small and wholly in front of the eye;
+// the others are listed for the GL rasteriser (visibility_raster_gl.*), which clips. Edge
+// functions are exact integers on vertices snapped to 1/256 pixel, with a top-left rule, so
+// two triangles that share an edge cover each pixel centre on it exactly once.
+#include "common/visibility.glsl"
+layout(local_size_x = 64) in;
+layout(std430, binding = 4) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance; };
+layout(std430, binding = 5) writeonly buffer Deferred { uint deferredIndices[]; };
+layout(std430, binding = 6) writeonly buffer DeferredIds { uint deferredTriangles[]; };
+uniform uint uTriangleCount;
+uniform int uCullBack;  // skip triangles that turn clockwise in the window
+
+const int kSub = 256;        // subpixel steps per pixel
+const int kMaxSide = 32;     // larger triangles go to the GL rasteriser
+
+int edgeAt(ivec2 a, ivec2 b, ivec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+// A pixel centre exactly on an edge counts for one of the two triangles sharing it.
+bool ownsTies(ivec2 a, ivec2 b) { return b.y > a.y || (b.y == a.y && b.x < a.x); }
+
+void main() {
+    uint tri = gl_GlobalInvocationID.x;
+    if (tri >= uTriangleCount) return;
+    uvec3 v = triangleVertices(tri);
+    vec4 c[3];
+    bool deferred = false;
+    for (int k = 0; k < 3; ++k) {
+        c[k] = uViewProj * vec4(vertexPosition(v[k]), 1.0);
+        // Behind or near the eye plane, or far outside the image: the GL rasteriser clips.
+        deferred = deferred || !(c[k].w > 1e-6 * abs(c[k].z)) || any(greaterThan(abs(c[k].xy), vec2(4.0 * c[k].w)));
+    }
+    ivec2 s[3];
+    float z[3];
+    for (int k = 0; k < 3; ++k) {
+        vec3 ndc = c[k].xyz / c[k].w;
+        s[k] = ivec2(round((ndc.xy * 0.5 + 0.5) * vec2(uSize) * float(kSub)));
+        z[k] = ndc.z * 0.5 + 0.5;
+    }
+    ivec2 lo = min(min(s[0], s[1]), s[2]), hi = max(max(s[0], s[1]), s[2]);
+    deferred = deferred || any(greaterThan(hi - lo, ivec2(kMaxSide * kSub)));
+    if (deferred) {
+        if (uPass == 0) {
+            uint slot = atomicAdd(drawCount, 3u) / 3u;
+            deferredIndices[3u * slot] = v[0];
+            deferredIndices[3u * slot + 1u] = v[1];
+            deferredIndices[3u * slot + 2u] = v[2];
+            deferredTriangles[slot] = tri;
+        }
+        return;
+    }
+    int area = edgeAt(s[0], s[1], s[2]);
+    if (area == 0 || (uCullBack != 0 && area < 0)) return;
+    if (area < 0) {  // two-sided: turn it counter-clockwise
+        ivec2 ts = s[1]; s[1] = s[2]; s[2] = ts;
+        float tz = z[1]; z[1] = z[2]; z[2] = tz;
+        area = -area;
+    }
+    // Pixels whose centres (x + 0.5) lie in the box, clipped to the image.
+    ivec2 first = max(ivec2(ceil((vec2(lo) - float(kSub / 2)) / float(kSub))), ivec2(0));
+    ivec2 last = min(ivec2(floor((vec2(hi) - float(kSub / 2)) / float(kSub))), uSize - 1);
+    bool t0 = ownsTies(s[1], s[2]), t1 = ownsTies(s[2], s[0]), t2 = ownsTies(s[0], s[1]);
+    float invArea = 1.0 / float(area);
+    // One loop over the box's pixels (not two nested): the lanes of a SIMD batch then run
+    // as many iterations as the largest box has pixels, not its width times its height.
+    int count = (last.x - first.x + 1) * (last.y - first.y + 1);
+    int x = first.x, y = first.y;
+    for (int i = 0; i < count; ++i, ++x) {
+        if (x > last.x) {
+            x = first.x;
+            ++y;
+        }
+        ivec2 p = ivec2(x, y) * kSub + kSub / 2;
+        int e0 = edgeAt(s[1], s[2], p), e1 = edgeAt(s[2], s[0], p), e2 = edgeAt(s[0], s[1], p);
+        bool inside = (e0 > 0 || (e0 == 0 && t0)) && (e1 > 0 || (e1 == 0 && t1)) && (e2 > 0 || (e2 == 0 && t2));
+        precise float depth = (float(e0) * z[0] + float(e1) * z[1] + float(e2) * z[2]) * invArea;
+        if (inside && depth >= 0.0 && depth <= 1.0) visit(uint(y * uSize.x + x), depth, tri);
+    }
+}

@@ -1,0 +1,95 @@
+#include "methods/common/visibility_buffer.h"
+
+#include "methods/common/shader_interface.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+
+namespace flowsurf::methods {
+
+namespace {
+constexpr GLuint kLocal = 64;  // visibility_raster.comp's work group
+constexpr uint32_t kNone = 0xffffffffu;
+}  // namespace
+
+VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
+    : viewport_(viewport),
+      depth_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
+      ids_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
+      indirect_(5 * sizeof(uint32_t), nullptr),
+      compute_(program({{GL_COMPUTE_SHADER, "common/visibility_raster.comp"}})),
+      glPass_(program({{GL_VERTEX_SHADER, "common/visibility_raster_gl.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_raster_gl.frag"}})),
+      deferredVao_(gl::VertexArray::create()),
+      noAttachments_(gl::Framebuffer::create()) {
+    glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, viewport.width);
+    glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, viewport.height);
+    glEnableVertexArrayAttrib(deferredVao_.id(), 0);
+    glVertexArrayAttribFormat(deferredVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(deferredVao_.id(), 0, 0);
+}
+
+void VisibilityBuffer::ensureDeferredCapacity(size_t triangles) {
+    if (triangles <= deferredCapacity_ && deferred_) return;
+    deferredCapacity_ = std::max<size_t>(triangles, 1);
+    deferred_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * 3 * sizeof(uint32_t)), nullptr);
+    deferredIds_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * sizeof(uint32_t)), nullptr);
+    glVertexArrayElementBuffer(deferredVao_.id(), deferred_.id());
+}
+
+void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
+    glBindTextureUnit(0, surface.vertexTexture().id());
+    glBindTextureUnit(1, surface.triangleTexture().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, depth_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, ids_.id());
+}
+
+void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces) {
+    const size_t triangles = surface.triangleCount();
+    ensureDeferredCapacity(triangles);
+    const uint32_t none = kNone;
+    glClearNamedBufferData(depth_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    glClearNamedBufferData(ids_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    const std::array<uint32_t, 5> command{0, 1, 0, 0, 0};  // DrawElementsIndirectCommand
+    glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
+    bind(surface);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, indirect_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, deferred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, deferredIds_.id());
+    glVertexArrayVertexBuffer(deferredVao_.id(), 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
+
+    for (GLuint v : {compute_.id(), glPass_.id()}) {
+        glProgramUniformMatrix4fv(v, glGetUniformLocation(v, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+        glProgramUniform2i(v, glGetUniformLocation(v, "uSize"), viewport_.width, viewport_.height);
+    }
+    glProgramUniform1ui(compute_.id(), compute_.uniform("uTriangleCount"), GLuint(triangles));
+    glProgramUniform1i(compute_.id(), compute_.uniform("uCullBack"), cullBackFaces ? 1 : 0);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, noAttachments_.id());
+    glViewport(0, 0, viewport_.width, viewport_.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    if (cullBackFaces) glEnable(GL_CULL_FACE);
+    else glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    const GLuint groups = GLuint((triangles + kLocal - 1) / kLocal);
+    for (int pass = 0; pass < 2; ++pass) {
+        compute_.use();
+        glUniform1i(compute_.uniform("uPass"), pass);
+        if (groups) glDispatchCompute(groups, 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
+        glPass_.use();
+        glUniform1i(glPass_.uniform("uPass"), pass);
+        glBindVertexArray(deferredVao_.id());
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect_.id());
+        glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr);
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+
+    glDisable(GL_CULL_FACE);
+}
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,42 @@
+// flowsurf — the surface as a visibility buffer, rasterised in compute shaders: per pixel the
+// depth and the id of the nearest triangle, from which SurfaceGBuffer's resolve pass rebuilds
+// the same per-pixel buffers the GL rasteriser gives (a visibility buffer, Burns & Hunt 2013).
+// Why: a software renderer (llvmpipe) transforms, sets up and bins every triangle on one
+// thread before its raster threads start, and a CFD surface's triangles cover a few pixels
+// each, so the surface pass costs per triangle; here every triangle is a compute invocation
+// and all cores share them. Triangles larger than 32 pixels, or crossing the eye plane, are
+// handed back to the GL rasteriser (it clips), into the same buffer.
+// Inputs: SurfaceGpu's vertex and index buffers. Output: two R32UI-like buffers (W x H uints,
+// bound as shader storage 2 and 3, visibility.glsl). Cost: O(N + covered pixels) in two
+// passes (least depth, then least id at that depth: order-independent, deterministic).
+#pragma once
+
+#include "core/camera.h"
+#include "gl/objects.h"
+#include "methods/common/surface_gpu.h"
+
+#include <glm/mat4x4.hpp>
+
+namespace flowsurf::methods {
+
+class VisibilityBuffer {
+public:
+    explicit VisibilityBuffer(const core::Viewport& viewport);
+    // Fills the visibility buffer with `surface` seen through `viewProj`; `cullBackFaces`
+    // skips triangles that turn clockwise in the window (as GL_CULL_FACE with CCW front).
+    void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces);
+    // Binds the vertex, index and visibility buffers (storage 0..3) for a resolve pass.
+    void bind(const SurfaceGpu& surface) const;
+
+private:
+    void ensureDeferredCapacity(size_t triangles);
+
+    core::Viewport viewport_;
+    gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_;
+    size_t deferredCapacity_ = 0;
+    gl::Program compute_, glPass_;
+    gl::VertexArray deferredVao_;
+    gl::Framebuffer noAttachments_;
+};
+
+}  // namespace flowsurf::methods
