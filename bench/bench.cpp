@@ -113,6 +113,19 @@ std::vector<methods::GlPath> resolvedGlPaths(const std::vector<methods::GlPath>&
     return paths;
 }
 
+// The same for the surface raster of a `triangles` x `vp` row: Gl or Compute, each once.
+std::vector<methods::SurfaceRaster> resolvedRasters(const std::vector<methods::SurfaceRaster>& requested,
+                                                    size_t triangles, const core::Viewport& vp) {
+    std::vector<methods::SurfaceRaster> rasters;
+    for (methods::SurfaceRaster r : requested) {
+        const methods::SurfaceRaster resolved =
+            methods::useComputeRaster(r, triangles, size_t(vp.width) * size_t(vp.height)) ? methods::SurfaceRaster::Compute
+                                                                                         : methods::SurfaceRaster::Gl;
+        if (std::find(rasters.begin(), rasters.end(), resolved) == rasters.end()) rasters.push_back(resolved);
+    }
+    return rasters;
+}
+
 }  // namespace
 
 std::vector<BenchRow> runBench(const BenchOptions& o) {
@@ -134,9 +147,11 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             for (const std::string& name : o.methods) {
                 if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
                 for (const auto& [param, variantParams] : variants(name, o))
-                    for (methods::GlPath path : resolvedGlPaths(o.glPaths)) {
+                    for (methods::GlPath path : resolvedGlPaths(o.glPaths))
+                    for (methods::SurfaceRaster raster : resolvedRasters(o.surfaceRasters, size_t(triangles), vp)) {
                         methods::MethodParams params = variantParams;
                         params.common.glPath = path;
+                        params.common.surfaceRaster = raster;
                         session::RenderOptions options;
                         options.method = methods::methodFromName(name);
                         options.params = params;
@@ -151,6 +166,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                             r.image = vp;
                             r.param = param;
                             r.glPath = glPathName(path);
+                            r.raster = raster == methods::SurfaceRaster::Compute ? "compute" : "gl";
                             std::fputs(formatRow(r).c_str(), stdout);
                             std::fflush(stdout);
                             rows.push_back(std::move(r));
@@ -161,7 +177,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     }
     if (!calibration.empty()) {
         BenchRow r;
-        r.caseName = r.param = r.glPath = "-";
+        r.caseName = r.param = r.glPath = r.raster = "-";
         r.method = "calib";
         r.image = {512, 512};
         r.triangles = 80'000;
@@ -175,8 +191,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
 
 std::string tableHeader() {
     char line[512];
-    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s %-8s | %9s %7s |", "method", "case",
-                          "triangles", "image", "param", "gl path", "ms/frame", "fps");
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s %-8s %-7s | %9s %7s |", "method", "case",
+                          "triangles", "image", "param", "gl path", "raster", "ms/frame", "fps");
     for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9s", c.title);
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
@@ -185,9 +201,9 @@ std::string tableHeader() {
 std::string formatRow(const BenchRow& r) {
     char line[512], image[32];
     std::snprintf(image, sizeof image, "%dx%d", r.image.width, r.image.height);
-    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s %-8s | %9.2f %7.1f |", r.method.c_str(),
-                          r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.glPath.c_str(), r.frameMs,
-                          1000.0 / r.frameMs);
+    int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s %-8s %-7s | %9.2f %7.1f |", r.method.c_str(),
+                          r.caseName.c_str(), r.triangles, image, r.param.c_str(), r.glPath.c_str(), r.raster.c_str(),
+                          r.frameMs, 1000.0 / r.frameMs);
     for (const auto& c : kColumns)
         n += r.stageMs.empty() ? std::snprintf(line + n, sizeof line - n, " %9s", "-")
                                : std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
@@ -197,12 +213,12 @@ std::string formatRow(const BenchRow& r) {
 
 std::string formatCsv(const std::vector<BenchRow>& rows) {
     std::ostringstream s;
-    s << "method,case,triangles,width,height,param,gl_path,frame_ms,fps";
+    s << "method,case,triangles,width,height,param,gl_path,frame_ms,fps,raster";
     for (const auto& c : kColumns) s << ',' << c.title << "_ms";
     s << '\n';
     for (const auto& r : rows) {
         s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.image.width << ',' << r.image.height
-          << ',' << r.param << ',' << r.glPath << ',' << r.frameMs << ',' << 1000.0 / r.frameMs;
+          << ',' << r.param << ',' << r.glPath << ',' << r.frameMs << ',' << 1000.0 / r.frameMs << ',' << r.raster;
         for (const auto& c : kColumns) {
             s << ',';
             if (!r.stageMs.empty()) s << columnMs(r, c);  // empty: stages not timed

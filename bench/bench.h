@@ -26,6 +26,9 @@ struct BenchOptions {
     // Per-pixel passes as compute or fragment shaders: each path asked for; a path that
     // resolves (auto -> the renderer's) to one already run is not run again.
     std::vector<methods::GlPath> glPaths{methods::GlPath::Auto};
+    // Who rasterises the surface passes: each asked for; one that resolves (auto: by
+    // renderer, triangles and pixels) to one already run for the row is not run again.
+    std::vector<methods::SurfaceRaster> surfaceRasters{methods::SurfaceRaster::Auto};
     // Proof that the speed check fails (scripts/bench-check.sh): every frame of the method
     // named here is rendered `slowdownFactor` times, as if it had become that much slower.
     std::string slowdownMethod;
@@ -44,6 +47,7 @@ struct BenchRow {
     core::Viewport image;
     std::string param;                   // "R=256" (ISA), "L=50" (hybrid), "-"
     std::string glPath;                  // the path that ran: "fragment" or "compute"
+    std::string raster;                  // who rasterised the surface: "gl" or "compute"
     double frameMs = 0;                  // whole frame, pipelined (timer off)
     std::vector<std::pair<std::string, double>> stageMs;  // per stage (synchronised pass)
 };

@@ -58,6 +58,13 @@ int runBench(const BenchOptions& o) {
     b.camera = o.camera;
     b.glPaths.clear();
     for (const auto& p : o.glPaths) b.glPaths.push_back(glPathNamed(p));
+    b.surfaceRasters.clear();
+    for (const auto& r : o.surfaceRasters) {
+        methods::SurfaceRaster value{};
+        if (!methods::valueOf(methods::kSurfaceRasterNames, r, &value))
+            throw ConfigError("--surface-rasters: unknown raster '" + r + "'");
+        b.surfaceRasters.push_back(value);
+    }
     b.stageTimes = !o.noStageTimes;
     b.calibration = o.calibration;
     if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);

@@ -39,6 +39,7 @@ struct BenchOptions {
     bool dynamicOnly = false;
     std::string camera = "fit";
     std::vector<std::string> glPaths{"auto"};
+    std::vector<std::string> surfaceRasters{"auto"};
     bool noStageTimes = false;
     bool calibration = false;
     std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails

@@ -134,6 +134,11 @@ int main(int argc, char** argv) {
         benchCmd->add_option("--gl-paths", bench.glPaths, "Per-pixel passes as compute or fragment shaders: each "
                                                          "path listed, one gl_path column (auto: the renderer's)")
             ->delimiter(',')->capture_default_str()->check(CLI::IsMember(paths));
+        std::vector<std::string> rasters;
+        for (const auto& [value, name] : methods::kSurfaceRasterNames) rasters.emplace_back(name);
+        benchCmd->add_option("--surface-rasters", bench.surfaceRasters, "Who rasterises the surface: each listed, "
+                                                                       "one raster column (auto: by renderer and triangles per pixel)")
+            ->delimiter(',')->capture_default_str()->check(CLI::IsMember(rasters));
     }
     benchCmd->add_flag("--no-stage-times", bench.noStageTimes,
                        "Time whole frames only (skips the second, synchronised pass per stage)");

@@ -30,12 +30,19 @@ void main() {
         deferred = deferred || !(c[k].w > 1e-6 * abs(c[k].z)) || any(greaterThan(abs(c[k].xy), vec2(4.0 * c[k].w)));
     }
     ivec2 s[3];
+    vec2 w[3];  // window coordinates, pixels
     float z[3];
     for (int k = 0; k < 3; ++k) {
         vec3 ndc = c[k].xyz / c[k].w;
-        s[k] = ivec2(round((ndc.xy * 0.5 + 0.5) * vec2(uSize) * float(kSub)));
+        w[k] = (ndc.xy * 0.5 + 0.5) * vec2(uSize);
+        s[k] = ivec2(round(w[k] * float(kSub)));
         z[k] = ndc.z * 0.5 + 0.5;
     }
+    // Depth is the plane through the unsnapped vertices (as GL interpolates it), so that
+    // snapping moves coverage by 1/256 pixel at most but never the depth of a pixel.
+    vec2 e1 = w[1] - w[0], e2 = w[2] - w[0];
+    float areaF = e1.x * e2.y - e2.x * e1.y;
+    vec2 dz = vec2((z[1] - z[0]) * e2.y - (z[2] - z[0]) * e1.y, (z[2] - z[0]) * e1.x - (z[1] - z[0]) * e2.x) / areaF;
     ivec2 lo = min(min(s[0], s[1]), s[2]), hi = max(max(s[0], s[1]), s[2]);
     deferred = deferred || any(greaterThan(hi - lo, ivec2(kMaxSide * kSub)));
     if (deferred) {
@@ -50,16 +57,14 @@ void main() {
     }
     int area = edgeAt(s[0], s[1], s[2]);
     if (area == 0 || (uCullBack != 0 && area < 0)) return;
-    if (area < 0) {  // two-sided: turn it counter-clockwise
+    if (area < 0) {  // two-sided: turn it counter-clockwise (the depth plane is symmetric)
         ivec2 ts = s[1]; s[1] = s[2]; s[2] = ts;
-        float tz = z[1]; z[1] = z[2]; z[2] = tz;
         area = -area;
     }
     // Pixels whose centres (x + 0.5) lie in the box, clipped to the image.
     ivec2 first = max(ivec2(ceil((vec2(lo) - float(kSub / 2)) / float(kSub))), ivec2(0));
     ivec2 last = min(ivec2(floor((vec2(hi) - float(kSub / 2)) / float(kSub))), uSize - 1);
     bool t0 = ownsTies(s[1], s[2]), t1 = ownsTies(s[2], s[0]), t2 = ownsTies(s[0], s[1]);
-    float invArea = 1.0 / float(area);
     // One loop over the box's pixels (not two nested): the lanes of a SIMD batch then run
     // as many iterations as the largest box has pixels, not its width times its height.
     int count = (last.x - first.x + 1) * (last.y - first.y + 1);
@@ -72,7 +77,7 @@ void main() {
         ivec2 p = ivec2(x, y) * kSub + kSub / 2;
         int e0 = edgeAt(s[1], s[2], p), e1 = edgeAt(s[2], s[0], p), e2 = edgeAt(s[0], s[1], p);
         bool inside = (e0 > 0 || (e0 == 0 && t0)) && (e1 > 0 || (e1 == 0 && t1)) && (e2 > 0 || (e2 == 0 && t2));
-        precise float depth = (float(e0) * z[0] + float(e1) * z[1] + float(e2) * z[2]) * invArea;
+        precise float depth = z[0] + dot(dz, vec2(x, y) + 0.5 - w[0]);
         if (inside && depth >= 0.0 && depth <= 1.0) visit(uint(y * uSize.x + x), depth, tri);
     }
 }

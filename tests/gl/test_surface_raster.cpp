@@ -1,0 +1,156 @@
+// The compute rasteriser (--surface-raster compute, a visibility buffer) gives the per-pixel
+// buffers and the images of the GL rasteriser: on small triangles (the compute pass), on
+// large ones and on triangles crossing the eye plane (handed back to GL), with and without
+// back-face culling; and the same bytes on every run (order-independent atomics).
+#include "core/builtin_scenes.h"
+#include "gl/readback.h"
+#include "gl_test_util.h"
+#include "methods/common/gl_path.h"
+#include "methods/common/surface_gbuffer.h"
+#include "methods/common/surface_gpu.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+using namespace flowsurf;
+
+namespace {
+
+struct Buffers {
+    std::vector<float> depth, velocity, shade, position;
+};
+
+Buffers renderBuffers(const core::SurfaceMesh& mesh, const core::Camera& camera, const core::Viewport& vp,
+                      methods::SurfaceRaster raster, bool cull) {
+    methods::SurfaceGpu surface(mesh, "velocity");
+    methods::SurfaceGBuffer g(vp, true, cull, true, raster);
+    g.render(surface, camera);
+    return {gl::readDepth(g.depth()), gl::readRgbaFloat(g.velocity()), gl::readRgbaFloat(g.shade()),
+            gl::readRgbaFloat(g.position())};
+}
+
+struct BufferDifference {
+    double coverageMismatch = 0;  // fraction of pixels on the surface in one and not the other
+    float depth = 0, velocity = 0, normal = 0, position = 0;  // largest |a - b| where both cover
+    size_t covered = 0;
+};
+
+BufferDifference compare(const Buffers& a, const Buffers& b) {
+    BufferDifference d;
+    size_t mismatch = 0;
+    for (size_t i = 0; i < a.depth.size(); ++i) {
+        const bool ca = a.depth[i] < 1.0f, cb = b.depth[i] < 1.0f;
+        if (ca != cb) ++mismatch;
+        if (!ca || !cb) continue;
+        ++d.covered;
+        d.depth = std::max(d.depth, std::abs(a.depth[i] - b.depth[i]));
+        for (int c = 0; c < 3; ++c) {
+            d.velocity = std::max(d.velocity, std::abs(a.velocity[4 * i + c] - b.velocity[4 * i + c]));
+            d.normal = std::max(d.normal, std::abs(a.shade[4 * i + c] - b.shade[4 * i + c]));
+            d.position = std::max(d.position, std::abs(a.position[4 * i + c] - b.position[4 * i + c]));
+        }
+    }
+    d.coverageMismatch = double(mismatch) / double(a.depth.size());
+    std::printf("covered %zu px, coverage mismatch %.5f, max |diff| depth %.2e velocity %.2e normal %.2e position %.2e\n",
+                d.covered, d.coverageMismatch, d.depth, d.velocity, d.normal, d.position);
+    return d;
+}
+
+// Same pixels covered but for rounding at a few silhouette pixels (both snap vertices to
+// 1/256 pixel, GL by its own rounding), and the same interpolated values up to float
+// rounding (the data are O(1); at grazing angles the depth changes by ~0.02 per pixel, so
+// its rounding reaches 1e-5).
+void expectSameBuffers(const BufferDifference& d) {
+    EXPECT_GT(d.covered, 1000u);
+    EXPECT_LE(d.coverageMismatch, 0.002);
+    EXPECT_LE(d.depth, 5e-5f);
+    EXPECT_LE(d.velocity, 2e-3f);
+    EXPECT_LE(d.normal, 2e-3f);
+    EXPECT_LE(d.position, 2e-3f);
+}
+
+}  // namespace
+
+// Many small triangles: the compute pass rasterises all of them.
+TEST(SurfaceRaster, SmallTrianglesGiveTheGlBuffers) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere:20000");
+    const core::Viewport vp{256, 192};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.5f, 1.0f});
+    const auto& mesh = data.steps[0].mesh;
+    for (bool cull : {false, true}) {
+        Buffers g = renderBuffers(mesh, cam, vp, methods::SurfaceRaster::Gl, cull);
+        Buffers c = renderBuffers(mesh, cam, vp, methods::SurfaceRaster::Compute, cull);
+        expectSameBuffers(compare(g, c));
+    }
+}
+
+// A few large triangles, and a camera inside the scene whose near plane cuts triangles:
+// those go to the GL rasteriser, into the same visibility buffer.
+TEST(SurfaceRaster, LargeAndClippedTrianglesGiveTheGlBuffers) {
+    const core::Dataset data = core::makeBuiltin("builtin:overlap-planes:50");  // triangles of ~50 px
+    const core::Viewport vp{256, 192};
+    const auto& mesh = data.steps[0].mesh;
+    const core::Bounds b = data.bounds();
+    core::Camera fit = core::fitCamera(b, vp, {0.2f, 0.3f, 1.0f});
+    core::Camera inside = fit;
+    inside.eye = b.center() + 0.6f * (fit.eye - b.center()) * (b.radius() / glm::length(fit.eye - b.center()));
+    inside.eye.x += 0.4f * b.radius();
+    inside.nearPlane = 0.05f * b.radius();
+    for (const core::Camera& cam : {fit, inside}) {
+        Buffers g = renderBuffers(mesh, cam, vp, methods::SurfaceRaster::Gl, false);
+        Buffers c = renderBuffers(mesh, cam, vp, methods::SurfaceRaster::Compute, false);
+        expectSameBuffers(compare(g, c));
+    }
+    // Grazing along a plane from just above it: its triangles reach behind the eye.
+    const core::Dataset plane = core::makeBuiltin("builtin:uniform-plane");
+    const core::Bounds pb = plane.bounds();
+    const float size = glm::length(pb.hi - pb.lo);
+    core::Camera grazing;
+    grazing.eye = pb.center() + glm::vec3(0.0f, -0.2f * size, 0.03f * size);
+    grazing.target = pb.center() + glm::vec3(0.0f, 0.5f * size, 0.0f);
+    grazing.up = {0.0f, 0.0f, 1.0f};
+    grazing.nearPlane = 0.001f * size;
+    grazing.farPlane = 4.0f * size;
+    Buffers g = renderBuffers(plane.steps[0].mesh, grazing, vp, methods::SurfaceRaster::Gl, false);
+    Buffers c = renderBuffers(plane.steps[0].mesh, grazing, vp, methods::SurfaceRaster::Compute, false);
+    expectSameBuffers(compare(g, c));
+}
+
+// The images of every method: mean <= 1 gray level, as between the GL paths (issue 21).
+class SurfaceRasterSameImage : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(Methods, SurfaceRasterSameImage, ::testing::Values("isa", "ibfvs", "hybrid"),
+                         [](const auto& info) { return info.param; });
+
+TEST_P(SurfaceRasterSameImage, Tori) {
+    const core::Dataset data = core::makeBuiltin("builtin:tori");
+    const core::Viewport vp{200, 150};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.2f, 0.6f, 1.0f});
+    methods::MethodParams p = test::testParams();
+    p.common.surfaceRaster = methods::SurfaceRaster::Gl;
+    const test::Rendered g = test::renderScene(data, GetParam(), p, vp, cam, 30);
+    p.common.surfaceRaster = methods::SurfaceRaster::Compute;
+    const test::Rendered c = test::renderScene(data, GetParam(), p, vp, cam, 30);
+    const test::Rendered c2 = test::renderScene(data, GetParam(), p, vp, cam, 30);
+    double mean = 0;
+    for (size_t i = 0; i < g.rgb.size(); ++i) mean += std::abs(int(g.rgb[i]) - int(c.rgb[i]));
+    mean /= double(g.rgb.size());
+    std::printf("%s: compute vs GL raster: composite mean %.4f gray levels\n", GetParam().c_str(), mean);
+    EXPECT_LE(mean, 1.0);
+    EXPECT_EQ(c.rgb, c2.rgb) << "the compute rasteriser must not depend on the order triangles run in";
+}
+
+// The rule behind auto: compute only on a software renderer and only for many triangles
+// per pixel; an explicit choice is taken as given.
+TEST(SurfaceRaster, AutoRule) {
+    using methods::SurfaceRaster;
+    const std::string llvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)", nvidia = "NVIDIA H100 80GB HBM3/PCIe/SSE2";
+    const size_t pixels = 512 * 512;
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 10000, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 1000000, pixels));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, nvidia, 1000000, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, nvidia, 10, pixels));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Gl, llvmpipe, 1000000, pixels));
+}
