@@ -8,6 +8,7 @@
 #   isa_ibfvs  doc/bench/isa_ibfvs_R.txt + README block   flowsurf bench, ISA and IBFVS grid   ~8 min
 #   hybrid     doc/bench/hybrid_R.txt                      hybrid, ParaView's framing, dynamic   ~2 min
 #   gl_paths   doc/bench/gl_paths_R.txt                    fragment vs compute per stage         ~3 min
+#   surface_raster doc/bench/surface_raster_R.txt          GL vs compute rasteriser, dynamic     ~4 min
 #   paraview   doc/bench/hybrid_vs_paraview_R.md + README  bench/paraview/compare.sh             ~25 min
 #   viewer     doc/bench/viewer_R.txt                      bench/viewer/run.sh                   ~4 min
 #
@@ -25,10 +26,11 @@ F=${FLOWSURF:-build/apps/flowsurf}
 [ -x "$F" ] || { echo "bench-tables: $F not found: build first (scripts/build.sh)" >&2; exit 2; }
 . bench/machine.sh
 TABLES=("$@")
-[ ${#TABLES[@]} -gt 0 ] || TABLES=(isa_ibfvs hybrid gl_paths paraview viewer)
+ALL=(isa_ibfvs hybrid gl_paths surface_raster paraview viewer)
+[ ${#TABLES[@]} -gt 0 ] || TABLES=("${ALL[@]}")
 for t in "${TABLES[@]}"; do
-    case "$t" in isa_ibfvs | hybrid | gl_paths | paraview | viewer) ;;
-        *) echo "bench-tables: unknown table '$t' (isa_ibfvs hybrid gl_paths paraview viewer)" >&2; exit 2 ;;
+    case " ${ALL[*]} " in *" $t "*) ;;
+        *) echo "bench-tables: unknown table '$t' (${ALL[*]})" >&2; exit 2 ;;
     esac
 done
 WORK=$(mktemp -d)
@@ -85,6 +87,9 @@ for t in "${TABLES[@]}"; do
     gl_paths)
         bench_table gl_paths --gl-paths fragment,compute --triangles 10000,220000 --sizes 512x512,1024x1024 \
             --grids 256 --lengths 31 --frames 8 ;;
+    surface_raster)
+        bench_table surface_raster --methods isa,hybrid --surface-rasters gl,compute --triangles 60000,220000,1000000 \
+            --sizes 512x512,1024x1024 --grids 256 --lengths 31 --dynamic-only --frames 5 ;;
     paraview)
         if ! command -v pvbatch > /dev/null; then
             echo "bench-tables: paraview skipped: ParaView is not installed (bench/paraview/setup.sh installs it);" \

@@ -22,7 +22,7 @@ GlPath resolveGlPath(GlPath requested);
 // transforms, sets up and bins every triangle on one thread, while the visibility buffer
 // spreads the triangles over all cores but pays a resolve per pixel; the crossover measured
 // in doc/bench/surface_raster_llvmpipe.md. GPUs rasterise in fixed-function hardware: GL.
-inline constexpr double kComputeRasterTrianglesPerPixel = 0.3;
+inline constexpr double kComputeRasterTrianglesPerPixel = 0.6;
 bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels);
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels);  // current context
 

@@ -3,6 +3,7 @@
 #include "session/options/options.h"
 
 #include "core/errors.h"
+#include "methods/common/gl_path.h"
 #include "session/options/colormap_file.h"
 #include "session/options/dye_sources.h"
 
@@ -322,7 +323,8 @@ std::vector<OptionSpec> buildTable() {
                "per GL renderer", methods::kGlPathNames, FS_REF(params.common.glPath)));
     add(choice("surface-raster", gMethod, "Who rasterises the surface (ISA's velocity image, the hybrid's seeds): "
                "gl, or compute shaders (a visibility buffer; faster for many small triangles on a software "
-               "renderer); auto picks compute on llvmpipe when triangles > 0.3 x pixels",
+               "renderer); auto picks compute on llvmpipe when triangles >= " +
+                   formatDouble(methods::kComputeRasterTrianglesPerPixel) + " x pixels",
                methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)));
     add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));
     add(choice("on-camera-move", gMethod, "When the camera moves: translate (reproject the texture with the "
