@@ -9,6 +9,11 @@
 
 namespace flowsurf::methods {
 
+namespace {
+constexpr size_t kPieceTriangles = 16384;
+constexpr size_t kMaxPieces = 4;
+}  // namespace
+
 SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces,
                                bool clearBackground, SurfaceRaster raster)
     : viewport_(viewport),
@@ -66,7 +71,11 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform4fv(program_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
-    surface.draw();
+    // Pieces of at least kPieceTriangles, at most kMaxPieces: on llvmpipe (2 cores, the
+    // wind surface's 58,824 triangles) the velocity image took 14.3-15.4 ms in 2-8 pieces
+    // against 16.3 ms in one draw; small surfaces stay one draw.
+    const int pieces = int(std::clamp<size_t>(surface.triangleCount() / kPieceTriangles, 1, kMaxPieces));
+    surface.drawInPieces(pieces);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
 }

@@ -245,4 +245,15 @@ void SurfaceGpu::draw() const {
     glDrawElements(GL_TRIANGLES, GLsizei(triangles_ * 3), GL_UNSIGNED_INT, nullptr);
 }
 
+void SurfaceGpu::drawInPieces(int pieces) const {
+    glBindVertexArray(vao_.id());
+    const size_t n = size_t(std::max(pieces, 1));
+    for (size_t k = 0; k < n; ++k) {
+        const size_t first = triangles_ * k / n, end = triangles_ * (k + 1) / n;
+        glDrawElements(GL_TRIANGLES, GLsizei((end - first) * 3), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(first * 3 * sizeof(uint32_t)));
+        if (k + 1 < n) glFlush();
+    }
+}
+
 }  // namespace flowsurf::methods

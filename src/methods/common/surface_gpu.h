@@ -54,6 +54,10 @@ public:
                         const SurfaceStatistics* whole = nullptr);
 
     void draw() const;  // binds the VAO and draws the triangles
+    // The same triangles in the same order as `pieces` draws, with a glFlush after each
+    // but the last, so that a renderer which bins a draw on the calling thread before its
+    // raster threads start (llvmpipe) rasterises one piece while it bins the next.
+    void drawInPieces(int pieces) const;
     // Draws every edge as GL_LINES_ADJACENCY (v0, v1, opposite vertex of the triangle
     // on each side; boundary edges repeat the one opposite vertex). Needs withEdges.
     void drawEdgesAdjacency() const;
