@@ -5,7 +5,8 @@
 // standard deviation of the unblurred profile (the blur alone would cut the texture
 // contrast fourfold before the LIC averages it further).
 // One invocation writes a row along x: it blurs each column of 3x3 profiled values across
-// y and z once and slides the x blur along the row (9 hashes per texel instead of 27).
+// y and z once and slides the x blur along the row (9 profiled values per texel instead
+// of 27), with the y-z part of the 9 hashes taken once per row.
 #include "common/noise.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, r32f) writeonly uniform image3D uNoise;
@@ -14,25 +15,31 @@ uniform uint uFrame;
 uniform float uPeriod;
 uniform int uProfile;
 uniform uint uSeed;
-float texelValue(ivec3 p) {
-    p = (p + uSize) % uSize;  // wrapped
-    uint h = hashPcg(uint(p.x) + hashPcg(uint(p.y) + hashPcg(uint(p.z) + hashPcg(uSeed))));
-    return noiseProfile(uProfile, float(uFrame) / uPeriod + hashToUnit(h));
+// Wrapped coordinate: p in [-1, uSize] (no integer modulo: llvmpipe divides lane by lane).
+int wrapped(int p) { return p < 0 ? p + uSize : (p >= uSize ? p - uSize : p); }
+// The hash of texel (x, y, z) is hashPcg(x + rowHash(y, z)): the y-z part, the same for a
+// whole row along x, is taken once per row.
+uint rowHash(int y, int z) { return hashPcg(uint(wrapped(y)) + hashPcg(uint(wrapped(z)) + hashPcg(uSeed))); }
+float texelValue(int x, uint row) {
+    return noiseProfile(uProfile, float(uFrame) / uPeriod + hashToUnit(hashPcg(uint(wrapped(x)) + row)));
 }
 const float kW[3] = float[3](0.25, 0.5, 0.25);
-// The y-z blur of the column at x.
-float column(int x, int y, int z) {
+// The y-z blur of the column at x, from the 3 x 3 row hashes around the invocation's row.
+float column(int x, uint rows[9]) {
     float sum = 0.0;
-    for (int k = -1; k <= 1; ++k)
-        for (int j = -1; j <= 1; ++j) sum += kW[j + 1] * kW[k + 1] * texelValue(ivec3(x, y + j, z + k));
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) sum += kW[j] * kW[k] * texelValue(x, rows[3 * k + j]);
     return sum;
 }
 void main() {
     const int y = int(gl_GlobalInvocationID.x), z = int(gl_GlobalInvocationID.y);
     if (y >= uSize || z >= uSize) return;
-    float prev = column(-1, y, z), cur = column(0, y, z);
+    uint rows[9];
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) rows[3 * k + j] = rowHash(y + j - 1, z + k - 1);
+    float prev = column(-1, rows), cur = column(0, rows);
     for (int x = 0; x < uSize; ++x) {
-        float next = column(x + 1, y, z);
+        float next = column(x + 1, rows);
         float sum = 0.25 * prev + 0.5 * cur + 0.25 * next;
         // sqrt(sum of squared 3D weights) = (0.25^2 + 0.5^2 + 0.25^2)^(3/2) = 0.2296; half
         // the unblurred deviation is restored (values stay mostly in [0, 1]).
