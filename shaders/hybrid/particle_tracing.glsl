@@ -12,7 +12,7 @@
 // moves them through per-pixel step maps (the step length folded in), and it reads no
 // uniform: llvmpipe reads a uniform inside divergent control flow with one load per lane.
 #include "hybrid/kernels.glsl"
-layout(binding = 0) uniform sampler2D uPosObj;    // RGBA32F seed positions, w = coverage
+layout(binding = 0) uniform sampler2D uSeedVelocity;  // the velocity image, nearest: w = layer depth, 0 off the surface
 #ifdef UNSTEADY
 // Unsteady flow [W §3]: the velocity image per time level, layer j at data time
 // uLevelTime[j] after the frame's (divided by the reference speed, uVelocityScale); the
@@ -34,6 +34,12 @@ layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity
 #endif
 layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
 uniform mat4 uTexFromObj;     // P-space -> image texture coordinates (x, y, -, w): eq. 2
+// The ray through a pixel: P = origin + s dir with, at normalised device coordinates n,
+// perspective: origin = uEye, dir = uForward + n.x uRayRight + n.y uRayUp; orthographic:
+// origin = uEye + n.x uRayRight + n.y uRayUp, dir = uForward.
+uniform vec3 uForward;
+uniform vec3 uRayRight;
+uniform vec3 uRayUp;
 uniform vec4 uLayerDepthRow;  // layer depth of a P-space point (methods::layerDepthRow)
 uniform vec3 uEye;
 uniform int uOrtho;
@@ -110,10 +116,21 @@ float noiseAt(vec3 q, float coarse, float f) {
     return mix(texture(uNoise, q).r, texture(uNoise, q * coarse).r, f);
 }
 
+// The seed: the visible surface point of pixel px, on the ray through the pixel centre
+// where the layer depth (affine in P-space) takes the velocity image's value w there.
+vec3 seedPosition(ivec2 px, float w) {
+    vec2 n = (vec2(px) + 0.5) / vec2(textureSize(uSeedVelocity, 0)) * 2.0 - 1.0;
+    vec3 across = n.x * uRayRight + n.y * uRayUp;
+    vec3 origin = uOrtho != 0 ? uEye + across : uEye;
+    vec3 dir = uOrtho != 0 ? uForward : uForward + across;
+    return origin + dir * ((w - dot(uLayerDepthRow, vec4(origin, 1.0))) / dot(uLayerDepthRow.xyz, dir));
+}
+
 // The LIC value I of pixel px; false off the surface (background pixels do no work).
 bool licAt(ivec2 px, out float result) {
-    vec4 seed = texelFetch(uPosObj, px, 0);
-    if (seed.w < 0.5) return false;
+    float layer = texelFetch(uSeedVelocity, px, 0).w;
+    if (layer < 0.5) return false;
+    vec4 seed = vec4(seedPosition(px, layer), 1.0);
     float dist = length(seed.xyz - uEye);
     float fineFreq = uFreqAtUnit, coarse = 1.0, f = 0.0;
     if (uOrtho == 0) {

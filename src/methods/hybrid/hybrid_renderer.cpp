@@ -10,7 +10,7 @@ namespace flowsurf::methods::hybrid {
 HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
     : params_(params),
       viewport_(viewport),
-      seeds_(viewport, true, params.common.cullBackFaces, true, params.common.surfaceRaster),
+      seeds_(viewport, false, params.common.cullBackFaces, true, params.common.surfaceRaster),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
@@ -22,7 +22,8 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
 
-    // (1) seed textures: P-space position and velocity per pixel [W §4]; the static
+    // (1) seed textures: P-space velocity and layer depth per pixel (the seed position is
+    // the surface point on the pixel ray at that depth) [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
     if (unsteady && in.group)

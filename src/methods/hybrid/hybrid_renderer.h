@@ -32,7 +32,7 @@ public:
 private:
     MethodParams params_;
     core::Viewport viewport_;
-    SurfaceGBuffer seeds_;  // seed textures [W §4]: position, velocity, shade, depth
+    SurfaceGBuffer seeds_;  // seed textures [W §4]: velocity (w: layer depth, gives the position), shade, depth
     VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
     ParticleTracing tracing_;

@@ -84,7 +84,17 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     glUniform1f(program.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
-    glBindTextureUnit(0, in.seeds->position().id());
+    // The pixel rays (seedPosition in particle_tracing.glsl): the view's basis, scaled to
+    // the image's half extent at unit distance (perspective) or in object units (ortho).
+    const glm::vec3 forward = glm::normalize(cam.target - cam.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float halfHeight = cam.orthographic() ? 0.5f * cam.orthoHeight : std::tan(glm::radians(cam.fovDeg) * 0.5f);
+    const float halfWidth = halfHeight * in.viewport.aspect();
+    glUniform3fv(program.uniform("uForward"), 1, glm::value_ptr(forward));
+    glUniform3fv(program.uniform("uRayRight"), 1, glm::value_ptr(right * halfWidth));
+    glUniform3fv(program.uniform("uRayUp"), 1, glm::value_ptr(up * halfHeight));
+    glBindTextureUnit(0, in.seeds->velocity().id());
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
     if (unsteady) {
         glBindTextureUnit(1, in.velocityLevels);

@@ -17,7 +17,7 @@
 namespace flowsurf::methods::hybrid {
 
 struct TracingInput {
-    const SurfaceGBuffer* seeds = nullptr;  // with positions
+    const SurfaceGBuffer* seeds = nullptr;  // velocity image; the seed positions come from its layer depth
     GLuint noise = 0;          // 3D texture
     int noiseSize = 64;
     core::Camera camera;
