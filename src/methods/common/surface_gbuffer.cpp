@@ -48,17 +48,22 @@ glm::vec4 layerDepthRow(const core::Camera& camera) {
     return row;
 }
 
+void SurfaceGBuffer::bindAndClear() {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, viewport_.width, viewport_.height);
+    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+    if (clearBackground_)
+        for (int i : {0, 3})  // velocity, position (surface_gbuffer.h)
+            if (i < targets_) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+}
+
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
     if (surface.vertexTexture() && useComputeRaster(raster_, surface.triangleCount(), size_t(viewport_.width) * viewport_.height)) {
         renderVisibility(surface, camera);
         return;
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, viewport_.width, viewport_.height);
-    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
-    if (clearBackground_)
-        for (int i = 0; i < targets_; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    bindAndClear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -89,12 +94,7 @@ void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Cam
     }
     const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     visibility_->rasterize(surface, viewProj, cullBackFaces_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, viewport_.width, viewport_.height);
-    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
-    if (clearBackground_)
-        for (int i = 0; i < targets_; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    bindAndClear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDisable(GL_BLEND);

@@ -25,9 +25,11 @@ glm::vec4 layerDepthRow(const core::Camera& camera);
 
 class SurfaceGBuffer {
 public:
-    // `clearBackground` false: the colour buffers are not cleared, so the background (depth
-    // 1) keeps stale values; for consumers that read them on the surface only (ISA), one
-    // full-image write per buffer less in every dynamic frame.
+    // `clearBackground`: the velocity (and position) buffers are cleared to 0 off the
+    // surface, for consumers that sample them there (the hybrid's bilinear lookups, its
+    // coverage test); false: nothing is cleared, for consumers that read every buffer where
+    // depth < 1 only (ISA). Shade and mask are never cleared: every consumer (overlay, merge,
+    // ParaView's composite) reads them where depth < 1 only.
     // `raster`: who rasterises (params.h SurfaceRaster), decided per render from the
     // surface's triangle count.
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false,
@@ -44,6 +46,7 @@ public:
 
 private:
     void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera);
+    void bindAndClear();  // binds the framebuffer; clears depth and what `clearBackground` says
 
     core::Viewport viewport_;
     gl::Texture2D velocity_, shade_, mask_, depth_, position_;
