@@ -13,9 +13,8 @@ layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
 // variant: a software rasteriser runs every branch of a shader, taken or not.
 uniform float uBeta;          // texture strength
 uniform float uContrast;      // display gain of the texture about its mean
-uniform int uUseColormap;     // 0: white surface
-uniform int uLighting;
-uniform int uMask;            // texture contrast x sqrt(mask value)
+// WITH_COLORMAP (0: white surface), WITH_LIGHTING and WITH_MASK (texture contrast x
+// sqrt(mask value)) are program variants, as SCHEME: llvmpipe runs both sides of a branch.
 #if WITH_LEGEND
 uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 #endif
@@ -34,9 +33,13 @@ vec3 surfaceColor(ivec2 px) {
     vec4 shade = texelFetch(uShade, px, 0);
     vec3 n = normalize(shade.xyz);
     float fa = texelFetch(uFlow, px, 0).r;
-    float gain = uContrast * (uMask != 0 ? sqrt(clamp(texelFetch(uMaskValue, px, 0).r, 0.0, 1.0)) : 1.0);
+#if WITH_MASK
+    float gain = uContrast * sqrt(clamp(texelFetch(uMaskValue, px, 0).r, 0.0, 1.0));
+#else
+    float gain = uContrast;
+#endif
     fa = clamp(NOISE_MEAN + (fa - NOISE_MEAN) * gain, 0.0, 1.0);
-    float lit = uLighting != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
+    float lit = WITH_LIGHTING != 0 ? 0.3 + 0.7 * diffuse(n) : 1.0;
     vec3 color;
     if (SCHEME == OVERLAY_GRAY) {
         color = vec3(fa);
@@ -51,11 +54,11 @@ vec3 surfaceColor(ivec2 px) {
         color = vec3(fa) * gooch * 1.2;
     } else {
         float value01 = clamp(shade.w, 0.0, 1.0);
-        vec3 fs = uUseColormap == 0 ? vec3(1.0)
+        vec3 fs = WITH_COLORMAP == 0 ? vec3(1.0)
                   : isnan(shade.w)  ? vec3(0.5)  // no value here (array missing on this patch)
                                     : textureLod(uColormap, vec2(value01 * (255.0 / 256.0) + 0.5 / 256.0, 0.5), 0.0).rgb;
         color = uBeta * vec3(fa) + (1.0 - uBeta) * fs * lit;
-        if (uLighting != 0) color = mix(color, color * lit, 0.5);  // the shape reads through the texture
+        if (WITH_LIGHTING != 0) color = mix(color, color * lit, 0.5);  // the shape reads through the texture
     }
     return clamp(color, 0.0, 1.0);
 }
@@ -67,7 +70,7 @@ vec3 withDye(vec3 color, ivec2 px, float depth) {
     vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;
     vec4 p = uInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     vec4 d = clamp(sampleDye(p.xyz / p.w, uDyeSlot), 0.0, 1.0);  // premultiplied
-    float lit = uLighting != 0 ? 0.55 + 0.45 * diffuse(normalize(texelFetch(uShade, px, 0).xyz)) : 1.0;
+    float lit = WITH_LIGHTING != 0 ? 0.55 + 0.45 * diffuse(normalize(texelFetch(uShade, px, 0).xyz)) : 1.0;
     return color * (1.0 - d.a) + d.rgb * lit;
 }
 #endif

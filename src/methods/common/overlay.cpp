@@ -10,10 +10,14 @@
 namespace flowsurf::methods {
 
 namespace {
-// The variant for these parameters (SCHEME, WITH_LEGEND, WITH_DYE in overlay.glsl).
+// The variant for these parameters (SCHEME, WITH_* in overlay.glsl).
 gl::Program makeProgram(GlPath path, const CommonParams& params, bool withDye) {
-    const std::string defines = "#define SCHEME " + std::to_string(int(params.overlay)) + "\n#define WITH_LEGEND " +
-                                (params.legend ? "1" : "0") + "\n#define WITH_DYE " + (withDye ? "1" : "0") + "\n";
+    auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    const std::string defines = "#define SCHEME " + std::to_string(int(params.overlay)) + "\n" +
+                                flag("WITH_LEGEND", params.legend) + flag("WITH_DYE", withDye) +
+                                flag("WITH_COLORMAP", params.colormap != Colormap::None || !params.colormapTable.empty()) +
+                                flag("WITH_LIGHTING", params.lighting) +
+                                flag("WITH_MASK", params.velocityMask || !params.maskBy.empty());
     if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "common/overlay.comp"}}, defines);
     return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}},
                    defines);
@@ -53,9 +57,6 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     // Per variant, some of these are compiled out (location -1: GL ignores the call).
     glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
     glUniform1f(prog.uniformIfActive("uContrast"), params_.contrast);
-    glUniform1i(prog.uniformIfActive("uUseColormap"), params_.colormap != Colormap::None || !params_.colormapTable.empty());
-    glUniform1i(prog.uniformIfActive("uLighting"), params_.lighting);
-    glUniform1i(prog.uniformIfActive("uMask"), params_.velocityMask || !params_.maskBy.empty());
     glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);
     if (params_.legend) glUniform2i(prog.uniform("uLegendOrigin"), legendOrigin_.x, legendOrigin_.y);
     glBindTextureUnit(0, flow.id());
