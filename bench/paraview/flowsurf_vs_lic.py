@@ -49,6 +49,7 @@ ap.add_argument('--steps', type=int, default=15, help='Surface LIC steps each wa
 ap.add_argument('--frames', type=int, default=9, help='timed renders K per view')
 ap.add_argument('--azimuth', type=float, default=0.5, help='degrees of camera turn per timed render')
 ap.add_argument('--modes', default='ids,flowsurf,lic,licenh')
+ap.add_argument('--surface-raster', default='auto', help="FlowSurf's FlowSurfSurfaceRaster: auto, gl or compute")
 args = ap.parse_args()
 
 LoadPlugin(args.plugin, ns=globals())
@@ -140,6 +141,7 @@ for spec in args.meshes.split(','):
                 rep.FlowSurfMethod = 'hybrid'
                 rep.FlowSurfFilterLength = 2 * args.steps + 1
                 rep.FlowSurfLicStepPx = 2.0
+                rep.FlowSurfSurfaceRaster = args.surface_raster
             elif mode in ('lic', 'licenh'):
                 rep.SetRepresentationType('Surface LIC')
                 rep.SelectInputVectors = ['POINTS', 'V']
