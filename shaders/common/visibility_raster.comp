@@ -5,10 +5,13 @@
 // two triangles that share an edge cover each pixel centre on it exactly once.
 #include "common/visibility.glsl"
 layout(local_size_x = 64) in;
-layout(std430, binding = 4) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance; };
+// The GL part's DrawElementsIndirectCommand, then the number of triangles deferred (those
+// beyond uDeferredCapacity are dropped; the command counts the ones stored).
+layout(std430, binding = 4) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance, deferredCount; };
 layout(std430, binding = 5) writeonly buffer Deferred { uint deferredIndices[]; };
 layout(std430, binding = 6) writeonly buffer DeferredIds { uint deferredTriangles[]; };
 uniform uint uTriangleCount;
+uniform uint uDeferredCapacity;
 uniform int uCullBack;  // skip triangles that turn clockwise in the window
 
 const int kSub = 256;        // subpixel steps per pixel
@@ -18,17 +21,27 @@ int edgeAt(ivec2 a, ivec2 b, ivec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y 
 // A pixel centre exactly on an edge counts for one of the two triangles sharing it.
 bool ownsTies(ivec2 a, ivec2 b) { return b.y > a.y || (b.y == a.y && b.x < a.x); }
 
+// Which side of the six clip planes a clip-space point is outside of, one bit each.
+uint outside(vec4 c) {
+    return (c.x < -c.w ? 1u : 0u) | (c.x > c.w ? 2u : 0u) | (c.y < -c.w ? 4u : 0u) | (c.y > c.w ? 8u : 0u) |
+           (c.z < -c.w ? 16u : 0u) | (c.z > c.w ? 32u : 0u);
+}
+
 void main() {
-    uint tri = gl_GlobalInvocationID.x;
+    // A 2D grid of work groups when the triangles need more than the first dimension allows.
+    uint tri = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationIndex;
     if (tri >= uTriangleCount) return;
     uvec3 v = triangleVertices(tri);
     vec4 c[3];
     bool deferred = false;
+    uint out0 = 0xffffffffu;
     for (int k = 0; k < 3; ++k) {
         c[k] = uViewProj * vec4(vertexPosition(v[k]), 1.0);
+        out0 &= outside(c[k]);
         // Behind or near the eye plane, or far outside the image: the GL rasteriser clips.
         deferred = deferred || !(c[k].w > 1e-6 * abs(c[k].z)) || any(greaterThan(abs(c[k].xy), vec2(4.0 * c[k].w)));
     }
+    if (out0 != 0u) return;  // wholly outside one clip plane: nothing to draw
     ivec2 s[3];
     vec2 w[3];  // window coordinates, pixels
     float z[3];
@@ -47,11 +60,14 @@ void main() {
     deferred = deferred || any(greaterThan(hi - lo, ivec2(kMaxSide * kSub)));
     if (deferred) {
         if (uPass == 0) {
-            uint slot = atomicAdd(drawCount, 3u) / 3u;
-            deferredIndices[3u * slot] = v[0];
-            deferredIndices[3u * slot + 1u] = v[1];
-            deferredIndices[3u * slot + 2u] = v[2];
-            deferredTriangles[slot] = tri;
+            uint slot = atomicAdd(deferredCount, 1u);
+            if (slot < uDeferredCapacity) {
+                atomicAdd(drawCount, 3u);
+                deferredIndices[3u * slot] = v[0];
+                deferredIndices[3u * slot + 1u] = v[1];
+                deferredIndices[3u * slot + 2u] = v[2];
+                deferredTriangles[slot] = tri;
+            }
         }
         return;
     }

@@ -18,7 +18,7 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     : viewport_(viewport),
       depth_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
       ids_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
-      indirect_(5 * sizeof(uint32_t), nullptr),
+      indirect_(6 * sizeof(uint32_t), nullptr),
       compute_(program({{GL_COMPUTE_SHADER, "common/visibility_raster.comp"}})),
       glPass_(program({{GL_VERTEX_SHADER, "common/visibility_raster_gl.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_raster_gl.frag"}})),
       deferredVao_(gl::VertexArray::create()),
@@ -31,8 +31,14 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
 }
 
 void VisibilityBuffer::ensureDeferredCapacity(size_t triangles) {
+    // Room for every triangle, within the largest shader storage block (deferred triangles
+    // are the large and the clipped ones, which cannot be that many; beyond it they are
+    // dropped).
+    GLint maxBlock = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    triangles = std::clamp<size_t>(triangles, 1, size_t(std::max(maxBlock, 12)) / (3 * sizeof(uint32_t)));
     if (triangles <= deferredCapacity_ && deferred_) return;
-    deferredCapacity_ = std::max<size_t>(triangles, 1);
+    deferredCapacity_ = triangles;
     deferred_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * 3 * sizeof(uint32_t)), nullptr);
     deferredIds_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * sizeof(uint32_t)), nullptr);
     glVertexArrayElementBuffer(deferredVao_.id(), deferred_.id());
@@ -51,7 +57,7 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     const uint32_t none = kNone;
     glClearNamedBufferData(depth_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     glClearNamedBufferData(ids_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-    const std::array<uint32_t, 5> command{0, 1, 0, 0, 0};  // DrawElementsIndirectCommand
+    const std::array<uint32_t, 6> command{0, 1, 0, 0, 0, 0};  // DrawElementsIndirectCommand, deferred count
     glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
     bind(surface);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, indirect_.id());
@@ -64,6 +70,7 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
         glProgramUniform2i(v, glGetUniformLocation(v, "uSize"), viewport_.width, viewport_.height);
     }
     glProgramUniform1ui(compute_.id(), compute_.uniform("uTriangleCount"), GLuint(triangles));
+    glProgramUniform1ui(compute_.id(), compute_.uniform("uDeferredCapacity"), GLuint(deferredCapacity_));
     glProgramUniform1i(compute_.id(), compute_.uniform("uCullBack"), cullBackFaces ? 1 : 0);
 
     glBindFramebuffer(GL_FRAMEBUFFER, noAttachments_.id());
@@ -74,11 +81,17 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     else glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    const GLuint groups = GLuint((triangles + kLocal - 1) / kLocal);
+    // Work groups in a 2D grid: one dimension may be as short as 65,535 (10M triangles need
+    // 156,250 groups of 64).
+    GLint maxGroups = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
+    const size_t groups = (triangles + kLocal - 1) / kLocal;
+    const GLuint groupsX = GLuint(std::min<size_t>(groups, size_t(std::max(maxGroups, 1))));
+    const GLuint groupsY = GLuint(groupsX ? (groups + groupsX - 1) / groupsX : 0);
     for (int pass = 0; pass < 2; ++pass) {
         compute_.use();
         glUniform1i(compute_.uniform("uPass"), pass);
-        if (groups) glDispatchCompute(groups, 1, 1);
+        if (groups) glDispatchCompute(groupsX, groupsY, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
         glPass_.use();
         glUniform1i(glPass_.uniform("uPass"), pass);
