@@ -10,8 +10,8 @@
 namespace flowsurf::methods {
 
 namespace {
-constexpr size_t kPieceTriangles = 16384;
-constexpr size_t kMaxPieces = 4;
+constexpr size_t kPieceTriangles = 4096;
+constexpr size_t kMaxPieces = 8;
 }  // namespace
 
 SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces,
@@ -76,9 +76,10 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform4fv(program_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
-    // Pieces of at least kPieceTriangles, at most kMaxPieces: on llvmpipe (2 cores, the
-    // wind surface's 58,824 triangles) the velocity image took 14.3-15.4 ms in 2-8 pieces
-    // against 16.3 ms in one draw; small surfaces stay one draw.
+    // Pieces of at least kPieceTriangles, at most kMaxPieces: on llvmpipe (2 cores) the
+    // surface pass of a 59k-triangle sphere at 512^2 took 10.5-11.0 ms in 8 pieces, 13.9-15.0
+    // in 3 of 16k and ~18 in one draw (218k: 26.5-28.5 / 31.5-33.1 ms); 16 pieces gained
+    // nothing more. Small surfaces stay one draw.
     const int pieces = int(std::clamp<size_t>(surface.triangleCount() / kPieceTriangles, 1, kMaxPieces));
     surface.drawInPieces(pieces);
     glDisable(GL_DEPTH_TEST);
