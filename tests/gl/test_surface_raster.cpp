@@ -8,6 +8,7 @@
 #include "methods/common/gl_path.h"
 #include "methods/common/surface_gbuffer.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/visibility_buffer.h"
 
 #include <gtest/gtest.h>
 
@@ -153,4 +154,17 @@ TEST(SurfaceRaster, AutoRule) {
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, nvidia, 1000000, pixels));
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, nvidia, 10, pixels));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Gl, llvmpipe, 1000000, pixels));
+}
+
+// More work groups than one dispatch dimension allows (10M triangles: 156,250 groups of 64,
+// llvmpipe allows 65,535 along x) go in rows: every group exists, the fewest rows.
+TEST(SurfaceRaster, WorkGroupGridCoversEveryGroup) {
+    struct Case { size_t groups, maxX; glm::uvec2 grid; };
+    for (const Case& c : {Case{156250, 65535, {65535, 3}}, Case{10, 65535, {10, 1}}, Case{0, 65535, {0, 0}},
+                          Case{65535, 65535, {65535, 1}}, Case{65536, 65535, {65535, 2}}, Case{7, 1, {1, 7}}}) {
+        const glm::uvec2 g = methods::workGroupGrid(c.groups, c.maxX);
+        EXPECT_EQ(g, c.grid) << c.groups << " groups, at most " << c.maxX << " along x";
+        EXPECT_LE(g.x, c.maxX);
+        EXPECT_GE(size_t(g.x) * g.y, c.groups);
+    }
 }

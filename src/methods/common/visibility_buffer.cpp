@@ -14,6 +14,12 @@ constexpr GLuint kLocal = 64;  // visibility_raster.comp's work group
 constexpr uint32_t kNone = 0xffffffffu;
 }  // namespace
 
+glm::uvec2 workGroupGrid(size_t groups, size_t maxX) {
+    if (groups == 0) return {0, 0};
+    const size_t x = std::min(groups, std::max<size_t>(maxX, 1));
+    return {GLuint(x), GLuint((groups + x - 1) / x)};
+}
+
 VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     : viewport_(viewport),
       depth_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
@@ -85,13 +91,11 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     // 156,250 groups of 64).
     GLint maxGroups = 0;
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
-    const size_t groups = (triangles + kLocal - 1) / kLocal;
-    const GLuint groupsX = GLuint(std::min<size_t>(groups, size_t(std::max(maxGroups, 1))));
-    const GLuint groupsY = GLuint(groupsX ? (groups + groupsX - 1) / groupsX : 0);
+    const glm::uvec2 grid = workGroupGrid((triangles + kLocal - 1) / kLocal, size_t(std::max(maxGroups, 1)));
     for (int pass = 0; pass < 2; ++pass) {
         compute_.use();
         glUniform1i(compute_.uniform("uPass"), pass);
-        if (groups) glDispatchCompute(groupsX, groupsY, 1);
+        if (grid.x) glDispatchCompute(grid.x, grid.y, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
         glPass_.use();
         glUniform1i(glPass_.uniform("uPass"), pass);

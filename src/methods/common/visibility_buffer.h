@@ -16,8 +16,14 @@
 #include "methods/common/surface_gpu.h"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 
 namespace flowsurf::methods {
+
+// Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
+// along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest
+// rows. visibility_raster.comp numbers its triangles row by row.
+glm::uvec2 workGroupGrid(size_t groups, size_t maxX);
 
 class VisibilityBuffer {
 public:
