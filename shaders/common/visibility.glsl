@@ -3,10 +3,10 @@
 // least depth; pass 1: the least triangle id among those at that depth, so that the result
 // does not depend on the order the triangles run in). Shared by the compute pass (small
 // triangles) and the GL pass (the triangles sent back to the GL rasteriser).
-layout(binding = 0) uniform samplerBuffer uVertices;    // SurfaceGpu's vertices, VERTEX_TEXELS a vertex
-layout(binding = 1) uniform usamplerBuffer uTriangles;  // SurfaceGpu's triangles, one a texel
-layout(std430, binding = 2) coherent buffer Depth { uint depthBits[]; };  // float bits; ~0u: none
-layout(std430, binding = 3) coherent buffer Ids { uint triangleIds[]; };   // ~0u: none
+layout(binding = VIS_VERTEX_UNIT) uniform samplerBuffer uVertices;    // SurfaceGpu's vertices, VERTEX_TEXELS a vertex
+layout(binding = VIS_TRIANGLE_UNIT) uniform usamplerBuffer uTriangles;  // SurfaceGpu's triangles, one a texel
+layout(std430, binding = VIS_DEPTH_BINDING) coherent buffer Depth { uint depthBits[]; };  // float bits; ~0u: none
+layout(std430, binding = VIS_ID_BINDING) coherent buffer Ids { uint triangleIds[]; };   // ~0u: none
 uniform mat4 uViewProj;
 uniform ivec2 uSize;  // image size in pixels
 uniform int uPass;    // 0: least depth; 1: least triangle id at that depth

@@ -7,9 +7,9 @@
 layout(local_size_x = 64) in;
 // The GL part's DrawElementsIndirectCommand, then the number of triangles deferred (those
 // beyond uDeferredCapacity are dropped; the command counts the ones stored).
-layout(std430, binding = 4) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance, deferredCount; };
-layout(std430, binding = 5) writeonly buffer Deferred { uint deferredIndices[]; };
-layout(std430, binding = 6) writeonly buffer DeferredIds { uint deferredTriangles[]; };
+layout(std430, binding = VIS_INDIRECT_BINDING) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance, deferredCount; };
+layout(std430, binding = VIS_DEFERRED_BINDING) writeonly buffer Deferred { uint deferredIndices[]; };
+layout(std430, binding = VIS_DEFERRED_ID_BINDING) writeonly buffer DeferredIds { uint deferredTriangles[]; };
 uniform uint uTriangleCount;
 uniform uint uDeferredCapacity;
 uniform int uCullBack;  // skip triangles that turn clockwise in the window

@@ -4,6 +4,7 @@
 #include "methods/common/dye.h"
 #include "methods/common/params.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/visibility_buffer.h"
 #include "methods/common/time_levels.h"
 
 #include <cctype>
@@ -35,6 +36,14 @@ const std::string& shaderInterface() {
         s += enumDefines("INTEGRATOR", kIntegratorNames);
         s += enumDefines("EDGE_FILL", kEdgeFillNames);
         s += "#define VERTEX_TEXELS " + std::to_string(SurfaceGpu::kVertexFloats / 4) + "\n";
+        for (const auto& [name, value] : {std::pair<const char*, int>{"VIS_VERTEX_UNIT", kVisVertexUnit},
+                                          {"VIS_TRIANGLE_UNIT", kVisTriangleUnit},
+                                          {"VIS_DEPTH_BINDING", kVisDepthBinding},
+                                          {"VIS_ID_BINDING", kVisIdBinding},
+                                          {"VIS_INDIRECT_BINDING", kVisIndirectBinding},
+                                          {"VIS_DEFERRED_BINDING", kVisDeferredBinding},
+                                          {"VIS_DEFERRED_ID_BINDING", kVisDeferredIdBinding}})
+            s += std::string("#define ") + name + " " + std::to_string(value) + "\n";
         s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
         s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";
         s += "#define DYE_INDEX_UNIT " + std::to_string(kDyeIndexUnit) + "\n";

@@ -51,10 +51,10 @@ void VisibilityBuffer::ensureDeferredCapacity(size_t triangles) {
 }
 
 void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
-    glBindTextureUnit(0, surface.vertexTexture().id());
-    glBindTextureUnit(1, surface.triangleTexture().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, depth_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, ids_.id());
+    glBindTextureUnit(kVisVertexUnit, surface.vertexTexture().id());
+    glBindTextureUnit(kVisTriangleUnit, surface.triangleTexture().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDepthBinding, depth_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIdBinding, ids_.id());
 }
 
 void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces) {
@@ -66,9 +66,9 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     const std::array<uint32_t, 6> command{0, 1, 0, 0, 0, 0};  // DrawElementsIndirectCommand, deferred count
     glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
     bind(surface);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, indirect_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, deferred_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, deferredIds_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIndirectBinding, indirect_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredBinding, deferred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredIdBinding, deferredIds_.id());
     glVertexArrayVertexBuffer(deferredVao_.id(), 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
 
     for (GLuint v : {compute_.id(), glPass_.id()}) {

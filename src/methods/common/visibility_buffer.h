@@ -6,8 +6,8 @@
 // each, so the surface pass costs per triangle; here every triangle is a compute invocation
 // and all cores share them. Triangles larger than 32 pixels, or crossing the eye plane, are
 // handed back to the GL rasteriser (it clips), into the same buffer.
-// Inputs: SurfaceGpu's vertex and index buffers. Output: two R32UI-like buffers (W x H uints,
-// bound as shader storage 2 and 3, visibility.glsl). Cost: O(N + covered pixels) in two
+// Inputs: SurfaceGpu's vertex and index buffers. Output: two W x H uint buffers (storage
+// blocks kVisDepthBinding and kVisIdBinding, visibility.glsl). Cost: O(N + covered pixels) in two
 // passes (least depth, then least id at that depth: order-independent, deterministic).
 #pragma once
 
@@ -19,6 +19,16 @@
 #include <glm/vec2.hpp>
 
 namespace flowsurf::methods {
+
+// Where the visibility passes find their inputs and outputs (shader_interface.cpp turns
+// these into VIS_* defines): texture units for the surface, storage blocks for the rest.
+inline constexpr int kVisVertexUnit = 0;        // samplerBuffer: SurfaceGpu's vertices
+inline constexpr int kVisTriangleUnit = 1;      // usamplerBuffer: SurfaceGpu's triangles
+inline constexpr int kVisDepthBinding = 2;      // per pixel: least depth (float bits)
+inline constexpr int kVisIdBinding = 3;         // per pixel: least triangle id at that depth
+inline constexpr int kVisIndirectBinding = 4;   // the GL part's draw command, deferred count
+inline constexpr int kVisDeferredBinding = 5;   // deferred triangles' vertex indices
+inline constexpr int kVisDeferredIdBinding = 6; // deferred triangles' ids
 
 // Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
 // along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest
