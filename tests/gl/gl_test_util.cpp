@@ -42,6 +42,14 @@ methods::MethodParams testParams() {
     return p;
 }
 
+methods::MethodParams paperParams() {
+    methods::MethodParams p = testParams();
+    p.common.resample = methods::Resample::Bilinear;
+    p.common.noiseInjection = methods::NoiseInjectionMode::Point;
+    p.common.stepPx = 2.0f;
+    return p;
+}
+
 Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport) {
     Rendered r;
     r.width = viewport.width;

@@ -31,6 +31,9 @@ struct Rendered {
 
 // The methods' defaults with the tests' fixed noise seed (7).
 methods::MethodParams testParams();
+// testParams with the paper's ISA/IBFVS settings [L]: bilinear resampling of F_a, noise
+// sampled at the pixel, and the 2 px step that point-sampled noise of scale 2 px needs.
+methods::MethodParams paperParams();
 
 // Reads back the last frame of `method`: F_a, depth and the composite.
 Rendered readBack(const methods::FlowMethod& method, const core::Viewport& viewport);

@@ -76,15 +76,6 @@ struct SpinningSphere {
     }
 };
 
-// The paper's behaviour [L]: bilinear resampling of F_a, noise sampled at the pixel, and
-// the step of 2 px that point-sampled noise of scale 2 px needs.
-methods::MethodParams paperParams() {
-    methods::MethodParams p = test::testParams();
-    p.common.resample = methods::Resample::Bilinear;
-    p.common.noiseInjection = methods::NoiseInjectionMode::Point;
-    p.common.stepPx = 2.0f;
-    return p;
-}
 
 }  // namespace
 
@@ -151,7 +142,7 @@ TEST(ImageSpaceMethods, PaperBehaviourReachable) {
     const struct { const char* method; float coarse, fine; } before[] = {{"isa", 4.11f, 7.53f},
                                                                           {"ibfvs", 4.06f, 7.57f}};
     for (const auto& b : before) {
-        test::Rendered paper = s.render(b.method, paperParams(), 100);
+        test::Rendered paper = s.render(b.method, test::paperParams(), 100);
         test::Rendered now = s.render(b.method, test::testParams(), 100);
         float coarse = s.medianErrorDeg(paper, 4.0f), fine = s.medianErrorDeg(paper, 2.0f);
         float fineNow = s.medianErrorDeg(now, 2.0f);

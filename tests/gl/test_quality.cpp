@@ -21,14 +21,6 @@ using namespace flowsurf;
 
 namespace {
 
-// The paper's ISA/IBFVS settings [L]: bilinear resampling, point-sampled noise, 2 px step.
-methods::MethodParams paperParams() {
-    methods::MethodParams p = test::testParams();
-    p.common.resample = methods::Resample::Bilinear;
-    p.common.noiseInjection = methods::NoiseInjectionMode::Point;
-    p.common.stepPx = 2.0f;
-    return p;
-}
 
 // The field of each built-in scene as builtin_scenes.cpp defines it, made tangential with
 // the exact surface normal at p (not the mesh's).
@@ -184,7 +176,7 @@ TEST(QualityDegraded, WorseSettingsReportLargerErrors) {
             p.hybrid.stepPx = 4.0f;
             worse.push_back(p);
         } else {
-            worse.push_back(paperParams());
+            worse.push_back(test::paperParams());
             methods::MethodParams p = test::testParams();
             p.common.stepPx = 12.0f;
             worse.push_back(p);

@@ -51,6 +51,15 @@ protected:
         err_ = ss.str();
         return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
     }
+    // Runs tests/viewer/SCRIPT under Xvfb against the real window (xdotool input); its exit
+    // status. The caller skips when hasWindowTools() is false.
+    static bool hasWindowTools() {
+        return std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") == 0;
+    }
+    int runWindowScript(const std::string& script) {
+        const std::string file = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/" + script;
+        return std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + file + "' '" + exe_ + "' '" + dir_ + "'").c_str());
+    }
     // Writes an event log and replays it headless on `input` with `options`.
     int replay(const std::string& input, const std::string& log, const std::string& options,
                const std::string& prefix = "", bool headless = true) {
@@ -363,12 +372,8 @@ TEST_F(Viewer, RealWindowUnderXvfb) {
 // Real mouse and keyboard events (xdotool) into the real window: GLFW's callbacks turn
 // them into the same events a log holds; the recorded session replays to the same image.
 TEST_F(Viewer, LiveInputInTheRealWindowReplaysExactly) {
-    if (std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") != 0)
-        GTEST_SKIP() << "xvfb-run or xdotool is not installed";
-    const std::string script = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/live_input.sh";
-    ASSERT_EQ(std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + script + "' '" + exe_ + "' '" + dir_ + "'")
-                              .c_str()),
-              0);
+    if (!hasWindowTools()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    ASSERT_EQ(runWindowScript("live_input.sh"), 0);
     std::ifstream in(path("live.log"));
     std::stringstream ss;
     ss << in.rdbuf();
@@ -409,12 +414,8 @@ TEST_F(Viewer, QualityMeasuredEveryNFramesWhenOn) {
 // under the cursor (on the unit sphere), recorded as a `set dye` event; the replayed
 // session shows the ink on the surface only, and none before the event.
 TEST_F(Viewer, CtrlClickDropsDyeOnTheSurfaceAndReplays) {
-    if (std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") != 0)
-        GTEST_SKIP() << "xvfb-run or xdotool is not installed";
-    const std::string script = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/dye_click.sh";
-    ASSERT_EQ(std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + script + "' '" + exe_ + "' '" + dir_ + "'")
-                              .c_str()),
-              0);
+    if (!hasWindowTools()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    ASSERT_EQ(runWindowScript("dye_click.sh"), 0);
     std::ifstream in(path("dye.log"));
     std::string line, dyeValue;
     while (std::getline(in, line))

@@ -26,10 +26,14 @@ GlPath glPathFor(GlPath requested, std::string_view renderer) {
     return GlPath::Fragment;
 }
 
+std::string_view currentRenderer() {
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return r ? std::string_view(r) : std::string_view();
+}
+
 GlPath resolveGlPath(GlPath requested) {
     if (requested != GlPath::Auto) return requested;
-    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return glPathFor(requested, r ? std::string_view(r) : std::string_view());
+    return glPathFor(requested, currentRenderer());
 }
 
 bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels) {
@@ -40,8 +44,7 @@ bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t
 
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels) {
     if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
-    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return useComputeRaster(requested, r ? std::string_view(r) : std::string_view(), triangles, pixels);
+    return useComputeRaster(requested, currentRenderer(), triangles, pixels);
 }
 
 }  // namespace flowsurf::methods

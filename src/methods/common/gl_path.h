@@ -13,6 +13,9 @@ namespace flowsurf::methods {
 // runs on a small part of the chip; see the table in gl_path.cpp for the others.
 GlPath glPathFor(GlPath requested, std::string_view renderer);
 
+// The current GL context's GL_RENDERER ("" without one).
+std::string_view currentRenderer();
+
 // The same for the current GL context's renderer.
 GlPath resolveGlPath(GlPath requested);
 

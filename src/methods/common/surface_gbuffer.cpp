@@ -25,6 +25,7 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       program_(program({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : "")),
       raster_(raster),
+      renderer_(currentRenderer()),
       targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces),
       clearBackground_(clearBackground) {
@@ -59,7 +60,8 @@ void SurfaceGBuffer::bindAndClear() {
 }
 
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
-    if (surface.vertexTexture() && useComputeRaster(raster_, surface.triangleCount(), size_t(viewport_.width) * viewport_.height)) {
+    if (surface.vertexTexture() &&
+        useComputeRaster(raster_, renderer_, surface.triangleCount(), size_t(viewport_.width) * viewport_.height)) {
         renderVisibility(surface, camera);
         return;
     }

@@ -13,6 +13,7 @@
 #include "methods/common/visibility_buffer.h"
 
 #include <memory>
+#include <string>
 
 namespace flowsurf::methods {
 
@@ -53,6 +54,7 @@ private:
     gl::Framebuffer fbo_;
     gl::Program program_;
     SurfaceRaster raster_;
+    std::string renderer_;  // GL_RENDERER, for the auto rule of useComputeRaster
     std::unique_ptr<VisibilityBuffer> visibility_;  // made on first use
     gl::Program resolve_;                         // visibility buffer -> these buffers
     gl::VertexArray emptyVao_;

@@ -34,15 +34,19 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     glEnableVertexArrayAttrib(deferredVao_.id(), 0);
     glVertexArrayAttribFormat(deferredVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(deferredVao_.id(), 0, 0);
+    // The renderer's limits, once: deferred triangles (the large and the clipped ones, which
+    // cannot be that many) fit the largest storage block, beyond it they are dropped; work
+    // groups along x may be as few as 65,535 (10M triangles need 156,250 groups of 64).
+    GLint maxBlock = 0, maxGroups = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
+    maxDeferred_ = std::max<size_t>(size_t(std::max(maxBlock, 0)) / (3 * sizeof(uint32_t)), 1);
+    maxGroupsX_ = size_t(std::max(maxGroups, 1));
 }
 
 void VisibilityBuffer::ensureDeferredCapacity(size_t triangles) {
-    // Room for every triangle, within the largest shader storage block (deferred triangles
-    // are the large and the clipped ones, which cannot be that many; beyond it they are
-    // dropped).
-    GLint maxBlock = 0;
-    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-    triangles = std::clamp<size_t>(triangles, 1, size_t(std::max(maxBlock, 12)) / (3 * sizeof(uint32_t)));
+    // Room for every triangle, within the largest storage block.
+    triangles = std::clamp<size_t>(triangles, 1, maxDeferred_);
     if (triangles <= deferredCapacity_ && deferred_) return;
     deferredCapacity_ = triangles;
     deferred_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * 3 * sizeof(uint32_t)), nullptr);
@@ -71,9 +75,9 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredIdBinding, deferredIds_.id());
     glVertexArrayVertexBuffer(deferredVao_.id(), 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
 
-    for (GLuint v : {compute_.id(), glPass_.id()}) {
-        glProgramUniformMatrix4fv(v, glGetUniformLocation(v, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-        glProgramUniform2i(v, glGetUniformLocation(v, "uSize"), viewport_.width, viewport_.height);
+    for (const gl::Program* p : {&compute_, &glPass_}) {
+        glProgramUniformMatrix4fv(p->id(), p->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+        glProgramUniform2i(p->id(), p->uniform("uSize"), viewport_.width, viewport_.height);
     }
     glProgramUniform1ui(compute_.id(), compute_.uniform("uTriangleCount"), GLuint(triangles));
     glProgramUniform1ui(compute_.id(), compute_.uniform("uDeferredCapacity"), GLuint(deferredCapacity_));
@@ -87,11 +91,7 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     else glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    // Work groups in a 2D grid: one dimension may be as short as 65,535 (10M triangles need
-    // 156,250 groups of 64).
-    GLint maxGroups = 0;
-    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
-    const glm::uvec2 grid = workGroupGrid((triangles + kLocal - 1) / kLocal, size_t(std::max(maxGroups, 1)));
+    const glm::uvec2 grid = workGroupGrid((triangles + kLocal - 1) / kLocal, maxGroupsX_);
     for (int pass = 0; pass < 2; ++pass) {
         compute_.use();
         glUniform1i(compute_.uniform("uPass"), pass);

@@ -41,7 +41,7 @@ public:
     // Fills the visibility buffer with `surface` seen through `viewProj`; `cullBackFaces`
     // skips triangles that turn clockwise in the window (as GL_CULL_FACE with CCW front).
     void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces);
-    // Binds the vertex, index and visibility buffers (storage 0..3) for a resolve pass.
+    // Binds the vertex and triangle textures and the depth and id buffers for a resolve pass.
     void bind(const SurfaceGpu& surface) const;
 
 private:
@@ -50,6 +50,8 @@ private:
     core::Viewport viewport_;
     gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_;
     size_t deferredCapacity_ = 0;
+    size_t maxDeferred_ = 1;     // deferred triangles that fit the largest storage block
+    size_t maxGroupsX_ = 65535;  // GL_MAX_COMPUTE_WORK_GROUP_COUNT along x
     gl::Program compute_, glPass_;
     gl::VertexArray deferredVao_;
     gl::Framebuffer noAttachments_;
