@@ -32,7 +32,7 @@ float levelOf(float t) {
 #else
 layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
 #endif
-layout(binding = 3) uniform sampler3D uNoise;     // solid noise, wrapped, trilinear
+layout(binding = 3) uniform sampler3D uNoise;     // solid noise, RGBA8 2 x 2 neighbourhoods (solid_noise.comp)
 uniform mat4 uTexFromObj;     // P-space -> image texture coordinates (x, y, -, w): eq. 2
 // The ray through a pixel: P = origin + s dir with, at normalised device coordinates n,
 // perspective: origin = uEye, dir = uForward + n.x uRayRight + n.y uRayUp; orthographic:
@@ -109,11 +109,25 @@ bool stepVelocity(vec3 c, float d, StepMap m, float t, float dt, inout vec3 ref,
 const mat3 kNoiseRotation = mat3(0.781639, 0.550117, -0.293958,
                                  -0.482929, 0.832030, 0.272956,
                                  0.394740, -0.071392, 0.916015);
+// The wrapped solid noise's code at texture coordinates q, trilinear as GL filters it: the
+// texel at the lower corner holds the 2 x 2 neighbourhood in x and y (solid_noise.comp),
+// so two fetches (z and z + 1) cover the eight corners.
+float noiseTrilinear(vec3 q) {
+    vec3 p = q * float(NOISE_SIZE) - 0.5;
+    vec3 i = floor(p);
+    vec3 t = p - i;
+    ivec3 c = ivec3(i) & (NOISE_SIZE - 1);
+    vec4 a = texelFetch(uNoise, c, 0);
+    vec4 b = texelFetch(uNoise, ivec3(c.xy, (c.z + 1) & (NOISE_SIZE - 1)), 0);
+    vec4 m = mix(a, b, t.z);        // (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)
+    vec2 r = mix(m.xz, m.yw, t.x);  // rows y and y + 1
+    return mix(r.x, r.y, t.y);
+}
 // Constant image-space frequency [W §5]: two octave-snapped scales mixed by the
 // fractional part f of log2 of the seed's distance. q: the finer octave's coordinates;
 // the coarser one's are q * coarse (1/2; orthographic views: 1, f = 0).
 float noiseAt(vec3 q, float coarse, float f) {
-    return mix(texture(uNoise, q).r, texture(uNoise, q * coarse).r, f);
+    return mix(noiseTrilinear(q), noiseTrilinear(q * coarse), f);
 }
 
 // The seed: the visible surface point of pixel px, on the ray through the pixel centre
@@ -175,6 +189,6 @@ bool licAt(ivec2 px, out float result) {
             weight += k.weight;
         }
     }
-    result = lic / weight;
+    result = 0.5 + (lic / weight - 0.5) * (1.0 / NOISE_CODE);  // the code's average, decoded
     return true;
 }

@@ -4,47 +4,70 @@
 // the constant-frequency scheme do not alias. The blurred value is rescaled to half the
 // standard deviation of the unblurred profile (the blur alone would cut the texture
 // contrast fourfold before the LIC averages it further).
-// One invocation writes a row along x: it blurs each column of 3x3 profiled values across
-// y and z once and slides the x blur along the row (9 profiled values per texel instead
-// of 27), with the y-z part of the 9 hashes taken once per row.
+// Written packed for the particle tracing's trilinear lookups (noiseTrilinear in
+// particle_tracing.glsl): texel (x, y, z) holds, as 8-bit codes, N at (x, y, z),
+// (x + 1, y, z), (x, y + 1, z) and (x + 1, y + 1, z), wrapped, so a lookup fetches two
+// texels (z and z + 1) instead of eight. Code: 0.5 + NOISE_CODE (N - 0.5), which keeps
+// the blurred square profile's extremes (0.5 +- 1.09) inside [0, 1]; the tracing decodes
+// its average once per pixel.
+// One invocation writes ROWS rows along x (y0 .. y0 + ROWS - 1) at one z, so it blurs
+// ROWS + 1 rows of N: it takes the profiled values of the ROWS + 3 rows around them at 3
+// depths once per x, blurs across z, then y, and slides the x blur along the rows; the y-z
+// part of each hash is taken once per row.
 #include "common/noise.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(binding = 0, r32f) writeonly uniform image3D uNoise;
-uniform int uSize;
+layout(binding = 0, r32ui) writeonly uniform uimage3D uPacked;  // the RGBA8 texture, as 32-bit words
 uniform uint uFrame;
 uniform float uPeriod;
 uniform int uProfile;
 uniform uint uSeed;
-// Wrapped coordinate: p in [-1, uSize] (no integer modulo: llvmpipe divides lane by lane).
-int wrapped(int p) { return p < 0 ? p + uSize : (p >= uSize ? p - uSize : p); }
-// The hash of texel (x, y, z) is hashPcg(x + rowHash(y, z)): the y-z part, the same for a
-// whole row along x, is taken once per row.
+// Wrapped coordinate: p in [-1, 2 NOISE_SIZE) (no integer modulo: llvmpipe divides lane by lane).
+int wrapped(int p) { return p < 0 ? p + NOISE_SIZE : (p >= NOISE_SIZE ? p - NOISE_SIZE : p); }
+// The hash of texel (x, y, z) is hashPcg(x + rowHash(y, z)).
 uint rowHash(int y, int z) { return hashPcg(uint(wrapped(y)) + hashPcg(uint(wrapped(z)) + hashPcg(uSeed))); }
 float texelValue(int x, uint row) {
     return noiseProfile(uProfile, float(uFrame) / uPeriod + hashToUnit(hashPcg(uint(wrapped(x)) + row)));
 }
 const float kW[3] = float[3](0.25, 0.5, 0.25);
-// The y-z blur of the column at x, from the 3 x 3 row hashes around the invocation's row.
-float column(int x, uint rows[9]) {
-    float sum = 0.0;
-    for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j) sum += kW[j] * kW[k] * texelValue(x, rows[3 * k + j]);
-    return sum;
+// The y-z blurs at x of rows y0 .. y0 + ROWS (ROWS + 1 values), from the row hashes
+// rows[3 j + k] of row y0 - 1 + j at depth z - 1 + k.
+void columns(int x, uint rows[3 * (ROWS + 3)], out float col[ROWS + 1]) {
+    float zBlur[ROWS + 3];
+    for (int j = 0; j < ROWS + 3; ++j) {
+        zBlur[j] = 0.0;
+        for (int k = 0; k < 3; ++k) zBlur[j] += kW[k] * texelValue(x, rows[3 * j + k]);
+    }
+    for (int r = 0; r <= ROWS; ++r) col[r] = 0.25 * zBlur[r] + 0.5 * zBlur[r + 1] + 0.25 * zBlur[r + 2];
 }
+// sqrt(sum of squared 3D weights) = (0.25^2 + 0.5^2 + 0.25^2)^(3/2) = 0.2296; half the
+// unblurred deviation is restored (N stays mostly in [0, 1]); then the code.
+float code(float blurred) { return 0.5 + NOISE_CODE * ((blurred - 0.5) * (0.5 / 0.2296)); }
 void main() {
-    const int y = int(gl_GlobalInvocationID.x), z = int(gl_GlobalInvocationID.y);
-    if (y >= uSize || z >= uSize) return;
-    uint rows[9];
-    for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j) rows[3 * k + j] = rowHash(y + j - 1, z + k - 1);
-    float prev = column(-1, rows), cur = column(0, rows);
-    for (int x = 0; x < uSize; ++x) {
-        float next = column(x + 1, rows);
-        float sum = 0.25 * prev + 0.5 * cur + 0.25 * next;
-        // sqrt(sum of squared 3D weights) = (0.25^2 + 0.5^2 + 0.25^2)^(3/2) = 0.2296; half
-        // the unblurred deviation is restored (values stay mostly in [0, 1]).
-        imageStore(uNoise, ivec3(x, y, z), vec4(0.5 + (sum - 0.5) * (0.5 / 0.2296)));
-        prev = cur;
-        cur = next;
+    const int y0 = int(gl_GlobalInvocationID.x) * ROWS, z = int(gl_GlobalInvocationID.y);
+    if (y0 >= NOISE_SIZE || z >= NOISE_SIZE) return;
+    uint rows[3 * (ROWS + 3)];
+    for (int j = 0; j < ROWS + 3; ++j)
+        for (int k = 0; k < 3; ++k) rows[3 * j + k] = rowHash(y0 - 1 + j, z + k - 1);
+    float prev[ROWS + 1], cur[ROWS + 1], next[ROWS + 1], n0[ROWS + 1], n[ROWS + 1], nPrev[ROWS + 1];
+    columns(-1, rows, prev);
+    columns(0, rows, cur);
+    for (int x = 0; x <= NOISE_SIZE; ++x) {
+        // N at x (x = NOISE_SIZE: wrapped to 0, kept from the first column).
+        if (x < NOISE_SIZE) {
+            columns(x + 1, rows, next);
+            for (int r = 0; r <= ROWS; ++r) {
+                n[r] = code(0.25 * prev[r] + 0.5 * cur[r] + 0.25 * next[r]);
+                prev[r] = cur[r];
+                cur[r] = next[r];
+            }
+            if (x == 0) n0 = n;
+        } else {
+            n = n0;
+        }
+        if (x > 0)  // texel x - 1: N at x - 1 and x in rows r and r + 1
+            for (int r = 0; r < ROWS; ++r)
+                imageStore(uPacked, ivec3(x - 1, y0 + r, z),
+                           uvec4(packUnorm4x8(vec4(nPrev[r], n[r], nPrev[r + 1], n[r + 1]))));
+        nPrev = n;
     }
 }

@@ -26,8 +26,8 @@ public:
     bool lastFrameDynamic() const override { return lastDynamic_; }
     bool usesTimeLevels() const override { return true; }
     bool historyFree() const override { return true; }
-    // For tests: the solid noise volume.
-    GLuint noiseTexture() const { return noise_.texture(); }
+    // For tests: the solid noise volume, N per texel (x fastest).
+    std::vector<float> noiseValues() const { return noise_.values(); }
 
 private:
     MethodParams params_;

@@ -2,6 +2,7 @@
 
 #include "core/noise.h"
 #include "methods/common/shader_interface.h"
+#include "methods/hybrid/solid_noise.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -19,7 +20,7 @@ ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
     : compute_(path == GlPath::Compute),
       defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
-               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n"),
+               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n" + SolidNoise::defines(params.noiseSize)),
       emptyVao_(gl::VertexArray::create()) {
     programFor(false, false);  // the common variant, so that a shader error shows at construction
 }

@@ -2,7 +2,8 @@
 // accumulation with the chosen kernel [W §3-5, eqs. 2, 3, 5] (shaders/hybrid/
 // particle_tracing.glsl: one pass with a per-pixel loop, as a fragment or a compute
 // shader, GlPath). Inputs: seed textures, solid noise. Output: the LIC result I (R32F);
-// the noise mean on the background. Cost: pixels x L x (one velocity and two noise fetches).
+// the noise mean on the background. Cost: pixels x L x (one velocity lookup and two noise
+// lookups of two texel fetches each).
 #pragma once
 
 #include "core/camera.h"
