@@ -32,7 +32,9 @@ float levelOf(float t) {
 #else
 layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
 #endif
-layout(binding = 3) uniform sampler3D uNoise;     // solid noise, RGBA8 2 x 2 neighbourhoods (solid_noise.comp)
+// The solid noise, RGBA8 2 x 2 neighbourhoods (solid_noise.comp), read as an image: a
+// texelFetch would look up its mip level per lane.
+layout(binding = NOISE_IMAGE_UNIT, rgba8) readonly uniform image3D uNoise;
 uniform mat4 uTexFromObj;     // P-space -> image texture coordinates (x, y, -, w): eq. 2
 // The ray through a pixel: P = origin + s dir with, at normalised device coordinates n,
 // perspective: origin = uEye, dir = uForward + n.x uRayRight + n.y uRayUp; orthographic:
@@ -117,8 +119,8 @@ float noiseTrilinear(vec3 q) {
     vec3 i = floor(p);
     vec3 t = p - i;
     ivec3 c = ivec3(i) & (NOISE_SIZE - 1);
-    vec4 a = texelFetch(uNoise, c, 0);
-    vec4 b = texelFetch(uNoise, ivec3(c.xy, (c.z + 1) & (NOISE_SIZE - 1)), 0);
+    vec4 a = imageLoad(uNoise, c);
+    vec4 b = imageLoad(uNoise, ivec3(c.xy, (c.z + 1) & (NOISE_SIZE - 1)));
     vec4 m = mix(a, b, t.z);        // (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)
     vec2 r = mix(m.xz, m.yw, t.x);  // rows y and y + 1
     return mix(r.x, r.y, t.y);

@@ -14,13 +14,16 @@ namespace flowsurf::methods::hybrid {
 namespace {
 // Compute work group: 8 x 8 pixels (llvmpipe runs 8 invocations per SIMD batch).
 constexpr int kLocalX = 8, kLocalY = 8;
+// The solid noise's image unit (the compute pass writes I through unit 0).
+constexpr int kNoiseImageUnit = 1;
 }  // namespace
 
 ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
     : compute_(path == GlPath::Compute),
       defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
-               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n" + SolidNoise::defines(params.noiseSize)),
+               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n#define NOISE_IMAGE_UNIT " +
+               std::to_string(kNoiseImageUnit) + "\n" + SolidNoise::defines(params.noiseSize)),
       emptyVao_(gl::VertexArray::create()) {
     programFor(false, false);  // the common variant, so that a shader error shows at construction
 }
@@ -106,7 +109,7 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     } else {
         glBindTextureUnit(1, in.seeds->velocity().id());
     }
-    glBindTextureUnit(3, in.noise);
+    glBindImageTexture(kNoiseImageUnit, in.noise, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA8);
 }
 
 }  // namespace flowsurf::methods::hybrid

@@ -21,8 +21,6 @@ SolidNoise::SolidNoise(int size)
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     texture_ = gl::Handle<gl::detail::deleteTexture>(id);
     glTextureStorage3D(id, 1, GL_RGBA8, size, size, size);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 void SolidNoise::update(uint32_t frame, const core::NoiseParams& params) {
@@ -36,7 +34,7 @@ void SolidNoise::update(uint32_t frame, const core::NoiseParams& params) {
     glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
     // One invocation per kRows rows along x at one depth.
     glDispatchCompute(GLuint((size_ / kRows + kGroup - 1) / kGroup), GLuint((size_ + kGroup - 1) / kGroup), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     valid_ = true;
     frame_ = frame;
 }
