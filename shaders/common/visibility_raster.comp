@@ -4,12 +4,17 @@
 // functions are exact integers on vertices snapped to 1/256 pixel, with a top-left rule, so
 // two triangles that share an edge cover each pixel centre on it exactly once.
 #include "common/visibility.glsl"
-layout(local_size_x = 64) in;
+layout(local_size_x = VIS_RASTER_GROUP) in;
 // The GL part's DrawElementsIndirectCommand, then the number of triangles deferred (those
-// beyond uDeferredCapacity are dropped; the command counts the ones stored).
-layout(std430, binding = VIS_INDIRECT_BINDING) buffer Indirect { uint drawCount, instanceCount, firstIndex, baseVertex, baseInstance, deferredCount; };
+// beyond uDeferredCapacity are dropped; the command counts the ones stored), the number of
+// covering triangles and the second pass's DispatchIndirectCommand (visibility_dispatch.comp).
+#include "common/visibility_indirect.glsl"
 layout(std430, binding = VIS_DEFERRED_BINDING) writeonly buffer Deferred { uint deferredIndices[]; };
 layout(std430, binding = VIS_DEFERRED_ID_BINDING) writeonly buffer DeferredIds { uint deferredTriangles[]; };
+// The first pass lists the triangles that cover a pixel centre (in depth range); with
+// uCompacted the second pass runs over them only: no other triangle can own a pixel.
+layout(std430, binding = VIS_COVERING_BINDING) buffer Covering { uint coveringTriangles[]; };
+uniform int uCompacted;
 uniform uint uTriangleCount;
 uniform uint uDeferredCapacity;
 uniform int uCullBack;  // skip triangles that turn clockwise in the window
@@ -29,8 +34,9 @@ uint outside(vec4 c) {
 
 void main() {
     // A 2D grid of work groups when the triangles need more than the first dimension allows.
-    uint tri = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationIndex;
-    if (tri >= uTriangleCount) return;
+    uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationIndex;
+    if (index >= (uPass == 1 && uCompacted != 0 ? coveringCount : uTriangleCount)) return;
+    uint tri = uPass == 1 && uCompacted != 0 ? coveringTriangles[index] : index;
     uvec3 v = triangleVertices(tri);
     vec4 c[3];
     bool deferred = false;
@@ -85,6 +91,7 @@ void main() {
     // as many iterations as the largest box has pixels, not its width times its height.
     int count = (last.x - first.x + 1) * (last.y - first.y + 1);
     int x = first.x, y = first.y;
+    bool covers = false;
     for (int i = 0; i < count; ++i, ++x) {
         if (x > last.x) {
             x = first.x;
@@ -94,6 +101,10 @@ void main() {
         int e0 = edgeAt(s[1], s[2], p), e1 = edgeAt(s[2], s[0], p), e2 = edgeAt(s[0], s[1], p);
         bool inside = (e0 > 0 || (e0 == 0 && t0)) && (e1 > 0 || (e1 == 0 && t1)) && (e2 > 0 || (e2 == 0 && t2));
         precise float depth = z[0] + dot(dz, vec2(x, y) + 0.5 - w[0]);
-        if (inside && depth >= 0.0 && depth <= 1.0) visit(uint(y * uSize.x + x), depth, tri);
+        if (inside && depth >= 0.0 && depth <= 1.0) {
+            visit(uint(y * uSize.x + x), depth, tri);
+            covers = true;
+        }
     }
+    if (uPass == 0 && covers) coveringTriangles[atomicAdd(coveringCount, 1u)] = tri;
 }

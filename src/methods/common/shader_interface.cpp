@@ -42,7 +42,9 @@ const std::string& shaderInterface() {
                                           {"VIS_ID_BINDING", kVisIdBinding},
                                           {"VIS_INDIRECT_BINDING", kVisIndirectBinding},
                                           {"VIS_DEFERRED_BINDING", kVisDeferredBinding},
-                                          {"VIS_DEFERRED_ID_BINDING", kVisDeferredIdBinding}})
+                                          {"VIS_DEFERRED_ID_BINDING", kVisDeferredIdBinding},
+                                          {"VIS_COVERING_BINDING", kVisCoveringBinding},
+                                          {"VIS_RASTER_GROUP", kVisRasterGroup}})
             s += std::string("#define ") + name + " " + std::to_string(value) + "\n";
         s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
         s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";

@@ -10,8 +10,11 @@
 namespace flowsurf::methods {
 
 namespace {
-constexpr GLuint kLocal = 64;  // visibility_raster.comp's work group
 constexpr uint32_t kNone = 0xffffffffu;
+// visibility_raster.comp's Indirect block: the GL part's DrawElementsIndirectCommand (5),
+// the deferred count, the covering count, the second pass's DispatchIndirectCommand (3).
+constexpr size_t kIndirectWords = 10;
+constexpr GLintptr kDispatchOffset = 7 * sizeof(uint32_t);
 }  // namespace
 
 glm::uvec2 workGroupGrid(size_t groups, size_t maxX) {
@@ -24,9 +27,10 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     : viewport_(viewport),
       depth_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
       ids_(GLsizeiptr(viewport.width) * viewport.height * 4, nullptr),
-      indirect_(6 * sizeof(uint32_t), nullptr),
+      indirect_(kIndirectWords * sizeof(uint32_t), nullptr),
       compute_(program({{GL_COMPUTE_SHADER, "common/visibility_raster.comp"}})),
       glPass_(program({{GL_VERTEX_SHADER, "common/visibility_raster_gl.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_raster_gl.frag"}})),
+      dispatch_(program({{GL_COMPUTE_SHADER, "common/visibility_dispatch.comp"}})),
       deferredVao_(gl::VertexArray::create()),
       noAttachments_(gl::Framebuffer::create()) {
     glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, viewport.width);
@@ -35,23 +39,31 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     glVertexArrayAttribFormat(deferredVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(deferredVao_.id(), 0, 0);
     // The renderer's limits, once: deferred triangles (the large and the clipped ones, which
-    // cannot be that many) fit the largest storage block, beyond it they are dropped; work
+    // cannot be that many) fit the largest storage block, beyond it they are dropped; so do
+    // the covering triangles' ids, beyond it the second pass runs over every triangle; work
     // groups along x may be as few as 65,535 (10M triangles need 156,250 groups of 64).
     GLint maxBlock = 0, maxGroups = 0;
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
     maxDeferred_ = std::max<size_t>(size_t(std::max(maxBlock, 0)) / (3 * sizeof(uint32_t)), 1);
+    maxCovering_ = std::max<size_t>(size_t(std::max(maxBlock, 0)) / sizeof(uint32_t), 1);
     maxGroupsX_ = size_t(std::max(maxGroups, 1));
 }
 
-void VisibilityBuffer::ensureDeferredCapacity(size_t triangles) {
+void VisibilityBuffer::ensureCapacity(size_t triangles) {
     // Room for every triangle, within the largest storage block.
-    triangles = std::clamp<size_t>(triangles, 1, maxDeferred_);
-    if (triangles <= deferredCapacity_ && deferred_) return;
-    deferredCapacity_ = triangles;
-    deferred_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * 3 * sizeof(uint32_t)), nullptr);
-    deferredIds_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * sizeof(uint32_t)), nullptr);
-    glVertexArrayElementBuffer(deferredVao_.id(), deferred_.id());
+    const size_t deferred = std::clamp<size_t>(triangles, 1, maxDeferred_);
+    if (deferred > deferredCapacity_ || !deferred_) {
+        deferredCapacity_ = deferred;
+        deferred_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * 3 * sizeof(uint32_t)), nullptr);
+        deferredIds_ = gl::Buffer(GLsizeiptr(deferredCapacity_ * sizeof(uint32_t)), nullptr);
+        glVertexArrayElementBuffer(deferredVao_.id(), deferred_.id());
+    }
+    const size_t covering = std::clamp<size_t>(triangles, 1, maxCovering_);
+    if (covering > coveringCapacity_ || !covering_) {
+        coveringCapacity_ = covering;
+        covering_ = gl::Buffer(GLsizeiptr(coveringCapacity_ * sizeof(uint32_t)), nullptr);
+    }
 }
 
 void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
@@ -63,16 +75,19 @@ void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
 
 void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces) {
     const size_t triangles = surface.triangleCount();
-    ensureDeferredCapacity(triangles);
+    ensureCapacity(triangles);
+    // The second pass over the covering triangles only, when every triangle's id fits.
+    const bool compacted = triangles <= coveringCapacity_;
     const uint32_t none = kNone;
     glClearNamedBufferData(depth_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     glClearNamedBufferData(ids_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-    const std::array<uint32_t, 6> command{0, 1, 0, 0, 0, 0};  // DrawElementsIndirectCommand, deferred count
+    const std::array<uint32_t, kIndirectWords> command{0, 1, 0, 0, 0, 0, 0, 0, 0, 1};  // see kIndirectWords
     glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
     bind(surface);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIndirectBinding, indirect_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredBinding, deferred_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredIdBinding, deferredIds_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisCoveringBinding, covering_.id());
     glVertexArrayVertexBuffer(deferredVao_.id(), 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
 
     for (const gl::Program* p : {&compute_, &glPass_}) {
@@ -82,6 +97,8 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     glProgramUniform1ui(compute_.id(), compute_.uniform("uTriangleCount"), GLuint(triangles));
     glProgramUniform1ui(compute_.id(), compute_.uniform("uDeferredCapacity"), GLuint(deferredCapacity_));
     glProgramUniform1i(compute_.id(), compute_.uniform("uCullBack"), cullBackFaces ? 1 : 0);
+    glProgramUniform1i(compute_.id(), compute_.uniform("uCompacted"), compacted ? 1 : 0);
+    glProgramUniform1ui(dispatch_.id(), dispatch_.uniform("uMaxGroupsX"), GLuint(maxGroupsX_));
 
     glBindFramebuffer(GL_FRAMEBUFFER, noAttachments_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
@@ -91,12 +108,23 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     else glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    const glm::uvec2 grid = workGroupGrid((triangles + kLocal - 1) / kLocal, maxGroupsX_);
+    const glm::uvec2 grid = workGroupGrid((triangles + kVisRasterGroup - 1) / kVisRasterGroup, maxGroupsX_);
     for (int pass = 0; pass < 2; ++pass) {
         compute_.use();
         glUniform1i(compute_.uniform("uPass"), pass);
-        if (grid.x) glDispatchCompute(grid.x, grid.y, 1);
+        if (pass == 1 && compacted) {
+            glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, indirect_.id());
+            glDispatchComputeIndirect(kDispatchOffset);
+            glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        } else if (grid.x) {
+            glDispatchCompute(grid.x, grid.y, 1);
+        }
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
+        if (pass == 0 && compacted) {  // the second pass's work groups, from the covering count
+            dispatch_.use();
+            glDispatchCompute(1, 1, 1);
+            glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        }
         glPass_.use();
         glUniform1i(glPass_.uniform("uPass"), pass);
         glBindVertexArray(deferredVao_.id());

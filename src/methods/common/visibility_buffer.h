@@ -8,7 +8,9 @@
 // handed back to the GL rasteriser (it clips), into the same buffer.
 // Inputs: SurfaceGpu's vertex and index buffers. Output: two W x H uint buffers (storage
 // blocks kVisDepthBinding and kVisIdBinding, visibility.glsl). Cost: O(N + covered pixels) in two
-// passes (least depth, then least id at that depth: order-independent, deterministic).
+// passes (least depth, then least id at that depth: order-independent, deterministic); the
+// second runs over the triangles the first found covering a pixel centre only (on a CFD
+// surface most cover none: 1M triangles at 512^2).
 #pragma once
 
 #include "core/camera.h"
@@ -29,6 +31,8 @@ inline constexpr int kVisIdBinding = 3;         // per pixel: least triangle id 
 inline constexpr int kVisIndirectBinding = 4;   // the GL part's draw command, deferred count
 inline constexpr int kVisDeferredBinding = 5;   // deferred triangles' vertex indices
 inline constexpr int kVisDeferredIdBinding = 6; // deferred triangles' ids
+inline constexpr int kVisCoveringBinding = 7;   // triangles that cover a pixel centre (first pass)
+inline constexpr int kVisRasterGroup = 64;      // visibility_raster.comp's work group: triangles
 
 // Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
 // along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest
@@ -45,14 +49,16 @@ public:
     void bind(const SurfaceGpu& surface) const;
 
 private:
-    void ensureDeferredCapacity(size_t triangles);
+    void ensureCapacity(size_t triangles);
 
     core::Viewport viewport_;
-    gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_;
+    gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_, covering_;
     size_t deferredCapacity_ = 0;
     size_t maxDeferred_ = 1;     // deferred triangles that fit the largest storage block
+    size_t coveringCapacity_ = 0;
+    size_t maxCovering_ = 1;     // triangle ids that fit the largest storage block
     size_t maxGroupsX_ = 65535;  // GL_MAX_COMPUTE_WORK_GROUP_COUNT along x
-    gl::Program compute_, glPass_;
+    gl::Program compute_, glPass_, dispatch_;
     gl::VertexArray deferredVao_;
     gl::Framebuffer noAttachments_;
 };

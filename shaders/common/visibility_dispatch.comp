@@ -1,0 +1,12 @@
+// Visibility pass, between its two passes: the second pass's work groups (VIS_RASTER_GROUP
+// invocations, one per covering triangle), as a grid whose rows stay within uMaxGroupsX (workGroupGrid in
+// visibility_buffer.cpp, the same rule).
+#include "common/visibility_indirect.glsl"
+layout(local_size_x = 1) in;
+uniform uint uMaxGroupsX;
+void main() {
+    uint groups = (coveringCount + uint(VIS_RASTER_GROUP) - 1u) / uint(VIS_RASTER_GROUP);
+    dispatchX = min(groups, uMaxGroupsX);
+    dispatchY = dispatchX == 0u ? 0u : (groups + dispatchX - 1u) / dispatchX;
+    dispatchZ = 1u;
+}
