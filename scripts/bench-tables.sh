@@ -88,7 +88,7 @@ for t in "${TABLES[@]}"; do
         bench_table gl_paths --gl-paths fragment,compute --triangles 10000,220000 --sizes 512x512,1024x1024 \
             --grids 256 --lengths 31 --frames 8 ;;
     surface_raster)
-        bench_table surface_raster --methods isa,hybrid --surface-rasters gl,compute --triangles 60000,220000,1000000 \
+        bench_table surface_raster --methods isa,hybrid --surface-rasters gl,compute --triangles 60000,120000,220000,1000000 \
             --sizes 512x512,1024x1024 --grids 256 --lengths 31 --dynamic-only --frames 5 ;;
     paraview)
         if ! command -v pvbatch > /dev/null; then

@@ -23,9 +23,10 @@ GlPath resolveGlPath(GlPath requested);
 // surface of `triangles` drawn into `pixels`: as requested, or for Auto on a software
 // renderer (llvmpipe) when triangles >= kComputeRasterTrianglesPerPixel x pixels. There GL
 // transforms, sets up and bins every triangle on one thread, while the visibility buffer
-// spreads the triangles over all cores but pays a resolve per pixel; the crossover measured
-// in doc/bench/surface_raster_llvmpipe.md. GPUs rasterise in fixed-function hardware: GL.
-inline constexpr double kComputeRasterTrianglesPerPixel = 0.6;
+// spreads the triangles over all cores but pays a resolve per pixel. Crossover (ISA, dynamic
+// frames, doc/bench/surface_raster_llvmpipe.txt): 0.30-0.45 triangles per pixel at 512^2,
+// 0.43-0.57 at 1024^2. GPUs rasterise in fixed-function hardware: GL.
+inline constexpr double kComputeRasterTrianglesPerPixel = 0.5;
 bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels);
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels);  // current context
 
