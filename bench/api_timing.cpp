@@ -1,7 +1,7 @@
 // The timing behind doc/bench/isa_ibfvs_gl_path_llvmpipe.txt: frames of one surface through
 // the public C++ API (as the Python module renders them: advance() then readImage() per
-// frame, the API's stage timer on), each option set ("variant") timed `reps` times
-// interleaved with the others; prints the minimum over the reps of the wall and process-CPU
+// frame, the API's stage timer on), each option set ("variant") on a fresh renderer from
+// the defaults, timed `reps` times interleaved with the others; prints the minimum over the reps of the wall and process-CPU
 // ms per frame and of each stage's mean ms. Built as build/bench/flowsurf_api_timing:
 //   build/bench/flowsurf_api_timing windAroundBuildings_wss.vtp wallShearStress 800x600 3 orbit=0 orbit=1
 // INPUT FIELD (- : the default) WxH REPS VARIANT...; VARIANT = option=value[,option=value...]
@@ -36,11 +36,13 @@ int main(int argc, char** argv) {
     std::map<std::string, std::map<std::string, double>> bestStage;
     std::map<std::string, double> bestWall, bestCpu;
     std::vector<std::string> stageOrder;
-    flowsurf::Renderer r;
+    std::string renderer;
     std::vector<uint8_t> rgb;
     auto keepMin = [](auto& m, const std::string& k, double v) { m[k] = m.count(k) ? std::min(m[k], v) : v; };
     for (int rep = 0; rep < reps; ++rep)
         for (const std::string& v : variants) {
+            flowsurf::Renderer r;  // each variant from the defaults: no option carries over
+            renderer = r.glRenderer();
             r.set("method", "isa");
             r.set("size", size);
             r.set("orbit", "0");
@@ -70,7 +72,7 @@ int main(int argc, char** argv) {
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / frames);
             for (const auto& [name, ms] : stages) keepMin(bestStage[v], name, ms);
         }
-    std::printf("%s on %s, min over %d reps of %d frames\n", input.c_str(), r.glRenderer().c_str(), reps, frames);
+    std::printf("%s on %s, min over %d reps of %d frames\n", input.c_str(), renderer.c_str(), reps, frames);
     for (const std::string& v : variants) {
         std::printf("%-36s wall %7.1f  cpu %7.1f ms/frame |", v.c_str(), bestWall[v], bestCpu[v]);
         for (const std::string& n : stageOrder)
