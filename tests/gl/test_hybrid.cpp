@@ -228,3 +228,41 @@ TEST(Hybrid, FilterLengthOneReproducesTheNoise) {
     ASSERT_GT(count, 1000);
     EXPECT_LT(worst, 2e-2) << "positions reconstructed from depth differ slightly from the seed texture";
 }
+
+// The solid noise is kept as 8-bit codes (SolidNoise::kCode): for both profiles no value may
+// reach the ends of the code range (it would be clipped there), the mean stays at 0.5 and the
+// deviation at half the profile's (0.5 for the square profile's 0/1 values, 1/sqrt(12) for
+// the sawtooth), as the blur's rescaling intends.
+TEST(Hybrid, SolidNoiseCodesNeitherClipNorLoseContrast) {
+    core::Dataset d = core::makeBuiltin("builtin:sphere");
+    const core::Viewport vp{64, 64};
+    const core::Camera cam = core::fitCamera(d.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    for (core::NoiseProfile profile : {core::NoiseProfile::Square, core::NoiseProfile::Sawtooth}) {
+        methods::MethodParams p = hybridParams();
+        p.common.noise.profile = profile;
+        methods::SurfaceGpu surface(d.steps[0].mesh, "velocity", p.common);
+        methods::hybrid::HybridRenderer m(p, vp);
+        m.renderFrame({&surface, cam, 7});
+        const std::vector<float> n = m.noiseValues();
+        ASSERT_EQ(n.size(), size_t(p.hybrid.noiseSize) * p.hybrid.noiseSize * p.hybrid.noiseSize);
+        const float step = 1.0f / (255.0f * methods::hybrid::SolidNoise::kCode);  // one code in N
+        const float lowest = 0.5f - 0.5f / methods::hybrid::SolidNoise::kCode, highest = 1.0f - lowest;
+        double sum = 0, sq = 0;
+        float lo = n[0], hi = n[0];
+        for (float v : n) {
+            sum += v;
+            sq += double(v) * v;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        const double mean = sum / double(n.size()), sd = std::sqrt(sq / double(n.size()) - mean * mean);
+        const double profileSd = profile == core::NoiseProfile::Square ? 0.5 : 1.0 / std::sqrt(12.0);
+        std::printf("%s: N in [%.3f, %.3f] (codes reach [%.3f, %.3f]), mean %.4f, sd %.4f (half the profile's: %.4f)\n",
+                    profile == core::NoiseProfile::Square ? "square" : "sawtooth", lo, hi, lowest, highest, mean, sd,
+                    0.5 * profileSd);
+        EXPECT_GT(lo, lowest + 0.5f * step) << "a value clipped at the lowest code";
+        EXPECT_LT(hi, highest - 0.5f * step) << "a value clipped at the highest code";
+        EXPECT_NEAR(mean, 0.5, 0.01);
+        EXPECT_NEAR(sd, 0.5 * profileSd, 0.05 * profileSd);
+    }
+}
