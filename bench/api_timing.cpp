@@ -1,8 +1,9 @@
 // The timing behind doc/bench/isa_ibfvs_gl_path_llvmpipe.txt: frames of one surface through
 // the public C++ API (as the Python module renders them: advance() then readImage() per
 // frame, the API's stage timer on), each option set ("variant") on a fresh renderer from
-// the defaults, timed `reps` times interleaved with the others; prints the minimum over the reps of the wall and process-CPU
-// ms per frame and of each stage's mean ms. Built as build/bench/flowsurf_api_timing:
+// the defaults, timed `reps` times interleaved with the others; prints the minimum over the
+// reps of the wall and process-CPU ms per frame and of each stage's mean ms. Built as
+// build/bench/flowsurf_api_timing:
 //   build/bench/flowsurf_api_timing windAroundBuildings_wss.vtp wallShearStress 800x600 3 orbit=0 orbit=1
 // INPUT FIELD (- : the default) WxH REPS VARIANT...; VARIANT = option=value[,option=value...]
 #include <flowsurf/flowsurf.h>

@@ -15,7 +15,7 @@
 // depths once per x, blurs across z, then y, and slides the x blur along the rows; the y-z
 // part of each hash is taken once per row.
 #include "common/noise.glsl"
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = GROUP, local_size_y = GROUP, local_size_z = 1) in;
 layout(binding = 0, r32ui) writeonly uniform uimage3D uPacked;  // the RGBA8 texture, as 32-bit words
 uniform uint uFrame;
 uniform float uPeriod;

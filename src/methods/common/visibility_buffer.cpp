@@ -48,6 +48,7 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
     maxDeferred_ = std::max<size_t>(size_t(std::max(maxBlock, 0)) / (3 * sizeof(uint32_t)), 1);
     maxCovering_ = std::max<size_t>(size_t(std::max(maxBlock, 0)) / sizeof(uint32_t), 1);
     maxGroupsX_ = size_t(std::max(maxGroups, 1));
+    glProgramUniform1ui(dispatch_.id(), dispatch_.uniform("uMaxGroupsX"), GLuint(maxGroupsX_));  // constant
 }
 
 void VisibilityBuffer::ensureCapacity(size_t triangles) {
@@ -98,7 +99,6 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     glProgramUniform1ui(compute_.id(), compute_.uniform("uDeferredCapacity"), GLuint(deferredCapacity_));
     glProgramUniform1i(compute_.id(), compute_.uniform("uCullBack"), cullBackFaces ? 1 : 0);
     glProgramUniform1i(compute_.id(), compute_.uniform("uCompacted"), compacted ? 1 : 0);
-    glProgramUniform1ui(dispatch_.id(), dispatch_.uniform("uMaxGroupsX"), GLuint(maxGroupsX_));
 
     glBindFramebuffer(GL_FRAMEBUFFER, noAttachments_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);

@@ -6,7 +6,7 @@ namespace flowsurf::methods::hybrid {
 
 namespace {
 constexpr int kRows = 4;   // rows along x per invocation (solid_noise.comp's ROWS)
-constexpr int kGroup = 8;  // its work group: 8 x 8 invocations
+constexpr int kGroup = 8;  // its work group: kGroup x kGroup invocations (GROUP)
 }  // namespace
 
 std::string SolidNoise::defines(int size) {
@@ -16,7 +16,8 @@ std::string SolidNoise::defines(int size) {
 SolidNoise::SolidNoise(int size)
     : size_(size),
       program_(program({{GL_COMPUTE_SHADER, "hybrid/solid_noise.comp"}},
-                       defines(size) + "#define ROWS " + std::to_string(kRows) + "\n")) {
+                       defines(size) + "#define ROWS " + std::to_string(kRows) + "\n#define GROUP " +
+                           std::to_string(kGroup) + "\n")) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     texture_ = gl::Handle<gl::detail::deleteTexture>(id);
