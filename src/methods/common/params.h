@@ -55,6 +55,13 @@ enum class GlPath { Auto, Compute, Fragment };
 // for the image (methods::useComputeRaster), else GL.
 enum class SurfaceRaster { Auto, Gl, Compute };
 
+// How processes that render one view together (sort-last, each with a piece of the
+// surface: the ParaView plugin under MPI) share the image stages. Tiles: each process runs
+// them on its own screen tile plus a guard band, with the buffers merged there only
+// (methods/common/screen_tiles.h). Replicate: every process merges the whole image and
+// runs every stage on all of it (methods/common/process_group.h; the reference).
+enum class ParallelMode { Tiles, Replicate };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
@@ -103,6 +110,7 @@ struct CommonParams {
     bool cullBackFaces = false;
     GlPath glPath = GlPath::Auto;  // per-pixel passes as compute or fragment shaders
     SurfaceRaster surfaceRaster = SurfaceRaster::Auto;  // who rasterises the surface passes
+    ParallelMode parallel = ParallelMode::Tiles;  // image stages over processes (one process: no effect)
 };
 
 // How ISA's texture advection applies the advection mesh (see isa/texture_advection.h).
@@ -191,6 +199,8 @@ inline constexpr EnumNames<GlPath, 3> kGlPathNames{{{GlPath::Auto, "auto"},
 inline constexpr EnumNames<SurfaceRaster, 3> kSurfaceRasterNames{{{SurfaceRaster::Auto, "auto"},
                                                                    {SurfaceRaster::Gl, "gl"},
                                                                    {SurfaceRaster::Compute, "compute"}}};
+inline constexpr EnumNames<ParallelMode, 2> kParallelModeNames{{{ParallelMode::Tiles, "tiles"},
+                                                                 {ParallelMode::Replicate, "replicate"}}};
 // The methods: ISA and IBFVS [L], the hybrid physical/device-space LIC [W]; in the order
 // the viewer cycles through them.
 enum class Method { Isa, Ibfvs, Hybrid };

@@ -36,6 +36,10 @@ public:
     virtual void sumInPlace(std::span<float> values) = 0;
     // Every process's values concatenated in rank order, on every process.
     virtual std::vector<float> gather(std::span<const float> values) = 0;
+    // Personalised all-to-all: `sends[q]` goes to process q (sends[rank()] is not sent; an
+    // empty message is allowed); returns what every process sent to this one, indexed by
+    // sender (the own slot empty). `sends` has size() entries.
+    virtual std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) = 0;
 };
 
 // Replaces `depth` (DEPTH_COMPONENT32F) and each of `layers` (float or half formats with

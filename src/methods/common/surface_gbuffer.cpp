@@ -61,7 +61,7 @@ void SurfaceGBuffer::bindAndClear() {
 
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
     if (surface.vertexTexture() &&
-        useComputeRaster(raster_, renderer_, surface.triangleCount(), size_t(viewport_.width) * viewport_.height)) {
+        useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(), size_t(viewport_.width) * viewport_.height)) {
         renderVisibility(surface, camera);
         return;
     }

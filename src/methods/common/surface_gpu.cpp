@@ -123,7 +123,13 @@ SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::Surfac
     group.minInPlace(box);
     s.bounds.lo = {box[0], box[1], box[2]};
     s.bounds.hi = {-box[3], -box[4], -box[5]};
-    return summarize(s, params);
+    SurfaceStatistics st = summarize(s, params);
+    // The count in two floats, each exact (< 2^24), so that any surface sums exactly.
+    const size_t own = piece.triangleCount();
+    const float parts[2] = {float(own >> 20), float(own & ((size_t(1) << 20) - 1))};
+    const std::vector<float> counts = group.gather(parts);
+    for (size_t i = 0; i + 1 < counts.size(); i += 2) st.triangles += (size_t(counts[i]) << 20) + size_t(counts[i + 1]);
+    return st;
 }
 
 glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
@@ -197,6 +203,7 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
                        bool withEdges, const SurfaceStatistics* whole) {
     std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
     triangles_ = mesh.triangleCount();
+    wholeTriangles_ = whole && whole->triangles ? whole->triangles : triangles_;
     // An empty piece (a process of a parallel render holding no triangles) draws nothing;
     // GL buffers need at least one byte.
     interleaved.resize(std::max<size_t>(interleaved.size(), kVertexFloats));

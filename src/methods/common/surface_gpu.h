@@ -23,6 +23,9 @@ struct SurfaceStatistics {
     glm::vec2 colorRange{0.0f, 1.0f};
     glm::vec2 maskRange{0.0f, 1.0f};  // with CommonParams::maskBy
     core::Bounds bounds;
+    // Triangles of the whole surface (every piece; 0: not counted): what decisions that
+    // change pixels (the surface raster path) are made from, the same on every process.
+    size_t triangles = 0;
 };
 // The per-vertex values the statistics are made of: tangential speed, the colour and mask
 // scalars (when CommonParams names them), and the bounds.
@@ -77,6 +80,9 @@ public:
     const gl::BufferTexture& vertexTexture() const { return vertexTexture_; }
     const gl::BufferTexture& triangleTexture() const { return triangleTexture_; }
     size_t triangleCount() const { return triangles_; }
+    // The whole surface's triangles when this is one piece of it (SurfaceStatistics::
+    // triangles), else triangleCount(): what the raster path is chosen by.
+    size_t wholeTriangleCount() const { return wholeTriangles_; }
     // Largest speed of the advection velocity (after clamping/normalising): sets dt.
     float maxSpeed() const { return maxSpeed_; }
     // Speed above which vectors were clamped (0: none, or normalised instead).
@@ -108,6 +114,7 @@ private:
     gl::Buffer edgeIndices_;
     size_t edgeCount_ = 0;
     size_t triangles_ = 0;
+    size_t wholeTriangles_ = 0;
     float maxSpeed_ = 0.0f;
     float clampSpeed_ = 0.0f;
     float colorSpeedMax_ = 0.0f;

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "methods/common/gl_path.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace flowsurf::methods::hybrid {
@@ -26,6 +27,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // the surface point on the pixel ray at that depth) [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
+    const bool tiled = in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles;
     if (unsteady && in.group)
         throw ConfigError("the hybrid method's unsteady time levels cannot be merged over processes yet; "
                     "render each time step as steady (no time levels) in a parallel render");
@@ -35,7 +37,18 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     if (lastDynamic_) {
         timer_.begin("seed textures");
         seeds_.render(*in.surface, in.camera);
-        if (in.group) seeds_.merge(*in.group);  // the whole surface's seeds
+        if (tiled) {
+            // The whole surface's seeds over this process's tile and the streaks' reach.
+            timer_.begin("tile exchange");
+            if (!tiles_) {
+                tiles_ = std::make_unique<ScreenTiles>(viewport_);
+                tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
+            }
+            const TileLayer layers[] = {{&seeds_.velocity(), &tileVelocity_}};
+            tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
+        } else if (in.group) {
+            seeds_.merge(*in.group);  // the whole surface's seeds
+        }
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
@@ -57,7 +70,8 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
     timer_.begin("particle tracing");
     TracingInput t;
-    t.seeds = &seeds_;
+    t.seedVelocity = tiled ? &tileVelocity_ : &seeds_.velocity();
+    if (tiled) t.pixels = tiles_->tile().empty() ? PixelRect{0, 0, 0, 0} : tiles_->tile();
     t.noise = noise_.texture();
     t.noiseSize = noise_.size();
     t.camera = in.camera;
@@ -72,12 +86,26 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
-    tracing_.apply(t, params_.hybrid, lic_);
+    if (!tiled || !tiles_->tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
+    if (tiled) {
+        // I back to the processes whose fragments cover each pixel of the tile.
+        timer_.begin("tile return");
+        tiles_->returnValues(*in.group, lic_.texture());
+    }
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");
     overlay_.apply(lic_.texture(), seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye);
     timer_.endFrame();
+}
+
+// The farthest a streak reads from its seed, in pixels: half the filter length in steps of
+// stepPx at the seed's distance (|v| <= the reference speed), with room for steps that
+// lengthen on screen where the surface turns toward the eye or lies off the axis, and for
+// the bilinear velocity lookup.
+int HybridRenderer::guardPx() const {
+    const int half = (std::max(1, params_.hybrid.filterLength) - 1) / 2;
+    return int(std::ceil(1.5f * params_.hybrid.stepPx * float(half))) + 4;
 }
 
 }  // namespace flowsurf::methods::hybrid

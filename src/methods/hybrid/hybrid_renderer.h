@@ -7,10 +7,13 @@
 #include "methods/common/frame.h"
 #include "methods/common/overlay.h"
 #include "methods/common/render_targets.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/common/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
+
+#include <memory>
 
 namespace flowsurf::methods::hybrid {
 
@@ -44,6 +47,11 @@ private:
     core::Camera seedCamera_;
     bool haveLevels_ = false;
     TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
+    // parallel = tiles (screen_tiles.h): this process's tile and the seeds' velocity image
+    // merged over it plus the streaks' reach (guardPx); made on the first parallel frame.
+    std::unique_ptr<ScreenTiles> tiles_;
+    gl::Texture2D tileVelocity_;
+    int guardPx() const;
 };
 
 }  // namespace flowsurf::methods::hybrid

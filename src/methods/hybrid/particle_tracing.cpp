@@ -45,23 +45,31 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
     const gl::Program& program = programFor(unsteady, in.lineField);
     program.use();
     setUniforms(program, in, params);
+    const PixelRect r = in.pixels.empty() ? PixelRect{0, 0, in.viewport.width, in.viewport.height} : in.pixels;
     if (compute_) {
         // Every pixel is written (the background with the noise mean): no clear.
+        glUniform2i(program.uniform("uOrigin"), r.x0, r.y0);
+        glUniform2i(program.uniform("uEnd"), r.x1, r.y1);
         glBindImageTexture(0, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glDispatchCompute(GLuint((in.viewport.width + kLocalX - 1) / kLocalX),
-                          GLuint((in.viewport.height + kLocalY - 1) / kLocalY), 1);
+        glDispatchCompute(GLuint((r.width() + kLocalX - 1) / kLocalX), GLuint((r.height() + kLocalY - 1) / kLocalY), 1);
         // The overlay samples I; tests and read-back fetch it.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
         return;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo().id());
     glViewport(0, 0, in.viewport.width, in.viewport.height);
+    const bool part = !in.pixels.empty();
+    if (part) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x0, r.y0, r.width(), r.height());
+    }
     const float gray[4] = {core::kNoiseMean, 0, 0, 1};
     glClearNamedFramebufferfv(target.fbo().id(), GL_COLOR, 0, gray);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (part) glDisable(GL_SCISSOR_TEST);
 }
 
 void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput& in, const HybridParams& params) const {
@@ -98,7 +106,7 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     glUniform3fv(program.uniform("uForward"), 1, glm::value_ptr(forward));
     glUniform3fv(program.uniform("uRayRight"), 1, glm::value_ptr(right * halfWidth));
     glUniform3fv(program.uniform("uRayUp"), 1, glm::value_ptr(up * halfHeight));
-    glBindTextureUnit(0, in.seeds->velocity().id());
+    glBindTextureUnit(0, in.seedVelocity->id());
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
     if (unsteady) {
         glBindTextureUnit(1, in.velocityLevels);
@@ -107,7 +115,7 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
         glUniform1f(program.uniform("uTimePerStep"), in.timePerStep);
         glUniform1f(program.uniform("uVelocityScale"), speed);
     } else {
-        glBindTextureUnit(1, in.seeds->velocity().id());
+        glBindTextureUnit(1, in.seedVelocity->id());
     }
     glBindImageTexture(kNoiseImageUnit, in.noise, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA8);
 }

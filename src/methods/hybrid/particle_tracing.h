@@ -10,6 +10,7 @@
 #include "gl/objects.h"
 #include "methods/common/params.h"
 #include "methods/common/render_targets.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/common/surface_gbuffer.h"
 
 #include <string>
@@ -18,7 +19,12 @@
 namespace flowsurf::methods::hybrid {
 
 struct TracingInput {
-    const SurfaceGBuffer* seeds = nullptr;  // velocity image; the seed positions come from its layer depth
+    // The seeds' velocity image (SurfaceGBuffer::velocity, or its merge over a screen tile):
+    // the seed positions come from its layer depth.
+    const gl::Texture2D* seedVelocity = nullptr;
+    // The pixels to trace (a parallel render's tile); empty: the whole viewport. Pixels
+    // outside keep what the target held.
+    PixelRect pixels;
     GLuint noise = 0;          // 3D texture
     int noiseSize = 64;
     core::Camera camera;

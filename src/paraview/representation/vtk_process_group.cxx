@@ -3,10 +3,13 @@
 #include "core/errors.h"
 
 #include "vtkCommunicator.h"
+#include "vtkMPICommunicator.h"
+#include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 
 #include <memory>
 #include <numeric>
+#include <string>
 
 namespace flowsurf::paraview {
 
@@ -68,6 +71,62 @@ std::vector<float> VtkProcessGroup::gather(std::span<const float> values)
   check(controller_->AllGatherV(values.data(), all.data(), mine, lengths.data(), offsets.data()),
     "gather of statistics");
   return all;
+}
+
+std::vector<std::vector<uint8_t>> VtkProcessGroup::exchange(const std::vector<std::vector<uint8_t>>& sends)
+{
+  auto* mpi = vtkMPIController::SafeDownCast(controller_);
+  if (!mpi)
+  {
+    throw Error("FlowSurf: the tiled parallel mode needs ParaView's MPI controller; set FlowSurfParallel to "
+                "replicate");
+  }
+  const int n = this->size(), me = this->rank();
+  if (int(sends.size()) != n)
+  {
+    throw Error("FlowSurf: a tile exchange was given " + std::to_string(sends.size()) + " messages for " +
+      std::to_string(n) + " processes");
+  }
+  // Every process's message lengths (a P x P matrix), then the messages themselves.
+  std::vector<int> mine(static_cast<size_t>(n)), all(static_cast<size_t>(n) * static_cast<size_t>(n));
+  for (int q = 0; q < n; ++q)
+  {
+    mine[size_t(q)] = q == me ? 0 : int(sends[size_t(q)].size());
+  }
+  check(controller_->AllGather(mine.data(), all.data(), n), "gather of message lengths");
+  constexpr int kTag = 7841;
+  std::vector<std::vector<uint8_t>> received(static_cast<size_t>(n));
+  std::vector<vtkMPICommunicator::Request> requests;
+  requests.reserve(2 * static_cast<size_t>(n));
+  for (int q = 0; q < n; ++q)
+  {
+    const int length = all[size_t(q) * size_t(n) + size_t(me)];
+    if (q == me || length == 0)
+    {
+      continue;
+    }
+    received[size_t(q)].resize(size_t(length));
+    requests.emplace_back();
+    check(mpi->NoBlockReceive(reinterpret_cast<char*>(received[size_t(q)].data()), length, q, kTag,
+            requests.back()),
+      "tile exchange (receive)");
+  }
+  for (int q = 0; q < n; ++q)
+  {
+    if (q == me || sends[size_t(q)].empty())
+    {
+      continue;
+    }
+    requests.emplace_back();
+    check(mpi->NoBlockSend(reinterpret_cast<const char*>(sends[size_t(q)].data()), int(sends[size_t(q)].size()), q,
+            kTag, requests.back()),
+      "tile exchange (send)");
+  }
+  for (auto& r : requests)
+  {
+    r.Wait();
+  }
+  return received;
 }
 
 bool VtkProcessGroup::any(bool flag)

@@ -20,6 +20,8 @@ public:
   void minInPlace(std::span<int32_t> values) override;
   void sumInPlace(std::span<float> values) override;
   std::vector<float> gather(std::span<const float> values) override;
+  // Non-blocking point-to-point messages of ParaView's MPI controller.
+  std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) override;
   // True on every process if `flag` is true on any (a collective decision).
   bool any(bool flag);
 

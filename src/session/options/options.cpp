@@ -326,6 +326,9 @@ std::vector<OptionSpec> buildTable() {
                "renderer); auto picks compute on llvmpipe when triangles >= " +
                    formatDouble(methods::kComputeRasterTrianglesPerPixel) + " x pixels",
                methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)));
+    add(choice("parallel", gMethod, "Several processes on one view (ParaView under MPI): tiles (each runs the "
+               "image stages on its own screen tile) or replicate (each runs them on the whole image); the same "
+               "image", methods::kParallelModeNames, FS_REF(params.common.parallel)));
     add(flag("edge-mask", gMethod, "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)));
     add(choice("on-camera-move", gMethod, "When the camera moves: translate (reproject the texture with the "
                "surface), freeze, none [L §IV-I]", methods::kCameraMoveNames, FS_REF(params.common.onCameraMove)));

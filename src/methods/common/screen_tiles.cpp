@@ -1,0 +1,327 @@
+#include "methods/common/screen_tiles.h"
+
+#include "core/errors.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace flowsurf::methods {
+
+namespace {
+
+// A pixel's bytes as the texture stores them (floats, halves or depth as float).
+struct PixelFormat {
+    GLenum format, type;
+    size_t bytes;
+    bool depth;
+};
+
+PixelFormat pixelFormatOf(GLenum internalFormat) {
+    switch (internalFormat) {
+        case GL_DEPTH_COMPONENT32F: return {GL_DEPTH_COMPONENT, GL_FLOAT, 4, true};
+        case GL_R32F: return {GL_RED, GL_FLOAT, 4, false};
+        case GL_RG32F: return {GL_RG, GL_FLOAT, 8, false};
+        case GL_RGBA32F: return {GL_RGBA, GL_FLOAT, 16, false};
+        case GL_R16F: return {GL_RED, GL_HALF_FLOAT, 2, false};
+        case GL_RG16F: return {GL_RG, GL_HALF_FLOAT, 4, false};
+        case GL_RGBA16F: return {GL_RGBA, GL_HALF_FLOAT, 8, false};
+        default:
+            throw GlError("screen tiles: texture format " + std::to_string(internalFormat) +
+                          " cannot be exchanged (float, half or depth formats only)");
+    }
+}
+
+void readRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, void* out) {
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureSubImage(t.id(), 0, r.x0, r.y0, 0, r.width(), r.height(), 1, f.format, f.type,
+                         GLsizei(r.area() * f.bytes), out);
+}
+
+void writeRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, const void* in) {
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(t.id(), 0, r.x0, r.y0, r.width(), r.height(), f.format, f.type, in);
+}
+
+// Messages are plain byte strings: a writer and a reader of fixed-size values.
+struct Writer {
+    std::vector<uint8_t>& out;
+    void put(const void* p, size_t n) {
+        const auto* b = static_cast<const uint8_t*>(p);
+        out.insert(out.end(), b, b + n);
+    }
+    void rect(const PixelRect& r) {
+        const int32_t v[4] = {r.x0, r.y0, r.x1, r.y1};
+        put(v, sizeof v);
+    }
+};
+
+struct Reader {
+    const std::vector<uint8_t>& in;
+    size_t at = 0;
+    const uint8_t* take(size_t n) {
+        if (at + n > in.size()) throw GlError("screen tiles: a message from another process is truncated");
+        const uint8_t* p = in.data() + at;
+        at += n;
+        return p;
+    }
+    PixelRect rect() {
+        int32_t v[4];
+        std::memcpy(v, take(sizeof v), sizeof v);
+        return {v[0], v[1], v[2], v[3]};
+    }
+};
+
+// Recursive bisection of the cell rectangle [cx0, cx1) x [cy0, cy1) into `parts`.
+void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int cy1, int parts,
+           std::vector<std::array<int, 4>>& out) {
+    if (parts == 1) {
+        out.push_back({cx0, cy0, cx1, cy1});
+        return;
+    }
+    const int first = parts / 2;
+    const bool alongX = (cx1 - cx0) >= (cy1 - cy0);
+    const int lo = alongX ? cx0 : cy0, hi = alongX ? cx1 : cy1;
+    // The weight of each slice across the cut direction.
+    std::vector<double> slice(size_t(std::max(0, hi - lo)), 0.0);
+    for (int y = cy0; y < cy1; ++y)
+        for (int x = cx0; x < cx1; ++x) slice[size_t((alongX ? x : y) - lo)] += w[size_t(y) * size_t(cellsX) + size_t(x)];
+    double total = 0;
+    for (double s : slice) total += s;
+    const double target = total * double(first) / double(parts);
+    // The cut c (lo < c < hi where possible) whose weight below is nearest the target.
+    int cut = lo + (hi - lo) * first / parts;
+    if (total > 0) {
+        double below = 0, best = -1;
+        for (int c = lo + 1; c < hi; ++c) {
+            below += slice[size_t(c - 1 - lo)];
+            const double miss = std::abs(below - target);
+            if (best < 0 || miss < best) best = miss, cut = c;
+        }
+    }
+    if (hi - lo >= 2) cut = std::clamp(cut, lo + 1, hi - 1);
+    if (alongX) {
+        split(w, cellsX, cx0, cy0, cut, cy1, first, out);
+        split(w, cellsX, cut, cy0, cx1, cy1, parts - first, out);
+    } else {
+        split(w, cellsX, cx0, cy0, cx1, cut, first, out);
+        split(w, cellsX, cx0, cut, cx1, cy1, parts - first, out);
+    }
+}
+
+}  // namespace
+
+std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
+                                   int width, int height, int parts) {
+    if (cellWeights.size() != size_t(cellsX) * size_t(cellsY))
+        throw GlError("splitScreen: " + std::to_string(cellWeights.size()) + " weights for " + std::to_string(cellsX) +
+                      " x " + std::to_string(cellsY) + " cells");
+    std::vector<std::array<int, 4>> cells;
+    split(cellWeights, cellsX, 0, 0, cellsX, cellsY, std::max(1, parts), cells);
+    std::vector<PixelRect> rects;
+    for (const auto& c : cells)
+        rects.push_back({std::min(c[0] * cellPx, width), std::min(c[1] * cellPx, height), std::min(c[2] * cellPx, width),
+                         std::min(c[3] * cellPx, height)});
+    return rects;
+}
+
+ScreenTiles::ScreenTiles(const core::Viewport& viewport) : viewport_(viewport) {}
+
+void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers,
+                             int guardPx) {
+    const int n = group.size(), me = group.rank();
+    const int w = viewport_.width, h = viewport_.height;
+    rank_ = me;
+    traffic_ = {};
+    std::vector<PixelFormat> formats;
+    size_t layerBytes = 0;
+    for (const TileLayer& l : layers) {
+        if (l.local->width() != w || l.local->height() != h || l.tile->width() != w || l.tile->height() != h)
+            throw GlError("screen tiles: a layer is not the size of the view");
+        if (l.local->format() != l.tile->format()) throw GlError("screen tiles: a layer's tile texture has another format");
+        formats.push_back(pixelFormatOf(l.local->format()));
+        layerBytes += formats.back().bytes;
+    }
+
+    // This piece's depth and its covered rectangle; the coverage per cell, summed.
+    const PixelRect full{0, 0, w, h};
+    depth_.resize(full.area());
+    readRect(depth, full, pixelFormatOf(GL_DEPTH_COMPONENT32F), depth_.data());
+    const int cellsX = (w + kCellPx - 1) / kCellPx, cellsY = (h + kCellPx - 1) / kCellPx;
+    std::vector<float> weight(size_t(cellsX) * size_t(cellsY), 0.0f);
+    PixelRect covered{w, h, 0, 0};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) {
+                weight[size_t(y / kCellPx) * size_t(cellsX) + size_t(x / kCellPx)] += 1.0f;
+                covered = {std::min(covered.x0, x), std::min(covered.y0, y), std::max(covered.x1, x + 1),
+                           std::max(covered.y1, y + 1)};
+            }
+    group.sumInPlace(weight);  // counts: exact in float, the same sum on every process
+    // The image stages cost mostly per surface pixel; a little per pixel keeps empty
+    // screen parts from collapsing into one tile.
+    for (size_t c = 0; c < weight.size(); ++c) weight[c] += 0.05f * float(kCellPx * kCellPx);
+    tiles_ = splitScreen(weight, cellsX, cellsY, kCellPx, w, h, n);
+    const PixelRect previous = region_;
+    region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect(full);
+
+    // This piece's layers over its covered rectangle.
+    std::vector<std::vector<uint8_t>> local(layers.size());
+    if (!covered.empty())
+        for (size_t i = 0; i < layers.size(); ++i) {
+            local[i].resize(covered.area() * formats[i].bytes);
+            readRect(*layers[i].local, covered, formats[i], local[i].data());
+        }
+
+    // Messages: to each tile's owner, this piece over that tile plus guard: the rectangle,
+    // the depth of each pixel, then every layer's bytes at each covered pixel.
+    sent_.assign(size_t(n), PixelRect{});
+    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    for (int t = 0; t < n; ++t) {
+        const PixelRect& tt = tiles_[size_t(t)];
+        const PixelRect r = tt.empty() ? PixelRect{} : tt.grown(guardPx).intersect(full).intersect(covered);
+        sent_[size_t(t)] = r.empty() ? PixelRect{} : r;
+        if (t == me || r.empty()) continue;
+        std::vector<uint8_t>& out = sends[size_t(t)];
+        Writer wr{out};
+        wr.rect(r);
+        for (int y = r.y0; y < r.y1; ++y) wr.put(&depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * 4);
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) {
+                if (!(depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f)) continue;
+                const size_t at = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
+                for (size_t i = 0; i < layers.size(); ++i) wr.put(&local[i][at * formats[i].bytes], formats[i].bytes);
+            }
+        traffic_.bytesSent += out.size();
+    }
+    std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+
+    // The merge over the region, in rank order: a strictly nearer fragment wins, so on a tie
+    // the lowest rank keeps the pixel (as mergeByDepth).
+    const PixelRect& R = region_;
+    std::vector<float> best(R.area(), 1.0f);
+    std::vector<std::vector<uint8_t>> merged(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i) {
+        merged[i].assign(R.area() * formats[i].bytes, 0);
+        if (formats[i].depth)
+            for (size_t p = 0; p < R.area(); ++p) std::memcpy(&merged[i][p * 4], &best[p], 4);
+    }
+    received_.assign(size_t(n), PixelRect{});
+    receivedDepth_.assign(size_t(n), {});
+    for (int q = 0; q < n; ++q) {
+        PixelRect r;
+        const float* qDepth = nullptr;
+        const uint8_t* qValues = nullptr;  // q's covered pixels' layer bytes, in order
+        std::vector<float>& keep = receivedDepth_[size_t(q)];
+        if (q == me) {
+            r = sent_[size_t(me)];
+        } else {
+            if (in[size_t(q)].empty()) continue;
+            traffic_.bytesReceived += in[size_t(q)].size();
+            Reader rd{in[size_t(q)]};
+            r = rd.rect();
+            if (r.empty() || !(r.intersect(R) == r))
+                throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
+            keep.resize(r.area());
+            std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
+            qDepth = keep.data();
+            qValues = rd.in.data() + rd.at;
+        }
+        received_[size_t(q)] = r;
+        if (r.empty()) continue;
+        size_t k = 0;  // q's covered pixels so far
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) {
+                const float d = q == me ? depth_[size_t(y) * size_t(w) + size_t(x)]
+                                        : qDepth[size_t(y - r.y0) * size_t(r.width()) + size_t(x - r.x0)];
+                if (!(d < 1.0f)) continue;
+                const size_t p = size_t(y - R.y0) * size_t(R.width()) + size_t(x - R.x0);
+                const uint8_t* src = nullptr;
+                if (q != me) {
+                    if (qValues + (k + 1) * layerBytes > in[size_t(q)].data() + in[size_t(q)].size())
+                        throw GlError("screen tiles: a message from process " + std::to_string(q) + " is truncated");
+                    src = qValues + k * layerBytes;
+                }
+                ++k;
+                if (!(d < best[p])) continue;
+                best[p] = d;
+                const size_t at = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
+                for (size_t i = 0; i < layers.size(); ++i) {
+                    const uint8_t* from = q == me ? &local[i][at * formats[i].bytes] : src;
+                    std::memcpy(&merged[i][p * formats[i].bytes], from, formats[i].bytes);
+                    if (q != me) src += formats[i].bytes;
+                }
+            }
+        if (q == me) keep.clear();
+    }
+
+    // Upload; what the last region held and this one does not is cleared.
+    for (size_t i = 0; i < layers.size(); ++i) {
+        const PixelFormat& f = formats[i];
+        if (!previous.empty() && !(previous == R)) {
+            const float one = 1.0f;
+            glClearTexSubImage(layers[i].tile->id(), 0, previous.x0, previous.y0, 0, previous.width(), previous.height(), 1,
+                               f.format, GL_FLOAT, f.depth ? &one : nullptr);
+        }
+        if (!R.empty()) writeRect(*layers[i].tile, R, f, merged[i].data());
+    }
+    traffic_.tilePixels = tile().area();
+    traffic_.guardPixels = R.area() - tile().area();
+    for (float d : best) traffic_.coveredPixels += d < 1.0f;
+}
+
+void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values) {
+    const int n = group.size(), me = group.rank();
+    const int w = viewport_.width;
+    if (!ready() || n != int(tiles_.size())) throw GlError("screen tiles: values returned before the tiles were made");
+    const PixelFormat f = pixelFormatOf(values.format());
+    if (f.bytes != 4 || f.type != GL_FLOAT) throw GlError("screen tiles: returned values must be R32F");
+    const PixelRect& T = tile();
+    std::vector<float> mine(T.area());
+    if (!T.empty()) readRect(values, T, f, mine.data());
+
+    // To each process q, the values at the pixels of this tile that q covers, in row order.
+    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    for (int q = 0; q < n; ++q) {
+        if (q == me) continue;
+        const PixelRect r = received_[size_t(q)].intersect(T);
+        if (r.empty()) continue;
+        const PixelRect& qr = received_[size_t(q)];
+        const std::vector<float>& qd = receivedDepth_[size_t(q)];
+        Writer wr{sends[size_t(q)]};
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x)
+                if (qd[size_t(y - qr.y0) * size_t(qr.width()) + size_t(x - qr.x0)] < 1.0f)
+                    wr.put(&mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)], 4);
+        traffic_.bytesSent += sends[size_t(q)].size();
+    }
+    std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+
+    // This process's covered pixels: its own tile's values, then every other owner's in the
+    // order that owner wrote them.
+    PixelRect covered{w, viewport_.height, 0, 0};
+    for (const PixelRect& r : sent_)
+        if (!r.empty())
+            covered = {std::min(covered.x0, r.x0), std::min(covered.y0, r.y0), std::max(covered.x1, r.x1),
+                       std::max(covered.y1, r.y1)};
+    if (covered.empty()) return;
+    values_.assign(covered.area(), 0.0f);
+    for (int t = 0; t < n; ++t) {
+        const PixelRect r = sent_[size_t(t)].intersect(tiles_[size_t(t)]);
+        if (r.empty()) continue;
+        Reader rd{in[size_t(t)]};
+        if (t != me) traffic_.bytesReceived += in[size_t(t)].size();
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) {
+                if (!(depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f)) continue;
+                float v;
+                if (t == me) v = mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)];
+                else std::memcpy(&v, rd.take(4), 4);
+                values_[size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0)] = v;
+            }
+    }
+    writeRect(values, covered, f, values_.data());
+}
+
+}  // namespace flowsurf::methods

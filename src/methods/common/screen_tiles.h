@@ -1,0 +1,117 @@
+// flowsurf — sort-last parallel rendering with the image stages divided over the processes
+// by screen tiles (CommonParams::parallel = tiles; process_group.h's mergeByDepth is the
+// replicated reference). Each process renders its piece of the surface into its per-pixel
+// buffers as at one process; then, per dynamic frame:
+//   split   every process's coverage (16 x 16-pixel cells, summed over the group) is cut
+//           into one rectangle per process by weighted recursive bisection, the same on
+//           every process (no broadcast): the tile where that process runs the image stages;
+//   gather  every process sends each tile's owner its buffers over the tile plus a guard
+//           band (what the stages read around the tile: the method's own reach), and the
+//           owner merges them by depth, the nearest fragment winning (on a tie the lowest
+//           rank), so its buffers over the tile and guard equal the one-process buffers;
+// and every frame:
+//   return  the owner sends the image stage's result (R32F) at each pixel of its tile back
+//           to every process whose piece covers that pixel, which overlays and composites
+//           its own fragments with its own shade, mask and depth; the host's depth
+//           compositing (ParaView's IceT) keeps the nearest, as for any surface.
+// The result at every pixel equals the one-process image as long as the stages read no
+// further than the guard (the methods derive it from their parameters).
+// The idea of screen-space decomposition with guard pixels for a parallel surface LIC is
+// Loring, Karimabadi & Bethel (LBNL 2014); the weighted split and the return of every
+// value to the process whose fragment won are flowsurf's.
+// Cost per dynamic frame and process: one read-back of depth (4 B/px) and of the layers
+// over the piece's covered rectangle; messages of 4 B per pixel of tile plus guard and the
+// layers' bytes per covered pixel; per frame 4 B per covered pixel back.
+#pragma once
+
+#include "core/camera.h"
+#include "gl/objects.h"
+#include "methods/common/process_group.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace flowsurf::methods {
+
+// A pixel rectangle [x0, x1) x [y0, y1) in GL's image coordinates (rows bottom-up).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return std::max(0, x1 - x0); }
+    int height() const { return std::max(0, y1 - y0); }
+    bool empty() const { return width() == 0 || height() == 0; }
+    size_t area() const { return size_t(width()) * size_t(height()); }
+    PixelRect intersect(const PixelRect& o) const {
+        return {std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
+    }
+    PixelRect grown(int g) const { return {x0 - g, y0 - g, x1 + g, y1 + g}; }
+    bool operator==(const PixelRect&) const = default;
+};
+
+// `parts` rectangles that together cover width x height, of about equal weight: the
+// weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut
+// recursively across the longer side at the cell boundary nearest the weight's share.
+// The same weights give the same rectangles on every process. Rectangles can be empty
+// when there are more parts than cells.
+std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
+                                   int width, int height, int parts);
+
+// One of the per-pixel buffers an image stage reads: this process's own render (`local`,
+// float or half formats with 1-4 channels, or DEPTH32F) and the full-size texture of the
+// same format the tile's merge goes into (`tile`).
+struct TileLayer {
+    const gl::Texture2D* local = nullptr;
+    const gl::Texture2D* tile = nullptr;
+};
+
+// What the tiles cost this process in the last frame (FLOWSURF_RANK_STATS).
+struct TileTraffic {
+    size_t bytesSent = 0, bytesReceived = 0;
+    size_t tilePixels = 0, coveredPixels = 0, guardPixels = 0;
+};
+
+class ScreenTiles {
+public:
+    static constexpr int kCellPx = 16;
+
+    explicit ScreenTiles(const core::Viewport& viewport);
+
+    // Collective, on a dynamic frame, after every process rendered its piece into `depth`
+    // (DEPTH32F) and the layers' `local` textures: splits the screen and fills every
+    // layer's `tile` over this process's tile plus `guardPx` (region()) with the whole
+    // surface's buffers there, merged by depth (zero off the surface). The depth layer, if
+    // one is wanted merged, is a layer like the others (its background 1).
+    void distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers, int guardPx);
+
+    // Collective, every frame after the image stage: `values` (R32F, full size) holds the
+    // stage's result over this process's tile; afterwards it holds at every pixel that this
+    // process's piece covers (its `depth` < 1 in distribute) the value computed there by
+    // the tile's owner. Other pixels are left undefined.
+    void returnValues(ProcessGroup& group, const gl::Texture2D& values);
+
+    // This process's tile (where its image stages run) and the tile plus guard.
+    const PixelRect& tile() const { return tiles_[size_t(rank_)]; }
+    const PixelRect& region() const { return region_; }
+    const std::vector<PixelRect>& tiles() const { return tiles_; }
+    bool ready() const { return !tiles_.empty(); }
+    TileTraffic& traffic() { return traffic_; }
+
+private:
+    core::Viewport viewport_;
+    int rank_ = 0;
+    std::vector<PixelRect> tiles_;          // every process's tile
+    PixelRect region_;                      // this process's tile plus guard, in the viewport
+    std::vector<float> depth_;              // this process's own depth (full image, bottom-up)
+    // This process's message to tile owner t covered sent_[t] (its coverage there is depth_).
+    std::vector<PixelRect> sent_;
+    // What process q sent this one: its rectangle and its depth there (the return trip
+    // sends q the values where q's depth < 1).
+    std::vector<PixelRect> received_;
+    std::vector<std::vector<float>> receivedDepth_;
+    std::vector<float> values_;             // scratch for returnValues
+    TileTraffic traffic_;
+};
+
+}  // namespace flowsurf::methods
