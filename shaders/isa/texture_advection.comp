@@ -3,9 +3,11 @@
 #include "isa/texture_advection.glsl"
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
+uniform ivec2 uOrigin;  // the pixels written: [uOrigin, uEnd) (a parallel render's tile)
+uniform ivec2 uEnd;
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(uNextFlow)))) return;
+    ivec2 p = uOrigin + ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, uEnd))) return;
     vec2 px = vec2(p) + 0.5;  // pixel centre, as gl_FragCoord
     vec4 m = meshAtPixel(px);
     imageStore(uNextFlow, p, vec4(advectedFlow(px, m.xy, m.z)));

@@ -2,6 +2,8 @@
 
 #include "core/errors.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -204,8 +206,19 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     std::vector<std::vector<uint8_t>> merged(layers.size());
     for (size_t i = 0; i < layers.size(); ++i) {
         merged[i].assign(R.area() * formats[i].bytes, 0);
-        if (formats[i].depth)
-            for (size_t p = 0; p < R.area(); ++p) std::memcpy(&merged[i][p * 4], &best[p], 4);
+        const float fill = formats[i].depth ? 1.0f : layers[i].fill;
+        if (fill != 0.0f) {
+            const size_t channels = formats[i].depth ? 1 : formats[i].bytes / (formats[i].type == GL_FLOAT ? 4 : 2);
+            std::vector<uint8_t> pixel(formats[i].bytes);
+            for (size_t c = 0; c < channels; ++c) {
+                if (formats[i].type == GL_FLOAT) std::memcpy(&pixel[c * 4], &fill, 4);
+                else {
+                    const uint16_t half = glm::packHalf1x16(fill);
+                    std::memcpy(&pixel[c * 2], &half, 2);
+                }
+            }
+            for (size_t p = 0; p < R.area(); ++p) std::memcpy(&merged[i][p * formats[i].bytes], pixel.data(), pixel.size());
+        }
     }
     received_.assign(size_t(n), PixelRect{});
     receivedDepth_.assign(size_t(n), {});
@@ -259,16 +272,40 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     // Upload; what the last region held and this one does not is cleared.
     for (size_t i = 0; i < layers.size(); ++i) {
         const PixelFormat& f = formats[i];
-        if (!previous.empty() && !(previous == R)) {
-            const float one = 1.0f;
+        if (!previous.empty() && !(previous == R) && layers[i].tile != layers[i].local) {
+            const float fill = f.depth ? 1.0f : layers[i].fill;
+            const float value[4] = {fill, fill, fill, fill};
             glClearTexSubImage(layers[i].tile->id(), 0, previous.x0, previous.y0, 0, previous.width(), previous.height(), 1,
-                               f.format, GL_FLOAT, f.depth ? &one : nullptr);
+                               f.format, GL_FLOAT, value);
         }
         if (!R.empty()) writeRect(*layers[i].tile, R, f, merged[i].data());
     }
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
     for (float d : best) traffic_.coveredPixels += d < 1.0f;
+}
+
+void ScreenTiles::shareTiles(ProcessGroup& group, const gl::Texture2D& texture) {
+    const int n = group.size(), me = group.rank();
+    if (!ready() || n != int(tiles_.size())) throw GlError("screen tiles: tiles shared before they were made");
+    const PixelFormat f = pixelFormatOf(texture.format());
+    std::vector<uint8_t> mine(tile().area() * f.bytes);
+    if (!tile().empty()) readRect(texture, tile(), f, mine.data());
+    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    for (int q = 0; q < n; ++q)
+        if (q != me) {
+            sends[size_t(q)] = mine;
+            traffic_.bytesSent += mine.size();
+        }
+    const std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+    for (int t = 0; t < n; ++t) {
+        const PixelRect& r = tiles_[size_t(t)];
+        if (t == me || r.empty()) continue;
+        if (in[size_t(t)].size() != r.area() * f.bytes)
+            throw GlError("screen tiles: process " + std::to_string(t) + " sent a tile of another size");
+        traffic_.bytesReceived += in[size_t(t)].size();
+        writeRect(texture, r, f, in[size_t(t)].data());
+    }
 }
 
 void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values) {

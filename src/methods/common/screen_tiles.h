@@ -9,11 +9,15 @@
 //           band (what the stages read around the tile: the method's own reach), and the
 //           owner merges them by depth, the nearest fragment winning (on a tie the lowest
 //           rank), so its buffers over the tile and guard equal the one-process buffers;
-// and every frame:
+// and every frame, for the hybrid (its image stage's output feeds the overlay only):
 //   return  the owner sends the image stage's result (R32F) at each pixel of its tile back
 //           to every process whose piece covers that pixel, which overlays and composites
 //           its own fragments with its own shade, mask and depth; the host's depth
 //           compositing (ParaView's IceT) keeps the nearest, as for any surface.
+// or, for ISA and IBFVS (whose F_a is next frame's input, read at the advected coordinates
+// anywhere in the image, and whose depth is the edge test's source depth):
+//   share   every owner's tile of F_a (and, on a new view, of the merged depth) goes to every
+//           process, so each overlays its own fragments and advects from the whole image.
 // The result at every pixel equals the one-process image as long as the stages read no
 // further than the guard (the methods derive it from their parameters).
 // The idea of screen-space decomposition with guard pixels for a parallel surface LIC is
@@ -60,10 +64,12 @@ std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cells
 
 // One of the per-pixel buffers an image stage reads: this process's own render (`local`,
 // float or half formats with 1-4 channels, or DEPTH32F) and the full-size texture of the
-// same format the tile's merge goes into (`tile`).
+// same format the tile's merge goes into (`tile`; it may be `local` itself). `fill`: every
+// channel off the surface (a depth layer's is 1).
 struct TileLayer {
     const gl::Texture2D* local = nullptr;
     const gl::Texture2D* tile = nullptr;
+    float fill = 0.0f;
 };
 
 // What the tiles cost this process in the last frame (FLOWSURF_RANK_STATS).
@@ -90,6 +96,11 @@ public:
     // process's piece covers (its `depth` < 1 in distribute) the value computed there by
     // the tile's owner. Other pixels are left undefined.
     void returnValues(ProcessGroup& group, const gl::Texture2D& values);
+
+    // Collective: every process's tile of `texture` (full size; float, half or depth) to
+    // every other process, so that each holds the whole image: the history ISA and IBFVS
+    // advect from (any source coordinate, any camera motion, freeze and a new split alike).
+    void shareTiles(ProcessGroup& group, const gl::Texture2D& texture);
 
     // This process's tile (where its image stages run) and the tile plus guard.
     const PixelRect& tile() const { return tiles_[size_t(rank_)]; }

@@ -39,8 +39,19 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
                             c.cullBackFaces, noise);
     current_ = target;
     // Parallel: the whole surface's advected texture on every process, which is also the
-    // next frame's source (the texture lives in the image).
-    if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
+    // next frame's source (the texture lives in the image). Tiles: each process merges its
+    // tile by depth, then every tile goes to every process; shade, mask and depth stay
+    // this piece's (its own fragments are what it composites).
+    if (in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles) {
+        timer_.begin("tile exchange");
+        if (!tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
+        const gl::Texture2D& fa = flow_.texture(target);
+        const TileLayer layers[] = {{&fa, &fa, params_.ibfvs.flowBackground}};
+        tiles_->distribute(*in.group, depth_, layers, 0);
+        tiles_->shareTiles(*in.group, fa);
+    } else if (in.group) {
+        mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
+    }
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");

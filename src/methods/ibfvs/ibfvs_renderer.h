@@ -7,8 +7,11 @@
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
 #include "methods/common/render_targets.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
+
+#include <memory>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -37,6 +40,7 @@ private:
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
     bool lastDynamic_ = false;
+    std::unique_ptr<ScreenTiles> tiles_;  // parallel = tiles (screen_tiles.h)
 };
 
 }  // namespace flowsurf::methods::ibfvs

@@ -2,6 +2,8 @@
 
 #include "methods/common/gl_path.h"
 
+#include <algorithm>
+
 namespace flowsurf::methods::isa {
 
 IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
@@ -37,8 +39,13 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);
+    const bool tiled = in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles;
+    // The depth of the whole surface per velocity image: merged (tiles) or this render's.
+    const auto depthOf = [&](int v) -> const gl::Texture2D& {
+        return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
+    };
     if (plan.freezeStarts)  // keep where the frozen texture was made
-        glCopyImageSubData(velocityImage_[vi_].depth().id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
+        glCopyImageSubData(depthOf(vi_).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
                            GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
@@ -53,16 +60,32 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
             // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
             timer_.begin("velocity image");
             velocityImage_[vi_].render(*in.surface, in.camera);
-            if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+            if (tiled) {
+                // The whole surface's velocity over this tile plus a grid cell, its depth
+                // everywhere.
+                timer_.begin("tile exchange");
+                if (!tiles_) {
+                    tiles_ = std::make_unique<ScreenTiles>(viewport_);
+                    tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
+                    for (gl::Texture2D& d : mergedDepth_)
+                        d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+                }
+                const SurfaceGBuffer& v = velocityImage_[vi_];
+                const TileLayer layers[] = {{&v.velocity(), &tileVelocity_}, {&v.depth(), &mergedDepth_[vi_]}};
+                tiles_->distribute(*in.group, v.depth(), layers, guardPx());
+                tiles_->shareTiles(*in.group, mergedDepth_[vi_]);
+            } else if (in.group) {
+                velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+            }
         }
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");
         const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
         const gl::Texture2D& sourceDepth = !plan.advect ? frozenDepth_
-                                          : sameView    ? velocityImage_[vi_].depth()
-                                                        : velocityImage_[prevVi].depth();
-        advectionMesh_.compute(velocityImage_[vi_].velocity(), velocityImage_[vi_].depth(), sourceDepth, in.camera,
+                                          : sameView    ? depthOf(vi_)
+                                                        : depthOf(prevVi);
+        advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth, in.camera,
                                plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
                                params_.isa.edgeEpsilon);
         haveCache_ = true;
@@ -77,14 +100,27 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), vel.depth(), flow_.texture(target),
-                            flow_.fbo(target), params_.isa.edgeBlending, noise);
+    if (!tiled || !tiles_->tile().empty())
+        textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
+                                flow_.fbo(target), params_.isa.edgeBlending, noise, tiled ? tiles_->tile() : PixelRect{});
     current_ = target;
+    if (tiled) {
+        timer_.begin("tile exchange");  // F_a whole on every process: next frame's source
+        tiles_->shareTiles(*in.group, flow_.texture(target));
+    }
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
     overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye);
     timer_.endFrame();
+}
+
+// How far beyond its tile a process reads the velocity image: the per-pixel warp
+// interpolates the advection mesh's four vertices around each pixel, and a vertex reads the
+// texel under it: one grid cell and a pixel.
+int IsaRenderer::guardPx() const {
+    const int cell = (std::max(viewport_.width, viewport_.height) + params_.isa.gridRes - 1) / params_.isa.gridRes;
+    return cell + 2;
 }
 
 }  // namespace flowsurf::methods::isa

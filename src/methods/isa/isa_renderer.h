@@ -8,7 +8,10 @@
 #include "methods/common/render_targets.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/common/surface_gbuffer.h"
+
+#include <memory>
 
 namespace flowsurf::methods::isa {
 
@@ -47,6 +50,14 @@ private:
     core::Camera cachedCamera_, cachedSourceCamera_;
     bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
+    // parallel = tiles (screen_tiles.h): this process advects its own tile. The velocity
+    // image merged over the tile plus one grid cell (the mesh vertices it interpolates),
+    // the whole surface's depth per velocity image (the edge test's source depth is read
+    // wherever the flow came from) and F_a whole on every process (shared each frame).
+    std::unique_ptr<ScreenTiles> tiles_;
+    gl::Texture2D tileVelocity_;
+    gl::Texture2D mergedDepth_[2];
+    int guardPx() const;
 };
 
 }  // namespace flowsurf::methods::isa

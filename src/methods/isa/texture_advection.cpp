@@ -52,7 +52,7 @@ TextureAdvection::TextureAdvection(const core::Viewport& viewport, const IsaPara
 
 void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
                              const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, bool edgeBlending,
-                             const NoiseStep& noise) const {
+                             const NoiseStep& noise, const PixelRect& pixels) const {
     program_.use();
     glUniform1i(program_.uniform("uGridRes"), gridRes_);
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
@@ -61,20 +61,28 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     glBindTextureUnit(0, prevFlow.id());
     glBindTextureUnit(1, mesh.id());
     glBindTextureUnit(2, surfaceDepth.id());
+    const PixelRect r = pixels.empty() ? PixelRect{0, 0, nextFlow.width(), nextFlow.height()} : pixels;
     if (path_ == GlPath::Compute) {
+        glUniform2i(program_.uniform("uOrigin"), r.x0, r.y0);
+        glUniform2i(program_.uniform("uEnd"), r.x1, r.y1);
         glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        dispatchPerPixel(nextFlow.width(), nextFlow.height());
+        dispatchPerPixel(r.width(), r.height());
         return;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, nextFlowFbo.id());
     glViewport(0, 0, nextFlow.width(), nextFlow.height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
+    if (!pixels.empty()) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x0, r.y0, r.width(), r.height());
+    }
     glBindVertexArray(vao_.id());
     if (warp_ == IsaWarp::Mesh)
         glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     else
         glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (!pixels.empty()) glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace flowsurf::methods::isa

@@ -14,6 +14,7 @@
 #include "gl/objects.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
+#include "methods/common/screen_tiles.h"
 
 namespace flowsurf::methods::isa {
 
@@ -24,9 +25,10 @@ public:
     TextureAdvection(const core::Viewport& viewport, const IsaParams& isa, const CommonParams& common);
     // Off the surface (depth 1) the next F_a is the noise mean. `nextFlowFbo` has
     // `nextFlow` as its only colour attachment (the fragment path draws into it).
+    // `pixels`: the pixels to write (a parallel render's tile); empty: all.
     void apply(const gl::Texture2D& mesh, const gl::Texture2D& prevFlow, const gl::Texture2D& surfaceDepth,
                const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, bool edgeBlending,
-               const NoiseStep& noise) const;
+               const NoiseStep& noise, const PixelRect& pixels = {}) const;
 
 private:
     int gridRes_;
