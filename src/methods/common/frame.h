@@ -7,6 +7,7 @@
 #include "methods/common/dye.h"
 #include "methods/common/params.h"
 #include "methods/common/process_group.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/time_levels.h"
 
@@ -55,6 +56,9 @@ public:
     // image of frame k needs no frames before it. ISA and IBFVS carry F_a from frame to frame.
     virtual bool historyFree() const { return false; }
     gl::StageTimer& timer() { return timer_; }
+    // What the last frame exchanged with the other processes (parallel = tiles); zero
+    // otherwise. Reset at each frame's start by the methods that tile.
+    virtual TileTraffic tileTraffic() const { return {}; }
 
 protected:
     gl::StageTimer timer_;

@@ -135,7 +135,6 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     const int n = group.size(), me = group.rank();
     const int w = viewport_.width, h = viewport_.height;
     rank_ = me;
-    traffic_ = {};
     std::vector<PixelFormat> formats;
     size_t layerBytes = 0;
     for (const TileLayer& l : layers) {

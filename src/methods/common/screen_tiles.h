@@ -107,7 +107,9 @@ public:
     const PixelRect& region() const { return region_; }
     const std::vector<PixelRect>& tiles() const { return tiles_; }
     bool ready() const { return !tiles_.empty(); }
-    TileTraffic& traffic() { return traffic_; }
+    // What this process sent and received since the last beginFrame().
+    const TileTraffic& traffic() const { return traffic_; }
+    void beginFrame() { traffic_ = {}; }
 
 private:
     core::Viewport viewport_;

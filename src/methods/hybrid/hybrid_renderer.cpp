@@ -22,6 +22,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
 void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
+    if (tiles_) tiles_->beginFrame();
 
     // (1) seed textures: P-space velocity and layer depth per pixel (the seed position is
     // the surface point on the pixel ray at that depth) [W §4]; the static

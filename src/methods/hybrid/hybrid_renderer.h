@@ -27,6 +27,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
+    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
     bool usesTimeLevels() const override { return true; }
     bool historyFree() const override { return true; }
     // For tests: the solid noise volume, N per texel (x fastest).

@@ -18,6 +18,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
+    if (tiles_) tiles_->beginFrame();
     // Static and dynamic cases run the same stages [L Table II: IBFVS cost ~ N in both].
     lastDynamic_ = in.surface->generation() != lastGeneration_ || !core::sameCamera(in.camera, lastCamera_);
     lastGeneration_ = in.surface->generation();

@@ -25,6 +25,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     const gl::Texture2D& surfaceShade() const override { return shade_; }
     bool lastFrameDynamic() const override { return lastDynamic_; }
+    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
 
 private:
     MethodParams params_;

@@ -36,6 +36,7 @@ bool IsaRenderer::meshStale(const FrameInput& in, const MotionPlan& plan) const 
 void IsaRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
+    if (tiles_) tiles_->beginFrame();
 
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);

@@ -25,6 +25,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     const gl::Texture2D& surfaceShade() const override { return velocityImage_[vi_].shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
+    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
 
 private:
     bool viewChanged(const FrameInput& in) const;  // the velocity image is stale

@@ -23,6 +23,10 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <string>
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -41,6 +45,13 @@ public:
   fs::core::SurfaceMesh load(size_t) override { return mesh; }
   std::string label(size_t) const override { return "FlowSurf input"; }
   fs::core::Bounds bounds() override { return mesh.bounds(); }
+};
+
+// Wall and process CPU time (ms), for FLOWSURF_RANK_STATS.
+struct RenderClock
+{
+  double wallMs = 0, cpuMs = 0;
+  static RenderClock now();
 };
 
 }  // namespace
@@ -112,6 +123,8 @@ struct vtkFlowSurfMapper::Internals
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+  void logRankStats(const char* dir, const RenderClock& start, bool warmup);
+  long statsRenders = 0;
   void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
 };
 
@@ -341,6 +354,8 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
   // otherwise the last image. The clock is the command line's (session/playback.h).
   const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
+  const char* statsDir = std::getenv("FLOWSURF_RANK_STATS");
+  const RenderClock start = statsDir ? RenderClock::now() : RenderClock{};
   if (warmup)
   {
     playback->warmUp({ camera });
@@ -350,11 +365,44 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   {
     playback->render({ camera });
   }
+  if (statsDir && (warmup || timeChanged || cameraChanged))
+  {
+    logRankStats(statsDir, start, warmup);
+  }
   lastTime = viewTime;
   lastCamera = camera;
 
   // (4) composite into ParaView's framebuffer by depth
   drawComposite(guard, x0, y0, w, h);
+}
+
+RenderClock RenderClock::now()
+{
+  timespec wall{}, cpu{};
+  clock_gettime(CLOCK_MONOTONIC, &wall);
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
+  return { wall.tv_sec * 1e3 + wall.tv_nsec * 1e-6, cpu.tv_sec * 1e3 + cpu.tv_nsec * 1e-6 };
+}
+
+// FLOWSURF_RANK_STATS=DIR: one JSON line per render per process in DIR/rank<r>.jsonl, for
+// bench/paraview/scaling.sh: wall and CPU time of the frame loop (the process's CPU time,
+// llvmpipe's threads included; glFinish first, in this mode only) and what the tiles sent.
+void vtkFlowSurfMapper::Internals::logRankStats(const char* dir, const RenderClock& start, bool warmup)
+{
+  glFinish();
+  const RenderClock end = RenderClock::now();
+  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
+  const fs::methods::FlowMethod& method = playback->view(0);
+  const fs::methods::TileTraffic t = method.tileTraffic();
+  std::ofstream out(std::string(dir) + "/rank" + std::to_string(rank) + ".jsonl", std::ios::app);
+  out << "{\"rank\": " << rank << ", \"ranks\": " << ranks << ", \"render\": " << statsRenders++
+      << ", \"method\": \"" << method.name() << "\", \"parallel\": \""
+      << fs::methods::nameOf(fs::methods::kParallelModeNames, options.params.common.parallel)
+      << "\", \"warmup\": " << (warmup ? "true" : "false")
+      << ", \"dynamic\": " << (method.lastFrameDynamic() ? "true" : "false") << ", \"wall_ms\": " << end.wallMs - start.wallMs
+      << ", \"cpu_ms\": " << end.cpuMs - start.cpuMs << ", \"bytes_sent\": " << t.bytesSent
+      << ", \"bytes_received\": " << t.bytesReceived << ", \"tile_px\": " << t.tilePixels
+      << ", \"guard_px\": " << t.guardPixels << ", \"covered_px\": " << t.coveredPixels << "}\n";
 }
 
 void vtkFlowSurfMapper::Internals::drawComposite(

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# FlowSurf's strong scaling on ParaView's engine (issue 27): ms per render at 1 and 2 ranks,
+# FlowSurfParallel tiles against replicate in the same rounds, one llvmpipe thread per rank,
+# each rank bound to its own core; the machine's own two-process speedup first.
+#
+#   bench/paraview/scaling.sh [--triangles 1000000] [--size 1024x1024] [--rounds 5]
+#       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8]
+#
+# Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
+# machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
+# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, an oversubscribed run with
+# FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there).
+# Writes OUT/calibration.txt, OUT/r<round>/<run>/{timings.json,*.png,pvbatch.log},
+# OUT/stats/np<N>/rank<r>.jsonl and OUT/results.md (scaling_report.py).
+set -euo pipefail
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+ROOT="$(cd "$HERE/../.." && pwd)"
+TRIANGLES=1000000
+SIZE=1024x1024
+ROUNDS=5
+FRAMES=9
+METHODS=hybrid,isa,ibfvs
+OUT="$ROOT/out/paraview_scaling"
+STATS_RANKS=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --triangles) TRIANGLES=$2; shift 2 ;;
+    --size) SIZE=$2; shift 2 ;;
+    --rounds) ROUNDS=$2; shift 2 ;;
+    --frames) FRAMES=$2; shift 2 ;;
+    --methods) METHODS=$2; shift 2 ;;
+    --out) OUT=$2; shift 2 ;;
+    --ranks-stats) STATS_RANKS=$2; shift 2 ;;
+    *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+eval "$("$HERE/setup.sh")"
+"$ROOT/scripts/apt-install.sh" openmpi-bin bc
+PLUGIN="${FLOWSURF_PLUGIN:-$(find "$ROOT/build-paraview" -name FlowSurf.so 2>/dev/null | head -n1 || true)}"
+FLOWSURF="${FLOWSURF_BIN:-$ROOT/build/apps/flowsurf}"
+[ -f "$PLUGIN" ] || { echo "FlowSurf.so not found: scripts/build-paraview-plugin.sh, or set FLOWSURF_PLUGIN" >&2; exit 1; }
+[ -x "$FLOWSURF" ] || { echo "flowsurf not found: scripts/build.sh, or set FLOWSURF_BIN" >&2; exit 1; }
+mkdir -p "$OUT/plugin"
+cp "$PLUGIN" "$OUT/plugin/FlowSurf.so"
+{
+  git -C "$ROOT" log -1 --format='commit: %h %s' 2>/dev/null || true
+  echo "cores: $(nproc)  $(grep -m1 'model name' /proc/cpuinfo)"
+  echo "load at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+} | tee "$OUT/plugin/info.txt" >&2
+
+export LP_NUM_THREADS=1
+# 1. The machine's own two-process speedup: one flowsurf render loop alone, then two at once,
+# each on its own core. S_hw = 2 t(one) / t(two at once).
+CAL=("$FLOWSURF" bench --methods hybrid --triangles 220000 --sizes 512x512 --lengths 31 --dynamic-only
+     --frames 40 --no-stage-times)
+one() { local t0; t0=$(date +%s.%N); taskset -c 0 "${CAL[@]}" >/dev/null 2>&1; echo "$(date +%s.%N) - $t0" | bc; }
+two() {
+  local t0; t0=$(date +%s.%N)
+  taskset -c 0 "${CAL[@]}" >/dev/null 2>&1 & taskset -c 1 "${CAL[@]}" >/dev/null 2>&1 & wait
+  echo "$(date +%s.%N) - $t0" | bc
+}
+one >/dev/null  # warm caches
+t1a=$(one); t2a=$(two); t1b=$(one); t2b=$(two)
+S_HW=$(echo "scale=3; 2 * ($t1a + $t1b) / ($t2a + $t2b)" | bc)
+echo "calibration: one copy ${t1a}/${t1b} s, two at once ${t2a}/${t2b} s: two-process speedup S_hw = $S_HW" \
+  | tee "$OUT/calibration.txt" >&2
+
+ROOTOK=()
+[ "$(id -u)" -eq 0 ] && ROOTOK=(--allow-run-as-root)
+BOUND=(mpiexec "${ROOTOK[@]}" --bind-to core --map-by core -x LP_NUM_THREADS -x PYTHONPATH)
+FREE=(mpiexec "${ROOTOK[@]}" --bind-to none -x LP_NUM_THREADS -x PYTHONPATH -x FLOWSURF_RANK_STATS)
+run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
+  local dir=$1 np=$2 mode=$3
+  shift 3
+  mkdir -p "$dir"
+  for attempt in 1 2; do
+    xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24" \
+      timeout -k 10 "${BENCH_TIMEOUT:-900}" "$@" -np "$np" \
+      pvbatch --force-offscreen-rendering "$HERE/scaling.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$dir" \
+      --triangles "$TRIANGLES" --size "$SIZE" --methods "$METHODS" --parallel "$mode" --frames "$FRAMES" \
+      >"$dir/pvbatch.log" 2>&1 || true
+    grep -q '^DONE' "$dir/pvbatch.log" && { grep -E 'median' "$dir/pvbatch.log" >&2; return 0; }
+    echo "# $dir: failed or hung (attempt $attempt)" >&2
+  done
+  return 1
+}
+for r in $(seq 1 "$ROUNDS"); do
+  echo "== round $r ($(cut -d' ' -f1 /proc/loadavg))" >&2
+  run "$OUT/r$r/np1" 1 tiles "${BOUND[@]}" || true
+  run "$OUT/r$r/np2_tiles" 2 tiles "${BOUND[@]}" || true
+  run "$OUT/r$r/np2_replicate" 2 replicate "${BOUND[@]}" || true
+done
+echo "== 1 rank, llvmpipe's 2 threads" >&2
+LP_NUM_THREADS=2 run "$OUT/np1_lp2" 1 tiles "${FREE[@]}" || true
+export FLOWSURF_RANK_STATS
+if [ -n "$STATS_RANKS" ]; then
+  rm -rf "$OUT/stats" && mkdir -p "$OUT/stats/np1"
+  FLOWSURF_RANK_STATS="$OUT/stats/np1" run "$OUT/stats/np1/run" 1 tiles "${FREE[@]}" || true
+fi
+for n in ${STATS_RANKS//,/ }; do
+  echo "== $n ranks, oversubscribed: per-rank CPU time (FLOWSURF_RANK_STATS)" >&2
+  for mode in tiles replicate; do
+    mkdir -p "$OUT/stats/np${n}_$mode"
+    FLOWSURF_RANK_STATS="$OUT/stats/np${n}_$mode" run "$OUT/stats/np${n}_$mode/run" "$n" "$mode" \
+      "${FREE[@]}" --oversubscribe --mca mpi_yield_when_idle 1 || true
+  done
+done
+echo "load at end: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/plugin/info.txt" >&2
+/usr/bin/python3 "$HERE/scaling_report.py" "$OUT" | tee "$OUT/results.md"

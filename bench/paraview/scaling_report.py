@@ -1,0 +1,91 @@
+"""The table of bench/paraview/scaling.sh's run: python3 scaling_report.py OUT > results.md
+
+Medians over the rounds of each run's median ms per render; speedups T(1 rank) / T(2 ranks)
+against the issue's bars scaled by the machine's two-process speedup (min(1, S_hw / 1.9));
+2 ranks of one thread against 1 rank of two llvmpipe threads; whether each 2-rank image is
+byte-identical to the 1-rank image; and, when present, the per-rank CPU accounting of the
+oversubscribed runs (FLOWSURF_RANK_STATS)."""
+import filecmp
+import glob
+import json
+import os
+import re
+import statistics
+import sys
+
+OUT = sys.argv[1]
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+cal = open(os.path.join(OUT, 'calibration.txt')).read()
+s_hw = float(re.search(r'S_hw = ([0-9.]+)', cal).group(1))
+scale = min(1.0, s_hw / 1.9)
+runs = {}
+for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
+    run = os.path.basename(os.path.dirname(path))
+    for method, v in load(path)['methods'].items():
+        runs.setdefault(run, {}).setdefault(method, []).append(v['median_ms'])
+lp2 = os.path.join(OUT, 'np1_lp2', 'timings.json')
+lp2 = load(lp2)['methods'] if os.path.exists(lp2) else {}
+info = open(os.path.join(OUT, 'plugin', 'info.txt')).read().strip().splitlines()
+first = load(sorted(glob.glob(os.path.join(OUT, 'r*', 'np1', 'timings.json')))[0])
+
+print('# FlowSurf on ParaView\'s engine: 1 and 2 ranks, tiles and replicate\n')
+print('Machine and run: %s. %d triangles, %dx%d, camera turning %.1f deg per render, %d timed renders per '
+      'method and run; one llvmpipe thread per rank, each rank bound to its own core (`--bind-to core`). '
+      '%s\n' % ('; '.join(info), first['triangles'], first['size'][0], first['size'][1], first['azimuth_deg'],
+                first['frames'], cal.strip()))
+print('Bar for 2 ranks: 1.6 x min(1, S_hw / 1.9) = **%.2f**.\n' % (1.6 * scale))
+print('| method | 1 rank ms | 2 ranks tiles ms | speedup tiles | 2 ranks replicate ms | speedup replicate | '
+      '1 rank, 2 llvmpipe threads ms | 2 ranks tiles / that | rounds |')
+print('|---|---:|---:|---:|---:|---:|---:|---:|---:|')
+for method in runs.get('np1', {}):
+    t1 = statistics.median(runs['np1'][method])
+    tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')]))
+    tr = statistics.median(runs.get('np2_replicate', {}).get(method, [float('nan')]))
+    l2 = lp2.get(method, {}).get('median_ms', float('nan'))
+    print('| %s | %.0f | %.0f | **%.2f** | %.0f | %.2f | %.0f | %.2f | %d |'
+          % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, tt / l2, len(runs['np1'][method])))
+
+print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
+same, total = 0, 0
+for png in sorted(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png'))):
+    ref = os.path.join(os.path.dirname(os.path.dirname(png)), 'np1', os.path.basename(png))
+    if os.path.exists(ref):
+        total += 1
+        same += filecmp.cmp(png, ref, shallow=False)
+print('%d of %d identical.\n' % (same, total))
+
+stats = sorted(glob.glob(os.path.join(OUT, 'stats', '*')))
+if stats:
+    print('## Oversubscribed: per-rank CPU time (FLOWSURF_RANK_STATS)\n')
+    print('Timed dynamic renders only (no warm-up); CPU time of the frame loop per render, the process\'s '
+          '(llvmpipe\'s threads included), summed over ranks; bytes each rank sent per render.\n')
+    print('| run | method | ranks | sum of CPU ms / 1 rank | slowest rank / mean | MB sent per rank per render (max) |')
+    print('|---|---|---:|---:|---:|---:|')
+    base = {}
+    for d in stats:
+        rows = []
+        for f in glob.glob(os.path.join(d, 'rank*.jsonl')):
+            rows += [json.loads(line) for line in open(f)]
+        rows = [r for r in rows if not r['warmup']]
+        name = os.path.basename(d)
+        for method in sorted({r['method'] for r in rows}):
+            per_rank = {}
+            sent = []
+            for r in rows:
+                if r['method'] == method:
+                    per_rank.setdefault(r['rank'], []).append(r['cpu_ms'])
+                    sent.append(r['bytes_sent'])
+            cpu = {k: statistics.median(v) for k, v in per_rank.items()}
+            total_cpu = sum(cpu.values())
+            if name == 'np1':
+                base[method] = total_cpu
+            mean = total_cpu / len(cpu)
+            print('| %s | %s | %d | %.2f | %.2f | %.2f |' % (
+                name, method, len(cpu), total_cpu / base.get(method, total_cpu), max(cpu.values()) / mean,
+                max(sent) / 1e6 if sent else 0))
