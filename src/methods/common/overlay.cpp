@@ -33,8 +33,11 @@ Overlay::Overlay(const CommonParams& params)
 
 void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) const {
     const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
-    if (legend_.id() && surface.colorRange() == legendRange_ && title == legendTitle_) return;
-    RgbImage img = makeLegendImage(params_, surface.colorRange(), title, height);
+    const LegendScale scale = legendScale(params_, surface.colorRange(), surface.colorDataRange());
+    if (legend_.id() && scale.range == legendScale_.range && scale.below == legendScale_.below &&
+        scale.above == legendScale_.above && title == legendTitle_)
+        return;
+    RgbImage img = makeLegendImage(params_, scale, title, height);
     // GL rows run bottom to top.
     std::vector<uint8_t> flipped(img.pixels.size());
     const size_t row = size_t(img.width) * 4;
@@ -43,7 +46,7 @@ void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) con
     legend_ = gl::Texture2D(GL_RGBA8, img.width, img.height, GL_NEAREST);
     glTextureSubImage2D(legend_.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
     legendOrigin_ = legendOrigin(img, width, height);
-    legendRange_ = surface.colorRange();
+    legendScale_ = scale;
     legendTitle_ = title;
 }
 

@@ -7,6 +7,7 @@
 
 #include "gl/objects.h"
 #include "methods/common/dye.h"
+#include "methods/common/legend.h"
 #include "methods/common/params.h"
 #include "methods/common/surface_gpu.h"
 
@@ -36,7 +37,7 @@ private:
     gl::VertexArray emptyVao_;
     mutable gl::Texture2D legend_;
     mutable glm::ivec2 legendOrigin_{0};
-    mutable glm::vec2 legendRange_{0.0f, -1.0f};
+    mutable LegendScale legendScale_;
     mutable std::string legendTitle_;
 };
 
