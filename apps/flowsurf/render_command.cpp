@@ -64,9 +64,10 @@ int runRender(const RenderOptions& o, const QualityOutput& quality) {
                      double(first.colorDataRange().y));
     }
 
-    // --frames advection frames, then the output frame. One PNG is the image after them;
-    // movies and sequences start converged (the warm-up, see playback.h for the clock).
-    const int total = o.frames + 1;
+    // One PNG is the image after --frames advection frames (frame k = frames); movies and
+    // sequences are --frames frames, k = 0 .. frames - 1 [issue 28 item 5: 12 means 12], and
+    // start converged (the warm-up, see playback.h for the clock).
+    const int total = kind == OutputKind::Png ? o.frames + 1 : o.frames;
     const auto start = std::chrono::steady_clock::now();
     int rendered = 0;
     if (kind == OutputKind::Png) {

@@ -20,7 +20,13 @@ core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<doub
         double spacing = (times.back() - times.front()) / double(times.size() - 1);
         m.perFrame = spacing / o.framesPerStep * (m.end >= m.start ? 1.0 : -1.0);
     } else {
-        m.perFrame = o.frames > 0 ? (m.end - m.start) / o.frames : 0.0;  // the range over the frames
+        // The range over the frames: to the last frame written, k = frames for a PNG (the
+        // image after --frames frames), k = frames - 1 for a movie or PNG sequence of
+        // --frames frames.
+        bool movie = false;  // an output name that is neither (the viewer's, Python's): as a PNG
+        try { movie = outputKind(o.output) != OutputKind::Png; } catch (const ConfigError&) {}
+        const int last = movie ? o.frames - 1 : o.frames;
+        m.perFrame = last > 0 ? (m.end - m.start) / last : 0.0;
     }
     return m;
 }

@@ -231,7 +231,8 @@ std::vector<OptionSpec> buildTable() {
         s.get = [](const RenderOptions& o) { return std::to_string(o.size.width) + "x" + std::to_string(o.size.height); };
         add(s);
     }
-    add(number("frames", gOut, "Advection frames before the output frame", &RenderOptions::frames, 0, 100000));
+    add(number("frames", gOut, "PNG: advection frames before the output frame; MP4 or PNG sequence: frames "
+               "written", &RenderOptions::frames, 0, 100000));
     add(text("flow-texture", gOut, "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture),
              OptionKind::Path));
     effect(OptionEffect::Output);
@@ -515,6 +516,9 @@ OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b) {
 void validateRenderOptions(const RenderOptions& o) {
     if (o.input.empty()) throw ConfigError("render: an input file or builtin:NAME is required");
     outputKind(o.output);
+    if (o.frames < 1 && outputKind(o.output) != OutputKind::Png)
+        throw ConfigError("--frames " + std::to_string(o.frames) + ": '" + o.output +
+                          "' is a movie or PNG sequence of --frames frames; it needs at least 1");
     if (!o.flowTexture.empty() && outputKind(o.flowTexture) != OutputKind::Png)
         throw ConfigError("--flow-texture: '" + o.flowTexture + "' must be a .png file");
     if (o.timePerFrame > 0.0 && o.framesPerStep > 0)
