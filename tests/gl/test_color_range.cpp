@@ -115,3 +115,48 @@ TEST(ColorRange, FourDecadesOnALogScale) {
     const methods::LegendScale marks = methods::legendScale({}, clean.range, clean.dataRange);
     EXPECT_FALSE(marks.below || marks.above);
 }
+
+// The legend never covers the surface [issue 28 item 3], at 420x315: the pixels it changes
+// are background pixels only, and there are many of them. The sphere at the centre (the
+// usual place at the right edge is free), shifted right (the legend moves to the left
+// margin), and filling the height with room only at the sides (the legend shrinks).
+TEST(LegendPlacement, NeverCoversTheSurfaceAt420x315) {
+    const core::SurfaceMesh mesh = sphereWith(0.0, false);
+    methods::MethodParams p = test::testParams();
+    p.common.colorBy = "s";
+    const core::Viewport vp{420, 315};
+    struct View { const char* name; float shiftX, height; };
+    for (const View v : {View{"centred", 0.0f, 2.3f}, View{"shifted right", -0.9f, 2.3f}, View{"filling", -0.35f, 2.02f}}) {
+        core::Camera cam = test::orthoFront(v.height);
+        cam.eye.x = cam.target.x = v.shiftX;  // the sphere appears right of the centre
+        auto render = [&](bool legend) {
+            methods::MethodParams q = p;
+            q.common.legend = legend;
+            methods::SurfaceGpu surface(mesh, "velocity", q.common);
+            auto m = methods::makeMethod("isa", q, vp);
+            for (int k = 0; k <= 2; ++k) m->renderFrame({&surface, cam, uint32_t(k)});
+            return test::readBack(*m, vp);
+        };
+        const test::Rendered plain = render(false), withLegend = render(true);
+        size_t onSurface = 0, off = 0;
+        int minX = vp.width, maxX = -1;
+        for (int y = 0; y < vp.height; ++y)
+            for (int x = 0; x < vp.width; ++x) {
+                const size_t i = (size_t(y) * vp.width + x) * 3;
+                if (plain.rgb[i] == withLegend.rgb[i] && plain.rgb[i + 1] == withLegend.rgb[i + 1] &&
+                    plain.rgb[i + 2] == withLegend.rgb[i + 2])
+                    continue;
+                (plain.onSurface(x, vp.height - 1 - y) ? onSurface : off)++;
+                minX = std::min(minX, x);
+                maxX = std::max(maxX, x);
+            }
+        int sMin = vp.width, sMax = -1;
+        for (int y = 0; y < vp.height; ++y)
+            for (int x = 0; x < vp.width; ++x)
+                if (plain.onSurface(x, y)) { sMin = std::min(sMin, x); sMax = std::max(sMax, x); }
+        std::printf("%s: surface x %d..%d; legend changed %zu background px (x %d..%d), %zu surface px\n", v.name,
+                    sMin, sMax, off, minX, maxX, onSurface);
+        EXPECT_EQ(onSurface, 0u) << v.name;
+        EXPECT_GT(off, 300u) << v.name;
+    }
+}

@@ -138,4 +138,41 @@ glm::ivec2 legendOrigin(const RgbImage& legend, int width, int height) {
     return {std::max(0, width - legend.width - 8), std::max(0, (height - legend.height) / 2)};
 }
 
+std::optional<glm::ivec2> freeLegendOrigin(const std::vector<float>& depth, int width, int height, glm::ivec2 size,
+                                           std::optional<glm::ivec2> keep) {
+    const int w = size.x, h = size.y, margin = 8;
+    if (w + 2 > width || h + 2 > height || depth.size() < size_t(width) * size_t(height)) return std::nullopt;
+    // (1) summed-area table of the surface pixels; the free margins left and right of them
+    std::vector<int> sat(size_t(width + 1) * size_t(height + 1), 0);
+    int minX = width, maxX = -1;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const bool on = depth[size_t(y) * width + x] < 1.0f;
+            if (on) { minX = std::min(minX, x); maxX = std::max(maxX, x); }
+            sat[size_t(y + 1) * (width + 1) + x + 1] = int(on) + sat[size_t(y) * (width + 1) + x + 1] +
+                                                        sat[size_t(y + 1) * (width + 1) + x] - sat[size_t(y) * (width + 1) + x];
+        }
+    auto covered = [&](int x, int y) {
+        if (x < 0 || y < 0 || x + w > width || y + h > height) return true;
+        const size_t W = size_t(width + 1);
+        return sat[size_t(y + h) * W + x + w] - sat[size_t(y) * W + x + w] - sat[size_t(y + h) * W + x] +
+                   sat[size_t(y) * W + x] != 0;
+    };
+    if (keep && !covered(keep->x, keep->y)) return keep;
+    // (2) the free place nearest the middle of the side with more room
+    const bool right = width - 1 - maxX >= minX;
+    const glm::ivec2 want(right ? std::max(0, width - w - margin) : std::min(margin, width - w), (height - h) / 2);
+    if (!covered(want.x, want.y)) return want;
+    std::optional<glm::ivec2> best;
+    long bestScore = 0;
+    for (int y = 0; y + h <= height; y += 4)
+        for (int x = 0; x + w <= width; x += 4) {
+            const long score = long(std::abs(x - want.x)) + long(std::abs(y - want.y));
+            if ((best && score >= bestScore) || covered(x, y)) continue;
+            best = glm::ivec2(x, y);
+            bestScore = score;
+        }
+    return best;
+}
+
 }  // namespace flowsurf::methods

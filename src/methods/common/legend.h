@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,5 +44,13 @@ RgbImage makeLegendImage(const CommonParams& params, glm::vec2 range, const std:
 // Where the legend sits in an image of `width` x `height` (bottom-left corner in GL
 // pixel coordinates): at the right edge, centred vertically.
 glm::ivec2 legendOrigin(const RgbImage& legend, int width, int height);
+
+// A place for a legend of `size` pixels that covers no surface pixel [issue 28 item 3]:
+// `depth` is the image's window depth (rows bottom to top, 1 = background). `keep` first
+// (a legend stays put while it is free), then the free place nearest the middle of the
+// side with the larger free margin (right or left), on a 4-pixel grid. Null when no place
+// is free.
+std::optional<glm::ivec2> freeLegendOrigin(const std::vector<float>& depth, int width, int height, glm::ivec2 size,
+                                           std::optional<glm::ivec2> keep = std::nullopt);
 
 }  // namespace flowsurf::methods
