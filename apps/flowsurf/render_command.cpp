@@ -56,10 +56,18 @@ int runRender(const RenderOptions& o, const QualityOutput& quality) {
         std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", o.input.c_str(),
                      surface.field().c_str(), surface.at(0).triangleCount(), playback.view(0).name(),
                      surface.unsteady() ? ", time series" : "");
+    if (!o.quiet && o.verbose) {
+        const methods::SurfaceGpu& first = surface.at(0);
+        std::fprintf(stderr, "flowsurf: colour %s over %g:%g (--color-range %s; values span %g:%g)\n",
+                     first.colorName().c_str(), double(surface.colorRange().x), double(surface.colorRange().y),
+                     findOption("color-range")->get(o).c_str(), double(first.colorDataRange().x),
+                     double(first.colorDataRange().y));
+    }
 
-    // --frames advection frames, then the output frame. One PNG is the image after them;
-    // movies and sequences start converged (the warm-up, see playback.h for the clock).
-    const int total = o.frames + 1;
+    // One PNG is the image after --frames advection frames (frame k = frames); movies and
+    // sequences are --frames frames, k = 0 .. frames - 1 [issue 28 item 5: 12 means 12], and
+    // start converged (the warm-up, see playback.h for the clock).
+    const int total = kind == OutputKind::Png ? o.frames + 1 : o.frames;
     const auto start = std::chrono::steady_clock::now();
     int rendered = 0;
     if (kind == OutputKind::Png) {

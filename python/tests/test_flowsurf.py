@@ -261,9 +261,10 @@ def test_png_for_notebooks(tmp_path):
 
 
 def test_animation_frames_are_the_command_lines_movie_frames(tmp_path):
-    # Same warm-up and noise clock as `render -o seq_%02d.png` (frame f at k = W + f).
+    # Same warm-up and noise clock as `render -o seq_%02d.png` (frame f at k = W + f); --frames 4
+    # writes 4 files, as n=4 gives 4 frames [issue 28 item 5].
     subprocess.run([FLOWSURF, "render", "builtin:sphere", "--method", "ibfvs", "--size", "64x48", "--alpha", "0.1",
-                    "--orbit", "1", "--frames", "3", "-q", "-o", str(tmp_path / "seq_%02d.png")], check=True)
+                    "--orbit", "1", "--frames", "4", "-q", "-o", str(tmp_path / "seq_%02d.png")], check=True)
     r = flowsurf.Renderer(method="ibfvs", size=(64, 48), alpha=0.1)
     frames = list(r.frames(flowsurf.read("builtin:sphere"), n=4, orbit=1.0))
     for f, img in enumerate(frames):

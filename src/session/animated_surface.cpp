@@ -20,7 +20,13 @@ core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<doub
         double spacing = (times.back() - times.front()) / double(times.size() - 1);
         m.perFrame = spacing / o.framesPerStep * (m.end >= m.start ? 1.0 : -1.0);
     } else {
-        m.perFrame = o.frames > 0 ? (m.end - m.start) / o.frames : 0.0;  // the range over the frames
+        // The range over the frames: to the last frame written, k = frames for a PNG (the
+        // image after --frames frames), k = frames - 1 for a movie or PNG sequence of
+        // --frames frames.
+        bool movie = false;  // an output name that is neither (the viewer's, Python's): as a PNG
+        try { movie = outputKind(o.output) != OutputKind::Png; } catch (const ConfigError&) {}
+        const int last = movie ? o.frames - 1 : o.frames;
+        m.perFrame = last > 0 ? (m.end - m.start) / last : 0.0;
     }
     return m;
 }
@@ -43,7 +49,7 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
         common_.colorRange = surface_->colorRange();
         return;
     }
-    resolveColorRange();
+    resolveRanges();
     stream_ = std::make_unique<core::StepStream>(provider_, 3, true);
     mapping_ = makeTimeMapping(o, stream_->times());
     levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
@@ -66,25 +72,35 @@ methods::MethodParams withUnitsInTitle(const methods::MethodParams& params, cons
     return p;
 }
 
-void AnimatedSurface::resolveColorRange() {
-    if (common_.colorRangeAuto || common_.colorRange.x <= common_.colorRange.y) return;
-    // One pass over the series, a step at a time (memory stays at one step), so a movie's
-    // colours do not pump.
-    glm::vec2 range(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max());
+void AnimatedSurface::resolveRanges() {
+    const bool colorGiven = common_.colorRangeAuto || common_.colorRange.x <= common_.colorRange.y;
+    const bool maskGiven = common_.maskBy.empty() || common_.maskRangeAuto || common_.maskRange.x <= common_.maskRange.y;
+    if (colorGiven && maskGiven) return;
+    // One pass over the series, a step at a time (memory stays at one step and a bounded
+    // summary of the values), so a movie's colours do not pump [issue 28: once per data set].
+    methods::RangeAccumulator ranges(common_);
+    bool any = false;
     // A step that cannot be read is skipped here: the frame that needs it reports it, after
     // the frames before it were written.
     for (size_t i = 0; i < provider_.count(); ++i) {
-        glm::vec2 r(1.0f, 0.0f);
         try {
             const core::SurfaceMesh mesh = provider_.load(i);
             noteUnits(mesh);
-            r = methods::dataColorRange(mesh, field_, common_);
+            ranges.add(methods::statisticsSamples(mesh, field_, common_));
+            any = true;
         } catch (const IoError&) {
         } catch (const FormatError&) {
         }
-        if (r.x <= r.y) range = glm::vec2(std::min(range.x, r.x), std::max(range.y, r.y));
     }
-    if (range.x <= range.y) common_.colorRange = range;
+    if (!any) return;
+    if (!colorGiven) {
+        const glm::vec2 r = ranges.colorRange();
+        if (r.x <= r.y) common_.colorRange = r;
+    }
+    if (!maskGiven) {
+        const glm::vec2 r = ranges.maskRange();
+        if (r.x <= r.y) common_.maskRange = r;
+    }
 }
 
 const std::vector<double>& AnimatedSurface::times() const {

@@ -53,8 +53,8 @@ private:
     void upload(const core::SurfaceMesh& mesh, const std::string& where);
     void noteUnits(const core::SurfaceMesh& mesh) { if (units_.empty()) units_ = mesh.units; }
 
-    // The colour range the options leave to the data: over every step of a series.
-    void resolveColorRange();
+    // The colour and mask ranges the options leave to the data: over every step of a series.
+    void resolveRanges();
 
     const RenderOptions& options_;
     methods::CommonParams common_;  // the options' with the colour range resolved

@@ -121,11 +121,15 @@ if "$FLOWSURF" render builtin:sphere --size 96x64 --frames 3 -q -o "$WORK/s.png"
 else
     bad "render png + flow texture"
 fi
-if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 2 -q -o "$WORK/seq_%03d.png" && [ -s "$WORK/seq_002.png" ]; then
-    ok "render png sequence"
+# --frames N writes N frames [issue 28 item 5]: seq_000 .. seq_002, no seq_003.
+if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 3 -q -o "$WORK/seq_%03d.png" && [ -s "$WORK/seq_002.png" ] \
+   && [ "$(ls "$WORK"/seq_*.png | wc -l)" -eq 3 ]; then
+    ok "render png sequence: --frames 3 writes 3 files"
 else
-    bad "render png sequence"
+    bad "render png sequence: --frames 3 wrote $(ls "$WORK"/seq_*.png 2>/dev/null | wc -l) files"
 fi
+expect_fail "log scale, range not positive" 2 "color-scale log: --color-range -1:5" "$WORK/lg.png" -- render builtin:sphere --color-scale log --color-range=-1:5 -o "$WORK/lg.png" -q
+expect_fail "movie of no frames"  2 "frames 0"             "$WORK/none.mp4" -- render builtin:sphere --frames 0 -o "$WORK/none.mp4" -q
 echo '{"keyframes": [{"frame": 0, "eye": [0,0,4]}, {"frame": 3, "eye": [3,1,2.5], "fov": 25}]}' > "$WORK/path.json"
 if "$FLOWSURF" render builtin:sphere --camera-path "$WORK/path.json" --size 64x64 --frames 3 -q -o "$WORK/p.png" && [ -s "$WORK/p.png" ]; then
     ok "render along a camera path"
@@ -138,7 +142,7 @@ else
     bad "compare sheet"
 fi
 if "$FLOWSURF" render builtin:piston --frames-per-step 2 --frames 12 --size 64x64 -q -o "$WORK/pist_%02d.png" \
-   && [ -s "$WORK/pist_12.png" ]; then
+   && [ -s "$WORK/pist_11.png" ] && [ ! -e "$WORK/pist_12.png" ]; then
     ok "render a series with changing topology"
 else
     bad "render a series with changing topology"
@@ -165,6 +169,12 @@ if command -v ffmpeg >/dev/null; then
         ok "render mp4"
     else
         bad "render mp4"
+    fi
+    # --frames 12 writes 12 frames, not 13 [issue 28 item 5].
+    if command -v ffprobe >/dev/null; then
+        n=$("$FLOWSURF" render builtin:sphere --size 64x64 --frames 12 -q -o "$WORK/twelve.mp4" && \
+            ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$WORK/twelve.mp4")
+        if [ "$n" = "12" ]; then ok "mp4: --frames 12 writes 12 frames"; else bad "mp4: --frames 12 wrote '$n' frames"; fi
     fi
 fi
 

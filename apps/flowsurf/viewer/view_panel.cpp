@@ -79,6 +79,16 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state) {
         ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue);
         if (ImGui::IsItemDeactivatedAfterEdit()) emitSet(spec.name, text);
         if (!ImGui::IsItemActive()) edits_.erase(spec.name);
+        // Range options [issue 28]: one click rescales to the data's whole or robust range.
+        if (spec.name == "color-range" || spec.name == "mask-range") {
+            ImGui::PushID(label);
+            ImGui::TextUnformatted("  rescale:");
+            for (const char* to : {"robust", "data"}) {
+                ImGui::SameLine();
+                if (ImGui::SmallButton(to)) emitSet(spec.name, to);
+            }
+            ImGui::PopID();
+        }
         break;
     }
     }

@@ -1,11 +1,15 @@
 #include "methods/common/overlay.h"
 
+#include "gl/readback.h"
 #include "methods/common/colormap.h"
 #include "methods/common/gl_path.h"
 #include "methods/common/legend.h"
 #include "methods/common/shader_interface.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <optional>
 
 namespace flowsurf::methods {
 
@@ -31,26 +35,69 @@ Overlay::Overlay(const CommonParams& params)
       colormap_(makeColormapTexture(params)),
       emptyVao_(gl::VertexArray::create()) {}
 
-void Overlay::updateLegend(const SurfaceGpu& surface, int width, int height) const {
-    const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
-    if (legend_.id() && surface.colorRange() == legendRange_ && title == legendTitle_) return;
-    RgbImage img = makeLegendImage(params_, surface.colorRange(), title, height);
+namespace {
+// The legend's sizes, as fractions of the image height it is laid out for: the first that
+// finds a free place is shown [issue 28 item 3].
+constexpr float kLegendScales[] = {1.0f, 0.8f, 0.64f, 0.5f};
+
+gl::Texture2D legendTexture(const RgbImage& img) {
     // GL rows run bottom to top.
     std::vector<uint8_t> flipped(img.pixels.size());
     const size_t row = size_t(img.width) * 4;
     for (int y = 0; y < img.height; ++y)
         std::copy_n(&img.pixels[size_t(img.height - 1 - y) * row], row, &flipped[size_t(y) * row]);
-    legend_ = gl::Texture2D(GL_RGBA8, img.width, img.height, GL_NEAREST);
-    glTextureSubImage2D(legend_.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
-    legendOrigin_ = legendOrigin(img, width, height);
-    legendRange_ = surface.colorRange();
-    legendTitle_ = title;
+    gl::Texture2D t(GL_RGBA8, img.width, img.height, GL_NEAREST);
+    glTextureSubImage2D(t.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    return t;
+}
+}  // namespace
+
+void Overlay::updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth) const {
+    const int width = depth.width(), height = depth.height();
+    const std::string title = params_.title.empty() ? surface.colorName() : params_.title;
+    const LegendScale scale = legendScale(params_, surface.colorRange(), surface.colorDataRange());
+    // (1) new range, marks or title: the sizes are laid out again when next needed
+    if (legendSizes_.empty() || scale.range != legendScale_.range || scale.below != legendScale_.below ||
+        scale.above != legendScale_.above || title != legendTitle_) {
+        legendSizes_.clear();
+        legendSizes_.resize(std::size(kLegendScales));
+        legendScale_ = scale;
+        legendTitle_ = title;
+    }
+    auto sized = [&](size_t i) -> LegendSize& {
+        LegendSize& l = legendSizes_[i];
+        if (!l.texture.id()) {
+            l.imageHeight = std::max(1, int(std::lround(float(height) * kLegendScales[i])));
+            const RgbImage img = makeLegendImage(params_, legendScale_, legendTitle_, l.imageHeight);
+            l.size = {img.width, img.height};
+            l.texture = legendTexture(img);
+        }
+        return l;
+    };
+    // (2) the largest size with a place covering no surface pixel; the one shown stays put
+    // while it is free (no jumping in a movie)
+    const std::vector<float> z = gl::readDepth(depth);
+    for (size_t i = 0; i < legendSizes_.size(); ++i) {
+        const bool placed = legendPlaced_ && i == legendShown_;
+        const std::optional<glm::ivec2> keep = placed ? std::optional(legendOrigin_) : std::nullopt;
+        if (auto at = freeLegendOrigin(z, width, height, sized(i).size, keep)) {
+            legendShown_ = i;
+            legendOrigin_ = *at;
+            legendPlaced_ = true;
+            return;
+        }
+    }
+    legendPlaced_ = false;
+    // (3) nowhere free: the smallest at the usual place
+    legendShown_ = legendSizes_.size() - 1;
+    const glm::ivec2 s = sized(legendShown_).size;
+    legendOrigin_ = {std::max(0, width - s.x - 8), std::max(0, (height - s.y) / 2)};
 }
 
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                     const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
                     const DyeView* dye) const {
-    if (params_.legend) updateLegend(surface, flow.width(), flow.height());
+    if (params_.legend) updateLegend(surface, depth);
     if (dye && !dyeProgram_) dyeProgram_ = makeProgram(path_, params_, true);
     const gl::Program& prog = dye ? dyeProgram_ : program_;
     prog.use();
@@ -64,7 +111,7 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     glBindTextureUnit(2, shade.id());
     glBindTextureUnit(3, colormap_.id());
     glBindTextureUnit(4, mask.id());
-    glBindTextureUnit(5, params_.legend ? legend_.id() : colormap_.id());
+    glBindTextureUnit(5, params_.legend ? legendSizes_[legendShown_].texture.id() : colormap_.id());
     if (dye) {
         glBindTextureUnit(kDyeIndexUnit, dye->index);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, dye->values);

@@ -7,6 +7,7 @@
 
 #include "gl/objects.h"
 #include "methods/common/dye.h"
+#include "methods/common/legend.h"
 #include "methods/common/params.h"
 #include "methods/common/surface_gpu.h"
 
@@ -25,8 +26,9 @@ public:
                const DyeView* dye = nullptr) const;
 
 private:
-    // Re-rasterises the legend when its range or title changed (auto ranges move).
-    void updateLegend(const SurfaceGpu& surface, int width, int height) const;
+    // Re-rasterises the legend when its range or title changed (auto ranges move), and
+    // places it where it covers no surface pixel of `depth`, smaller if it must be.
+    void updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth) const;
 
     CommonParams params_;
     GlPath path_;
@@ -34,9 +36,17 @@ private:
     mutable gl::Program dyeProgram_;    // with dye, made when a frame first has some
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
-    mutable gl::Texture2D legend_;
+    // The legend at each size tried (full, then smaller), rasterised when first needed.
+    struct LegendSize {
+        int imageHeight = 0;  // the image height makeLegendImage sizes it for
+        glm::ivec2 size{0};
+        gl::Texture2D texture;
+    };
+    mutable std::vector<LegendSize> legendSizes_;
+    mutable size_t legendShown_ = 0;    // index into legendSizes_
     mutable glm::ivec2 legendOrigin_{0};
-    mutable glm::vec2 legendRange_{0.0f, -1.0f};
+    mutable bool legendPlaced_ = false;  // legendOrigin_ is a free place found earlier
+    mutable LegendScale legendScale_;
     mutable std::string legendTitle_;
 };
 

@@ -62,6 +62,14 @@ enum class SurfaceRaster { Auto, Gl, Compute };
 // runs every stage on all of it (methods/common/process_group.h; the reference).
 enum class ParallelMode { Tiles, Replicate };
 
+// Where a colour or mask range comes from when none is given as MIN:MAX [issue 28].
+// Robust: core::robustRange (Tukey's fences on area-weighted quartiles) over all time
+// steps; Data: the minimum and maximum over all time steps.
+enum class RangeMode { Robust, Data };
+
+// How colour values map onto the colour map: linearly, or by their log10 (positive ranges).
+enum class ColorScale { Linear, Log };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
@@ -84,15 +92,20 @@ struct CommonParams {
     bool velocityMask = false;   // texture contrast follows speed [L ref 14]
     // Colour by: "" = the shown field's speed; else ARRAY or ARRAY:x|y|z|mag (core::ScalarSpec).
     std::string colorBy;
-    // Values at the ends of the colour map. lo > hi (unset): the session fills in the data
-    // range over all time steps (speed: 0 .. its 98th percentile); colorRangeAuto: each
-    // frame's own range.
+    // Values at the ends of the colour map. lo > hi (unset): the session fills in the
+    // range colorRangeMode makes over all time steps (speed: 0 .. its 98th percentile when
+    // robust, its maximum with data); colorRangeAuto: each frame's own data range.
     glm::vec2 colorRange{1.0f, 0.0f};
     bool colorRangeAuto = false;
+    RangeMode colorRangeMode = RangeMode::Robust;
+    ColorScale colorScale = ColorScale::Linear;
     // Texture contrast follows this scalar (as velocityMask does speed) over maskRange
-    // (lo > hi: each frame's range). Empty: off, or speed with velocityMask.
+    // (lo > hi: from maskRangeMode over all time steps, or each frame's with maskRangeAuto).
+    // Empty: off, or speed with velocityMask.
     std::string maskBy;
     glm::vec2 maskRange{1.0f, 0.0f};
+    bool maskRangeAuto = false;
+    RangeMode maskRangeMode = RangeMode::Robust;
     // A colour map read from a ParaView JSON file (RGBPoints), 256 sRGB entries; replaces
     // `colormap` when not empty.
     std::string colormapFile;
@@ -171,6 +184,7 @@ inline constexpr EnumNames<Colormap, 7> kColormapNames{{{Colormap::Viridis, "vir
                                                         {Colormap::Jet, "jet"},
                                                         {Colormap::Plasma, "plasma"},
                                                         {Colormap::None, "none"}}};
+inline constexpr EnumNames<ColorScale, 2> kColorScaleNames{{{ColorScale::Linear, "linear"}, {ColorScale::Log, "log"}}};
 inline constexpr EnumNames<OverlayScheme, 5> kOverlayNames{{{OverlayScheme::Blend, "blend"},
                                                             {OverlayScheme::Gray, "gray"},
                                                             {OverlayScheme::GrayLit, "gray-lit"},

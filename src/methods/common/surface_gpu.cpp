@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -61,10 +62,26 @@ std::vector<float> scalarValues(const core::SurfaceMesh& mesh, const std::string
     return v;
 }
 
-// (v - lo) / (hi - lo), NaN kept; a flat range maps to 0 (as a zero speed did).
-void normalizeInPlace(std::vector<float>& v, glm::vec2 range) {
-    const float span = range.y - range.x;
-    for (float& x : v) x = span > 0.0f ? (x - range.x) / span : (std::isnan(x) ? x : 0.0f);
+// (v - lo) / (hi - lo), NaN kept; a flat range maps to 0 (as a zero speed did). Log:
+// the same in log10, values <= 0 below the range. Clamped to +-kShadeLimit: the colour
+// value travels in a half float (the G-buffer's shade), whose largest value is 65504.
+constexpr float kShadeLimit = 60000.0f;
+void normalizeInPlace(std::vector<float>& v, glm::vec2 range, ColorScale scale = ColorScale::Linear) {
+    const bool log = scale == ColorScale::Log && range.x > 0.0f;
+    const double lo = log ? std::log10(double(range.x)) : range.x, hi = log ? std::log10(double(range.y)) : range.y;
+    const double span = hi - lo;
+    for (float& x : v) {
+        if (std::isnan(x)) continue;
+        if (!(span > 0.0)) { x = 0.0f; continue; }
+        const double t = log ? (x > 0.0f ? (std::log10(double(x)) - lo) / span : -1.0) : (double(x) - lo) / span;
+        x = float(std::clamp(t, double(-kShadeLimit), double(kShadeLimit)));
+    }
+}
+
+std::string rangeText(glm::vec2 r) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g:%g", double(r.x), double(r.y));
+    return buf;
 }
 
 std::vector<float> tangentialSpeed(const core::SurfaceMesh& mesh, const core::VectorField& field,
@@ -84,24 +101,81 @@ StatisticsSamples statisticsSamples(const core::SurfaceMesh& mesh, const std::st
     if (const core::VectorField* field = mesh.findField(fieldName)) s.speed = tangentialSpeed(mesh, *field);
     if (!params.colorBy.empty()) s.color = scalarValues(mesh, params.colorBy);
     if (!params.maskBy.empty()) s.mask = scalarValues(mesh, params.maskBy);
+    s.area = core::vertexAreas(mesh);
     s.bounds = mesh.bounds();
     return s;
 }
 
+namespace {
+// `r` grown by the finite values of `v`.
+glm::vec2 unite(glm::vec2 r, const std::vector<float>& v) {
+    auto [lo, hi] = core::finiteRange(v);
+    if (lo > hi) return r;
+    return r.x > r.y ? glm::vec2(lo, hi) : glm::vec2(std::min(r.x, lo), std::max(r.y, hi));
+}
+}  // namespace
+
+// Only the robust ranges need the sorted distributions; a given or data range needs the
+// extremes alone (a series' every upload sees its range given).
+bool RangeAccumulator::robustColor() const {
+    const CommonParams& p = params_;
+    const bool given = p.colorRange.x <= p.colorRange.y && !p.colorRangeAuto;
+    const bool robust = p.colorRangeMode == RangeMode::Robust && !p.colorRangeAuto;
+    return !given && robust && (!p.colorBy.empty() || p.colorScale == ColorScale::Log);
+}
+
+bool RangeAccumulator::robustMask() const {
+    const CommonParams& p = params_;
+    return !p.maskBy.empty() && !(p.maskRange.x <= p.maskRange.y && !p.maskRangeAuto) && !p.maskRangeAuto &&
+           p.maskRangeMode == RangeMode::Robust;
+}
+
+void RangeAccumulator::add(const StatisticsSamples& s) {
+    speedP98_ = std::max(speedP98_, percentile(s.speed, 98.0f));
+    const std::vector<float>& color = params_.colorBy.empty() ? s.speed : s.color;
+    colorData_ = unite(colorData_, color);
+    if (robustColor()) color_.add(color, s.area);
+    if (params_.maskBy.empty()) return;
+    maskData_ = unite(maskData_, s.mask);
+    if (robustMask()) mask_.add(s.mask, s.area);
+}
+
+glm::vec2 RangeAccumulator::colorRange() const {
+    const CommonParams& p = params_;
+    const bool log = p.colorScale == ColorScale::Log;
+    const std::string array = p.colorBy.empty() ? "the speed" : "'" + p.colorBy + "'";
+    if (p.colorRange.x <= p.colorRange.y && !p.colorRangeAuto) {
+        if (log && !(p.colorRange.x > 0.0f))
+            throw ConfigError("--color-scale log: --color-range " + rangeText(p.colorRange) +
+                              " is not positive (a log scale needs MIN > 0)");
+        return p.colorRange;
+    }
+    const bool robust = robustColor();
+    glm::vec2 r = robust ? core::robustRange(color_, log) : colorData_;
+    // Speed keeps its range from before [issue 28]: 0 .. its 98th percentile (robust, auto).
+    if (p.colorBy.empty() && !log && p.colorRangeMode == RangeMode::Robust) r = glm::vec2(0.0f, speedP98_);
+    if (log && !(r.x > 0.0f && r.x <= r.y))
+        throw ConfigError("--color-scale log: " + array + " is not positive over " +
+                          (robust ? "a quarter or more of the surface" : "its range") + " (data range " +
+                          rangeText(colorData_) + "): use --color-range MIN:MAX with MIN > 0, or "
+                          "--color-scale linear");
+    return r;
+}
+
+glm::vec2 RangeAccumulator::maskRange() const {
+    const CommonParams& p = params_;
+    if (p.maskRange.x <= p.maskRange.y && !p.maskRangeAuto) return p.maskRange;
+    return robustMask() ? core::robustRange(mask_) : maskData_;
+}
+
 SurfaceStatistics summarize(const StatisticsSamples& samples, const CommonParams& params) {
     SurfaceStatistics st;
-    st.speedP98 = percentile(samples.speed, 98.0f);
-    const bool given = params.colorRange.x <= params.colorRange.y && !params.colorRangeAuto;
-    if (given) st.colorRange = params.colorRange;
-    else if (params.colorBy.empty()) st.colorRange = {0.0f, st.speedP98};
-    else {
-        auto [lo, hi] = core::finiteRange(samples.color);
-        st.colorRange = {lo, hi};
-    }
-    if (!params.maskBy.empty()) {
-        auto [lo, hi] = core::finiteRange(samples.mask);
-        st.maskRange = params.maskRange.x <= params.maskRange.y ? params.maskRange : glm::vec2(lo, hi);
-    }
+    RangeAccumulator ranges(params);
+    ranges.add(samples);
+    st.speedP98 = ranges.speedP98();
+    st.colorRange = ranges.colorRange();
+    st.colorDataRange = ranges.colorDataRange();
+    if (!params.maskBy.empty()) st.maskRange = ranges.maskRange();
     st.clampSpeed = params.speedPercentile >= 100.0f ? 0.0f : percentile(samples.speed, params.speedPercentile);
     // The largest advection speed after clamping or normalising (what interleave writes).
     float raw = 0.0f;
@@ -117,6 +191,7 @@ SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::Surfac
                                          const std::string& fieldName, const CommonParams& params) {
     StatisticsSamples s = statisticsSamples(piece, fieldName, params);
     s.speed = group.gather(s.speed);
+    s.area = group.gather(s.area);  // a vertex on a piece boundary: its share in each piece
     if (!params.colorBy.empty()) s.color = group.gather(s.color);
     if (!params.maskBy.empty()) s.mask = group.gather(s.mask);
     float box[6] = {s.bounds.lo.x, s.bounds.lo.y, s.bounds.lo.z, -s.bounds.hi.x, -s.bounds.hi.y, -s.bounds.hi.z};
@@ -148,6 +223,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     own.speed = speed;
     if (!params.colorBy.empty()) own.color = scalarValues(mesh, params.colorBy);
     if (!params.maskBy.empty()) own.mask = scalarValues(mesh, params.maskBy);
+    own.area = core::vertexAreas(mesh);
     own.bounds = mesh.bounds();
     const SurfaceStatistics st = whole ? *whole : summarize(own, params);
     colorSpeedMax_ = st.speedP98;
@@ -157,7 +233,8 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     std::vector<float> color = params.colorBy.empty() ? speed : std::move(own.color);
     colorName_ = params.colorBy.empty() ? "|" + fieldName + "|" : params.colorBy;
     colorRange_ = st.colorRange;
-    normalizeInPlace(color, colorRange_);
+    colorDataRange_ = st.colorDataRange;
+    normalizeInPlace(color, colorRange_, params.colorScale);
     // Mask value: the --mask-by scalar, else speed / p98 (the velocity mask).
     std::vector<float> mask;
     if (!params.maskBy.empty()) {

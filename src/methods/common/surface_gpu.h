@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "core/value_range.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
 #include "methods/common/process_group.h"
@@ -21,6 +22,7 @@ struct SurfaceStatistics {
     float clampSpeed = 0.0f;     // CommonParams::speedPercentile-th percentile; 0: no clamp
     float maxSpeed = 0.0f;       // largest advection speed after clamping or normalising
     glm::vec2 colorRange{0.0f, 1.0f};
+    glm::vec2 colorDataRange{1.0f, 0.0f};  // the colour values' own min .. max (legend end marks)
     glm::vec2 maskRange{0.0f, 1.0f};  // with CommonParams::maskBy
     core::Bounds bounds;
     // Triangles of the whole surface (every piece; 0: not counted): what decisions that
@@ -28,14 +30,42 @@ struct SurfaceStatistics {
     size_t triangles = 0;
 };
 // The per-vertex values the statistics are made of: tangential speed, the colour and mask
-// scalars (when CommonParams names them), and the bounds.
+// scalars (when CommonParams names them), each vertex's share of the area (the weights of
+// the robust ranges), and the bounds.
 struct StatisticsSamples {
-    std::vector<float> speed, color, mask;
+    std::vector<float> speed, color, mask, area;
     core::Bounds bounds;
 };
 StatisticsSamples statisticsSamples(const core::SurfaceMesh& mesh, const std::string& fieldName,
                                     const CommonParams& params);
 SurfaceStatistics summarize(const StatisticsSamples& samples, const CommonParams& params);
+
+// The colour and mask ranges that CommonParams leave to the data (no MIN:MAX given), made
+// over every sample set added: one mesh, the gathered pieces of a parallel render, or each
+// step of a series (added a step at a time; memory stays bounded, core::ValueDistribution).
+// Throws ConfigError naming the option when a log colour scale meets a range that is not
+// positive.
+class RangeAccumulator {
+public:
+    explicit RangeAccumulator(const CommonParams& params) : params_(params) {}
+    void add(const StatisticsSamples& samples);
+    // The colour range: the given one, else the range of colorRangeMode (auto: the data
+    // range of what was added); speed: 0 .. its 98th percentile (robust, auto), min .. max
+    // (data), the robust rule in log10 (log scale).
+    glm::vec2 colorRange() const;
+    glm::vec2 colorDataRange() const { return colorData_; }  // min .. max of the colour values added
+    glm::vec2 maskRange() const;  // as colorRange, for --mask-by (linear)
+    float speedP98() const { return speedP98_; }
+
+private:
+    bool robustColor() const;  // whether the ranges need the distributions
+    bool robustMask() const;
+
+    CommonParams params_;
+    core::ValueDistribution color_, mask_;  // area-weighted, robust ranges only
+    glm::vec2 colorData_{1.0f, 0.0f}, maskData_{1.0f, 0.0f};
+    float speedP98_ = 0.0f;
+};
 // Collective: the statistics of the surface whose piece on this process is `piece`.
 SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::SurfaceMesh& piece,
                                          const std::string& fieldName, const CommonParams& params);
@@ -91,6 +121,9 @@ public:
     float colorSpeedMax() const { return colorSpeedMax_; }
     // The values at the ends of the colour map in this upload, and what they are.
     glm::vec2 colorRange() const { return colorRange_; }
+    // The colour values' own min .. max in this upload: beyond colorRange() they are
+    // clamped to the map's ends (the legend marks those ends).
+    glm::vec2 colorDataRange() const { return colorDataRange_; }
     const std::string& colorName() const { return colorName_; }
     // The field is a line field (principal directions): its sign carries no meaning.
     bool lineField() const { return lineField_; }
@@ -119,6 +152,7 @@ private:
     float clampSpeed_ = 0.0f;
     float colorSpeedMax_ = 0.0f;
     glm::vec2 colorRange_{0.0f, 1.0f};
+    glm::vec2 colorDataRange_{1.0f, 0.0f};
     std::string colorName_;
     bool lineField_ = false;
     core::Bounds bounds_;
@@ -126,8 +160,7 @@ private:
     uint64_t generation_ = 0;
 };
 
-// The colour range CommonParams asks for on `mesh` when it leaves it to the data: the
-// scalar's finite range, or 0 .. the 98th percentile of the field's tangential speed.
+// The colour range CommonParams asks for on `mesh` alone (RangeAccumulator::colorRange).
 glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params);
 
 // Picks the field to show: `requested` if given (FieldError if absent), else the mesh's

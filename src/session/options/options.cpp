@@ -181,9 +181,27 @@ glm::vec2 parseRange(const std::string& v, const std::string& what) {
     return r;
 }
 
-std::string rangeText(glm::vec2 r, bool automatic) {
-    if (automatic) return "auto";
-    return r.x <= r.y ? formatFloat(r.x) + ":" + formatFloat(r.y) : std::string();
+// A range option [issue 28]: robust | data | auto | MIN:MAX, kept as a given range (lo > hi
+// when unset), the auto flag (each frame's data range) and the mode of the whole-data range.
+template <typename Range, typename Auto, typename Mode>
+OptionSpec rangeOption(std::string name, std::string group, std::string help, Range range, Auto automatic, Mode mode) {
+    OptionSpec s{std::move(name), "", std::move(group), std::move(help), OptionKind::Text, 0, 0, {}, true, nullptr,
+                 nullptr};
+    const std::string what = dashed(s.name);
+    s.set = [what, range, automatic, mode](RenderOptions& o, const std::string& v) {
+        const bool given = !v.empty() && v != "robust" && v != "data" && v != "auto";
+        range(o) = given ? parseRange(v, what) : glm::vec2(1, 0);
+        automatic(o) = v == "auto";
+        mode(o) = v == "data" ? methods::RangeMode::Data : methods::RangeMode::Robust;
+    };
+    s.get = [range, automatic, mode](const RenderOptions& o) {
+        RenderOptions& m = const_cast<RenderOptions&>(o);
+        const glm::vec2 r = range(m);
+        if (automatic(m)) return std::string("auto");
+        if (r.x <= r.y) return formatFloat(r.x) + ":" + formatFloat(r.y);
+        return std::string(mode(m) == methods::RangeMode::Data ? "data" : "robust");
+    };
+    return s;
 }
 
 #define FS_REF(expr) [](RenderOptions& o) -> auto& { return o.expr; }
@@ -213,7 +231,8 @@ std::vector<OptionSpec> buildTable() {
         s.get = [](const RenderOptions& o) { return std::to_string(o.size.width) + "x" + std::to_string(o.size.height); };
         add(s);
     }
-    add(number("frames", gOut, "Advection frames before the output frame", &RenderOptions::frames, 0, 100000));
+    add(number("frames", gOut, "PNG: advection frames before the output frame; MP4 or PNG sequence: frames "
+               "written", &RenderOptions::frames, 0, 100000));
     add(text("flow-texture", gOut, "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture),
              OptionKind::Path));
     effect(OptionEffect::Output);
@@ -374,31 +393,20 @@ std::vector<OptionSpec> buildTable() {
     }
     add(scalarSpec("color-by", gLook, "Colour by ARRAY (a point or cell scalar, or a vector's magnitude) or "
                     "ARRAY:x|y|z|mag (default: the shown field's speed)", FS_REF(params.common.colorBy)));
-    {
-        OptionSpec s{"color-range", "", gLook, "Values at the ends of the colour map: MIN:MAX, or auto (each frame's "
-                     "range) (default: the data range over all time steps)", OptionKind::Text, 0, 0, {}, true, nullptr,
-                     nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            o.params.common.colorRangeAuto = v == "auto";
-            o.params.common.colorRange = v.empty() || v == "auto" ? glm::vec2(1, 0) : parseRange(v, "--color-range");
-        };
-        s.get = [](const RenderOptions& o) { return rangeText(o.params.common.colorRange, o.params.common.colorRangeAuto); };
-        add(s);
-    }
+    add(rangeOption("color-range", gLook, "Values at the ends of the colour map: robust (the bulk of the data over "
+                    "all time steps, outliers clamped: Tukey's fences on area-weighted quartiles), data (min:max over "
+                    "all time steps), auto (each frame's min:max) or MIN:MAX", FS_REF(params.common.colorRange),
+                    FS_REF(params.common.colorRangeAuto), FS_REF(params.common.colorRangeMode)));
+    add(choice("color-scale", gLook, "Colour map scale: linear, or log (log10 of the values; the range must be "
+               "positive)", methods::kColorScaleNames, FS_REF(params.common.colorScale)));
     add(flag("legend", gLook, "Draw a colour legend (scalar bar with title and ticks) into the image",
              FS_REF(params.common.legend)));
     add(text("title", gLook, "Legend title (default: the colour array's name)", FS_REF(params.common.title)));
     add(scalarSpec("mask-by", gLook, "Texture contrast follows this scalar (ARRAY or ARRAY:x|y|z|mag), as "
                     "--velocity-mask does speed ([L] Fig. 13)", FS_REF(params.common.maskBy)));
-    {
-        OptionSpec s{"mask-range", "", gLook, "Values of --mask-by at zero and full contrast, MIN:MAX (default: each "
-                     "frame's range)", OptionKind::Text, 0, 0, {}, true, nullptr, nullptr};
-        s.set = [](RenderOptions& o, const std::string& v) {
-            o.params.common.maskRange = v.empty() ? glm::vec2(1, 0) : parseRange(v, "--mask-range");
-        };
-        s.get = [](const RenderOptions& o) { return rangeText(o.params.common.maskRange, false); };
-        add(s);
-    }
+    add(rangeOption("mask-range", gLook, "Values of --mask-by at zero and full contrast: robust, data, auto or "
+                    "MIN:MAX, as --color-range", FS_REF(params.common.maskRange), FS_REF(params.common.maskRangeAuto),
+                    FS_REF(params.common.maskRangeMode)));
     add(onOff("lighting", gLook, "Diffuse lighting", FS_REF(params.common.lighting)));
     add(flag("velocity-mask", gLook, "Texture contrast follows speed [L ref 14]", FS_REF(params.common.velocityMask)));
     add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean", FS_REF(params.common.contrast), 0, 20));
@@ -511,6 +519,9 @@ OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b) {
 void validateRenderOptions(const RenderOptions& o) {
     if (o.input.empty()) throw ConfigError("render: an input file or builtin:NAME is required");
     outputKind(o.output);
+    if (o.frames < 1 && outputKind(o.output) != OutputKind::Png)
+        throw ConfigError("--frames " + std::to_string(o.frames) + ": '" + o.output +
+                          "' is a movie or PNG sequence of --frames frames; it needs at least 1");
     if (!o.flowTexture.empty() && outputKind(o.flowTexture) != OutputKind::Png)
         throw ConfigError("--flow-texture: '" + o.flowTexture + "' must be a .png file");
     if (o.timePerFrame > 0.0 && o.framesPerStep > 0)
@@ -521,6 +532,11 @@ void validateRenderOptions(const RenderOptions& o) {
     if (o.up && glm::length(*o.up) == 0.0f) throw ConfigError("--up: the up vector must not be zero");
     if (o.eye && o.target && glm::length(*o.eye - *o.target) == 0.0f)
         throw ConfigError("--eye and --target must differ");
+    const methods::CommonParams& c = o.params.common;
+    if (c.colorScale == methods::ColorScale::Log && c.colorRange.x <= c.colorRange.y && !c.colorRangeAuto &&
+        !(c.colorRange.x > 0.0f))
+        throw ConfigError("--color-scale log: --color-range " + formatFloat(c.colorRange.x) + ":" +
+                          formatFloat(c.colorRange.y) + " is not positive (a log scale needs MIN > 0)");
 }
 
 }  // namespace flowsurf::session
