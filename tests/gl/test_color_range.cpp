@@ -45,7 +45,7 @@ struct Colored {
 
 Colored renderColored(const core::SurfaceMesh& mesh, const std::string& range, const std::string& scale = "linear") {
     methods::MethodParams p = test::testParams();
-    p.common.colorBy = "s";
+    p.common.colorBy = std::string("s");  // not = "s": GCC 12 -O2 gives a false -Wrestrict
     p.common.colorRangeAuto = range == "auto";
     p.common.colorRangeMode = range == "data" ? methods::RangeMode::Data : methods::RangeMode::Robust;
     p.common.colorScale = scale == "log" ? methods::ColorScale::Log : methods::ColorScale::Linear;
@@ -123,7 +123,7 @@ TEST(ColorRange, FourDecadesOnALogScale) {
 TEST(LegendPlacement, NeverCoversTheSurfaceAt420x315) {
     const core::SurfaceMesh mesh = sphereWith(0.0, false);
     methods::MethodParams p = test::testParams();
-    p.common.colorBy = "s";
+    p.common.colorBy = std::string("s");  // not = "s": GCC 12 -O2 gives a false -Wrestrict
     const core::Viewport vp{420, 315};
     struct View { const char* name; float shiftX, height; };
     for (const View v : {View{"centred", 0.0f, 2.3f}, View{"shifted right", -0.9f, 2.3f}, View{"filling", -0.35f, 2.02f}}) {

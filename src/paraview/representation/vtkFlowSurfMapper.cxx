@@ -116,6 +116,8 @@ struct vtkFlowSurfMapper::Internals
       p.colorBy = fs::paraview::kColorScalarName;
       p.colorRange = { 1.0f, 0.0f };
       p.colorRangeAuto = false;
+      p.colorRangeMode = fs::methods::RangeMode::Data;  // ParaView's table maps the data's range
+      p.colorScale = fs::methods::ColorScale::Linear;    // linearly (its own log scale aside)
     }
     o.field = vectors;
     o.size = size;
