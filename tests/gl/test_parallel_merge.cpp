@@ -5,10 +5,14 @@
 // ParaView plugin relies on under mpiexec (tests/paraview checks it there too).
 #include "core/builtin_scenes.h"
 #include "core/camera.h"
+#include "core/time_series.h"
 #include "gl/context.h"
+#include "gl/readback.h"
 #include "gl_test_util.h"
 #include "methods/common/process_group.h"
 #include "methods/make_renderer.h"
+#include "session/options/options.h"
+#include "session/playback.h"
 
 #include <gtest/gtest.h>
 
@@ -306,5 +310,83 @@ TEST_P(TiledParallel, CompositeEqualsTheOneProcessImage) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, TiledParallel, ::testing::Values("isa", "ibfvs", "hybrid"),
                          [](const auto& info) { return info.param; });
+
+}  // namespace
+
+namespace {
+
+// Each step of `data` cut to the triangles `keep` accepts: one process's piece of a series.
+class PieceSteps final : public core::StepProvider {
+public:
+    PieceSteps(const core::Dataset& data, std::function<bool(glm::vec3)> keep) : data_(data), keep_(std::move(keep)) {}
+    size_t count() const override { return data_.steps.size(); }
+    double time(size_t i) const override { return data_.steps[i].time; }
+    core::SurfaceMesh load(size_t i) override { return pieceOf(data_.steps[i].mesh, keep_); }
+    std::string label(size_t i) const override { return "piece of step " + std::to_string(i); }
+    core::Bounds bounds() override { return data_.bounds(); }
+
+private:
+    const core::Dataset& data_;
+    std::function<bool(glm::vec3)> keep_;
+};
+
+// `frames` frames of the hybrid's pathlines through `steps` (perFrame > 0: time levels).
+Images playHybrid(core::StepProvider& steps, double perFrame, int frames, methods::ProcessGroup* group) {
+    session::RenderOptions o;
+    o.input = "pieces";
+    session::setOption(o, "method", "hybrid");
+    o.size = {160, 160};
+    o.params.common.colormap = methods::Colormap::None;  // see CompositeEqualsTheOneProcessImage
+    o.params.common.noise.seed = 7;
+    session::Playback p(o, steps, {}, group);
+    const core::Camera cam = test::orthoFront(2.2f);
+    for (int k = 0; k <= frames; ++k) p.render({cam, k * perFrame, perFrame});
+    Images im;
+    int w = 0, h = 0;
+    im.rgb = p.readImage(&w, &h);
+    im.depth = gl::readDepth(p.view(0).surfaceDepth());
+    return im;
+}
+
+// The hybrid on unsteady data in parallel (tiles): the time levels travel with the seeds,
+// and 2 and 4 processes composited by depth give the one-process pathline image exactly.
+TEST(TiledParallelUnsteady, HybridPathlinesEqualTheOneProcessImage) {
+    const core::Dataset data = core::makeBuiltin("builtin:turning-plane");
+    const double perFrame = 8.0 / 60.0;  // a quarter turn of the field over the 60 frames
+    const int frames = 12;
+    const core::Viewport vp{160, 160};
+    core::DatasetSteps whole(data);
+    const Images one = playHybrid(whole, perFrame, frames, nullptr);
+    core::DatasetSteps again(data);
+    const auto [steadyMean, steadyTile] = difference(one, playHybrid(again, 0.0, frames, nullptr), vp);
+    std::printf("hybrid, pathlines against streamlines: mean %.3f gray levels\n", steadyMean);
+    EXPECT_GT(steadyMean, 1.0);  // the levels are in use: the check below can fail
+    for (int parts : {2, 4}) {
+        ThreadGroup group(parts);
+        std::vector<Images> images(static_cast<size_t>(parts));
+        std::vector<std::string> errors(static_cast<size_t>(parts));
+        std::vector<std::thread> threads;
+        for (int r = 0; r < parts; ++r)
+            threads.emplace_back([&, r] {
+                try {
+                    gl::HeadlessContext context;
+                    ThreadGroup::Member member(group, r);
+                    PieceSteps piece(data, [r, parts](glm::vec3 c) {
+                        const float a = std::atan2(c.y, c.x) + 3.14159265f;
+                        return std::min(parts - 1, int(a / (6.2831853f / float(parts)))) == r;
+                    });
+                    images[size_t(r)] = playHybrid(piece, perFrame, frames, &member);
+                } catch (const std::exception& e) {
+                    errors[size_t(r)] = e.what();
+                }
+            });
+        for (auto& t : threads) t.join();
+        for (int r = 0; r < parts; ++r) ASSERT_EQ(errors[size_t(r)], "") << "rank " << r;
+        auto [mean, tile] = difference(one, depthComposite(images, vp), vp);
+        std::printf("hybrid unsteady tiles, %d processes: mean %.3f, worst tile %.3f gray levels\n", parts, mean, tile);
+        EXPECT_EQ(mean, 0.0) << parts << " processes";
+        EXPECT_EQ(tile, 0.0) << parts << " processes";
+    }
+}
 
 }  // namespace

@@ -35,15 +35,22 @@ PixelFormat pixelFormatOf(GLenum internalFormat) {
     }
 }
 
-void readRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, void* out) {
+// `layer` -1: a 2D texture; else the z of a 3D texture.
+void readRect(GLuint texture, int layer, const PixelRect& r, const PixelFormat& f, void* out) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureSubImage(t.id(), 0, r.x0, r.y0, 0, r.width(), r.height(), 1, f.format, f.type,
+    glGetTextureSubImage(texture, 0, r.x0, r.y0, std::max(layer, 0), r.width(), r.height(), 1, f.format, f.type,
                          GLsizei(r.area() * f.bytes), out);
 }
 
-void writeRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, const void* in) {
+void writeRect(GLuint texture, int layer, const PixelRect& r, const PixelFormat& f, const void* in) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(t.id(), 0, r.x0, r.y0, r.width(), r.height(), f.format, f.type, in);
+    if (layer < 0) glTextureSubImage2D(texture, 0, r.x0, r.y0, r.width(), r.height(), f.format, f.type, in);
+    else glTextureSubImage3D(texture, 0, r.x0, r.y0, layer, r.width(), r.height(), 1, f.format, f.type, in);
+}
+
+void readRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, void* out) { readRect(t.id(), -1, r, f, out); }
+void writeRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, const void* in) {
+    writeRect(t.id(), -1, r, f, in);
 }
 
 // Messages are plain byte strings: a writer and a reader of fixed-size values.
@@ -114,6 +121,16 @@ void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int 
 
 }  // namespace
 
+TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill) {
+    if (local.width() != tile.width() || local.height() != tile.height() || local.format() != tile.format())
+        throw GlError("screen tiles: a layer's tile texture has another size or format than its own");
+    return {local.id(), tile.id(), local.format(), -1, fill};
+}
+
+TileLayer TileLayer::ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z) {
+    return {local3d, tile3d, format, z, 0.0f};
+}
+
 std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
                                    int width, int height, int parts) {
     if (cellWeights.size() != size_t(cellsX) * size_t(cellsY))
@@ -138,10 +155,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     std::vector<PixelFormat> formats;
     size_t layerBytes = 0;
     for (const TileLayer& l : layers) {
-        if (l.local->width() != w || l.local->height() != h || l.tile->width() != w || l.tile->height() != h)
-            throw GlError("screen tiles: a layer is not the size of the view");
-        if (l.local->format() != l.tile->format()) throw GlError("screen tiles: a layer's tile texture has another format");
-        formats.push_back(pixelFormatOf(l.local->format()));
+        formats.push_back(pixelFormatOf(l.format));
         layerBytes += formats.back().bytes;
     }
 
@@ -172,7 +186,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     if (!covered.empty())
         for (size_t i = 0; i < layers.size(); ++i) {
             local[i].resize(covered.area() * formats[i].bytes);
-            readRect(*layers[i].local, covered, formats[i], local[i].data());
+            readRect(layers[i].local, layers[i].layer, covered, formats[i], local[i].data());
         }
 
     // Messages: to each tile's owner, this piece over that tile plus guard: the rectangle,
@@ -274,10 +288,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         if (!previous.empty() && !(previous == R) && layers[i].tile != layers[i].local) {
             const float fill = f.depth ? 1.0f : layers[i].fill;
             const float value[4] = {fill, fill, fill, fill};
-            glClearTexSubImage(layers[i].tile->id(), 0, previous.x0, previous.y0, 0, previous.width(), previous.height(), 1,
-                               f.format, GL_FLOAT, value);
+            glClearTexSubImage(layers[i].tile, 0, previous.x0, previous.y0, std::max(layers[i].layer, 0), previous.width(),
+                               previous.height(), 1, f.format, GL_FLOAT, value);
         }
-        if (!R.empty()) writeRect(*layers[i].tile, R, f, merged[i].data());
+        if (!R.empty()) writeRect(layers[i].tile, layers[i].layer, R, f, merged[i].data());
     }
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();

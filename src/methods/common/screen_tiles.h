@@ -62,14 +62,18 @@ struct PixelRect {
 std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
                                    int width, int height, int parts);
 
-// One of the per-pixel buffers an image stage reads: this process's own render (`local`,
-// float or half formats with 1-4 channels, or DEPTH32F) and the full-size texture of the
-// same format the tile's merge goes into (`tile`; it may be `local` itself). `fill`: every
-// channel off the surface (a depth layer's is 1).
+// One of the per-pixel buffers an image stage reads: this process's own render (`local`)
+// and the texture of the same size and format the tile's merge goes into (`tile`; it may
+// be `local` itself): 2D textures, or one layer of two 3D textures (the hybrid's time
+// levels). Formats: float or half with 1-4 channels, or DEPTH32F. `fill`: every channel
+// off the surface (a depth layer's is 1).
 struct TileLayer {
-    const gl::Texture2D* local = nullptr;
-    const gl::Texture2D* tile = nullptr;
+    GLuint local = 0, tile = 0;
+    GLenum format = 0;
+    int layer = -1;  // the z of 3D textures; -1: 2D textures
     float fill = 0.0f;
+    static TileLayer of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill = 0.0f);
+    static TileLayer ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z);
 };
 
 // What the tiles cost this process in the last frame (FLOWSURF_RANK_STATS).

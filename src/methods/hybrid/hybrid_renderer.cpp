@@ -29,23 +29,36 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
     const bool tiled = in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles;
-    if (unsteady && in.group)
-        throw ConfigError("the hybrid method's unsteady time levels cannot be merged over processes yet; "
-                    "render each time step as steady (no time levels) in a parallel render");
+    if (unsteady && in.group && !tiled)
+        throw ConfigError("the hybrid method's unsteady time levels are merged over processes in the tiled mode only: "
+                          "set parallel to tiles (FlowSurfParallel), or render each time step as steady");
     lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
                    !core::sameCamera(in.camera, seedCamera_) || unsteady != haveLevels_ ||
                    (unsteady && !(*in.levels == seedLevels_));
+    const float speedRef = in.surface->maxSpeed();
     if (lastDynamic_) {
         timer_.begin("seed textures");
         seeds_.render(*in.surface, in.camera);
+        // (1b) unsteady flow: the velocity image of every time level the particles pass
+        // through, "the projection of the vector data within the integration loop" [W §3]
+        if (unsteady) {
+            timer_.begin("velocity levels");
+            levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
+        }
         if (tiled) {
-            // The whole surface's seeds over this process's tile and the streaks' reach.
+            // The whole surface's seeds (and time levels) over this process's tile and the
+            // streaks' reach; the seeds' depth decides every layer's nearest fragment.
             timer_.begin("tile exchange");
             if (!tiles_) {
                 tiles_ = std::make_unique<ScreenTiles>(viewport_);
                 tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
             }
-            const TileLayer layers[] = {{&seeds_.velocity(), &tileVelocity_}};
+            std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
+            if (unsteady) {
+                if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
+                for (int j = 0; j < levels_.count(); ++j)
+                    layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
+            }
             tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
         } else if (in.group) {
             seeds_.merge(*in.group);  // the whole surface's seeds
@@ -53,13 +66,6 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
-    }
-    // (1b) unsteady flow: the velocity image of every time level the particles pass
-    // through, "the projection of the vector data within the integration loop" [W §3]
-    const float speedRef = in.surface->maxSpeed();
-    if (unsteady && lastDynamic_) {
-        timer_.begin("velocity levels");
-        levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
     }
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
@@ -83,7 +89,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     t.noiseScalePx = c.noise.scale;
     if (unsteady) {
         const TimeLevels& lv = *in.levels;
-        t.velocityLevels = levels_.texture();
+        t.velocityLevels = tiled ? tileLevels_.id() : levels_.texture();
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }

@@ -28,20 +28,20 @@ VelocityLevels::VelocityLevels(const core::Viewport& viewport, bool cullBackFace
     }
 }
 
+VelocityLevels::Volume::Volume(const core::Viewport& viewport, int count) : count_(count) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &id);
+    texture_ = gl::Handle<gl::detail::deleteTexture>(id);
+    glTextureStorage3D(id, 1, kFormat, viewport.width, viewport.height, std::max(count, 1));
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, wrap, GL_CLAMP_TO_EDGE);
+}
+
 void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels, const core::Camera& camera,
                             const CommonParams& params, float speedRef) {
     const int count = int(levels.levels.size());
-    if (count != count_) {
-        GLuint id = 0;
-        glCreateTextures(GL_TEXTURE_3D, 1, &id);
-        texture_ = gl::Handle<gl::detail::deleteTexture>(id);
-        glTextureStorage3D(id, 1, GL_RGBA16F, viewport_.width, viewport_.height, std::max(count, 1));
-        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-            glTextureParameteri(id, wrap, GL_CLAMP_TO_EDGE);
-        count_ = count;
-    }
+    if (count != volume_.count()) volume_ = Volume(viewport_, count);
     GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
     glVertexArrayElementBuffer(vao, surface.indexBuffer());
@@ -63,7 +63,7 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
     for (int j = 0; j < count; ++j) {
         const TimeLevel& level = levels.levels[size_t(j)];
-        glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, j);
+        glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, volume_.id(), 0, j);
         glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
         glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
         glVertexArrayVertexBuffer(vao, 1, level.fieldA, 0, sizeof(float) * 3);

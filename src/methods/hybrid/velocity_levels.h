@@ -16,18 +16,31 @@ namespace flowsurf::methods::hybrid {
 
 class VelocityLevels {
 public:
+    static constexpr GLenum kFormat = GL_RGBA16F;
+    // A 3D texture of `count` velocity images (layer j: level j), linear, clamped.
+    class Volume {
+    public:
+        Volume() = default;
+        Volume(const core::Viewport& viewport, int count);
+        GLuint id() const { return texture_.id(); }
+        int count() const { return count_; }
+
+    private:
+        gl::Handle<gl::detail::deleteTexture> texture_;
+        int count_ = 0;
+    };
+
     VelocityLevels(const core::Viewport& viewport, bool cullBackFaces);
     // Renders every level; velocities are divided by `speedRef` (see velocity_levels.vert).
     void render(const SurfaceGpu& surface, const TimeLevels& levels, const core::Camera& camera,
                 const CommonParams& params, float speedRef);
-    GLuint texture() const { return texture_.id(); }
-    int count() const { return count_; }
+    GLuint texture() const { return volume_.id(); }
+    int count() const { return volume_.count(); }
 
 private:
     core::Viewport viewport_;
     bool cullBackFaces_;
-    gl::Handle<gl::detail::deleteTexture> texture_;
-    int count_ = 0;
+    Volume volume_;
     gl::Texture2D depth_;
     gl::Framebuffer fbo_;
     gl::VertexArray vao_;

@@ -47,7 +47,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
         timer_.begin("tile exchange");
         if (!tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
         const gl::Texture2D& fa = flow_.texture(target);
-        const TileLayer layers[] = {{&fa, &fa, params_.ibfvs.flowBackground}};
+        const TileLayer layers[] = {TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
         tiles_->distribute(*in.group, depth_, layers, 0);
         tiles_->shareTiles(*in.group, fa);
     } else if (in.group) {

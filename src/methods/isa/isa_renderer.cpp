@@ -72,7 +72,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
                         d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
                 }
                 const SurfaceGBuffer& v = velocityImage_[vi_];
-                const TileLayer layers[] = {{&v.velocity(), &tileVelocity_}, {&v.depth(), &mergedDepth_[vi_]}};
+                const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
                 tiles_->distribute(*in.group, v.depth(), layers, guardPx());
                 tiles_->shareTiles(*in.group, mergedDepth_[vi_]);
             } else if (in.group) {

@@ -125,6 +125,16 @@ struct vtkFlowSurfMapper::Internals
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+  // Throws `error` (if any process has one, that process's) on every process; collective
+  // in parallel.
+  void agreeOn(const std::string& error)
+  {
+    const std::string agreed = group ? group->agree(error) : error;
+    if (!agreed.empty())
+    {
+      throw fs::GlError(agreed);
+    }
+  }
   void logRankStats(const char* dir, const RenderClock& start, bool warmup);
   long statsRenders = 0;
   void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
@@ -250,13 +260,17 @@ fs::core::Camera cameraOf(vtkCamera* c)
 
 void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
 {
+  // Every step that can fail on one process alone is followed by an agreement, so that all
+  // report the same error and none is left waiting in a collective step (agreeOn).
   if (!glChecked)
   {
+    std::string error;
     if (epoxy_gl_version() < 45)
     {
-      throw fs::GlError("FlowSurf needs OpenGL 4.5; ParaView's context is " +
-        std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
+      error = "FlowSurf needs OpenGL 4.5; ParaView's context is " +
+        std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
     }
+    agreeOn(error);
     glChecked = true;
   }
   if (!input && !group)
@@ -311,9 +325,9 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     {
       error = e.what();
     }
-    if (group && group->any(!error.empty()) && error.empty())
+    if (group)
     {
-      error = "FlowSurf: another process could not use its piece of the surface (see its message)";
+      error = group->agree(error);
     }
     if (!error.empty())
     {
@@ -337,19 +351,40 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   const bool timeChanged = lastTime && *lastTime != viewTime;
   const fs::session::RenderOptions o = playbackOptions({ w, h });
   bool warmup = false;
-  if (playback && dataChanged && timeChanged && playback->options().field == o.field)
+  std::string error;
+  try
   {
-    playback->stepsChanged();  // the texture goes on over the new time step
-    warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;  // rebuilt by warmUp()
+    if (playback && dataChanged && timeChanged && playback->options().field == o.field)
+    {
+      playback->stepsChanged();  // the texture goes on over the new time step
+      warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;  // rebuilt by warmUp()
+    }
+    else if (!playback || dataChanged)
+    {
+      playback.reset();
+      playback = std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, group.get());
+      warmup = true;
+    }
+    else
+    {
+      warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;
+    }
   }
-  else if (!playback || dataChanged)
+  catch (const std::exception& e)
   {
-    playback = std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, group.get());
-    warmup = true;
+    error = e.what();
   }
-  else
+  if (!error.empty() || group)
   {
-    warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;
+    if (group)
+    {
+      error = group->agree(error);  // a shader that failed on one process fails them all
+    }
+    if (!error.empty())
+    {
+      playback.reset();
+      throw fs::Error(error);
+    }
   }
 
   // (3) advection frames: a still render of something new converges (the warm-up, then
@@ -357,6 +392,15 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   // otherwise the last image. The clock is the command line's (session/playback.h).
   const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
   const char* statsDir = std::getenv("FLOWSURF_RANK_STATS");
+  if (statsDir)
+  {
+    // Each stage charged its own work: glFinish and a clock at every boundary.
+    for (size_t i = 0; i < playback->viewCount(); ++i)
+    {
+      playback->view(i).timer().setSynchronous(true);
+    }
+    playback->setStageTiming(true);
+  }
   const RenderClock start = statsDir ? RenderClock::now() : RenderClock{};
   if (warmup)
   {
@@ -394,7 +438,7 @@ void vtkFlowSurfMapper::Internals::logRankStats(const char* dir, const RenderClo
   glFinish();
   const RenderClock end = RenderClock::now();
   const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
-  const fs::methods::FlowMethod& method = playback->view(0);
+  fs::methods::FlowMethod& method = playback->view(0);
   const fs::methods::TileTraffic t = method.tileTraffic();
   std::ofstream out(std::string(dir) + "/rank" + std::to_string(rank) + ".jsonl", std::ios::app);
   out << "{\"rank\": " << rank << ", \"ranks\": " << ranks << ", \"render\": " << statsRenders++
@@ -404,7 +448,16 @@ void vtkFlowSurfMapper::Internals::logRankStats(const char* dir, const RenderClo
       << ", \"dynamic\": " << (method.lastFrameDynamic() ? "true" : "false") << ", \"wall_ms\": " << end.wallMs - start.wallMs
       << ", \"cpu_ms\": " << end.cpuMs - start.cpuMs << ", \"bytes_sent\": " << t.bytesSent
       << ", \"bytes_received\": " << t.bytesReceived << ", \"tile_px\": " << t.tilePixels
-      << ", \"guard_px\": " << t.guardPixels << ", \"covered_px\": " << t.coveredPixels << "}\n";
+      << ", \"guard_px\": " << t.guardPixels << ", \"covered_px\": " << t.coveredPixels << ", \"stages_ms\": {";
+  fs::gl::StageTimer& timer = playback->view(0).timer();
+  const char* sep = "";
+  for (const auto& [stage, ms] : timer.meanMs())
+  {
+    out << sep << "\"" << stage << "\": " << ms;
+    sep = ", ";
+  }
+  out << "}}\n";
+  timer.reset();
 }
 
 void vtkFlowSurfMapper::Internals::drawComposite(

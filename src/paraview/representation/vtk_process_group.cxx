@@ -129,6 +129,26 @@ std::vector<std::vector<uint8_t>> VtkProcessGroup::exchange(const std::vector<st
   return received;
 }
 
+std::string VtkProcessGroup::agree(const std::string& error)
+{
+  const int n = this->size();
+  vtkIdType mine = vtkIdType(error.size());
+  std::vector<vtkIdType> lengths(static_cast<size_t>(n)), offsets(static_cast<size_t>(n), 0);
+  check(controller_->AllGather(&mine, lengths.data(), 1), "gather of error lengths");
+  std::partial_sum(lengths.begin(), lengths.end() - 1, offsets.begin() + 1);
+  std::vector<char> all(size_t(offsets.back() + lengths.back()) + 1);
+  check(controller_->AllGatherV(error.data(), all.data(), mine, lengths.data(), offsets.data()), "gather of errors");
+  for (int q = 0; q < n; ++q)
+  {
+    if (lengths[size_t(q)] > 0)
+    {
+      const std::string text(all.data() + offsets[size_t(q)], size_t(lengths[size_t(q)]));
+      return n > 1 ? text + " (on process " + std::to_string(q) + " of " + std::to_string(n) + ")" : text;
+    }
+  }
+  return {};
+}
+
 bool VtkProcessGroup::any(bool flag)
 {
   int in = flag ? 1 : 0, out = 0;

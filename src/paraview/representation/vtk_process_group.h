@@ -6,6 +6,7 @@
 #include "methods/common/process_group.h"
 
 #include <memory>
+#include <string>
 
 class vtkMultiProcessController;
 
@@ -24,6 +25,10 @@ public:
   std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) override;
   // True on every process if `flag` is true on any (a collective decision).
   bool any(bool flag);
+  // Collective: the error of the lowest process that has one ("" if none), on every
+  // process, naming that process: so that all report the same failure and none waits in a
+  // later collective step for a process that gave up.
+  std::string agree(const std::string& error);
 
 private:
   vtkMultiProcessController* controller_;
