@@ -14,4 +14,14 @@ float dtForStep(const FrameInput& in, const core::Viewport& viewport, float step
     return stepPx / (speed * std::max(pxPerUnit, 1e-30f));
 }
 
+bool tiledParallel(const FrameInput& in, const CommonParams& params) {
+    return in.group && in.group->size() > 1 && params.parallel == ParallelMode::Tiles;
+}
+
+std::optional<PixelRect> piecePixels(const FrameInput& in, const CommonParams& params, const core::Viewport& viewport) {
+    if (!tiledParallel(in, params)) return std::nullopt;
+    return projectedRect(in.surface->pieceBounds(), in.camera.viewProjection(viewport.aspect()), viewport.width,
+                         viewport.height);
+}
+
 }  // namespace flowsurf::methods

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace flowsurf::methods {
@@ -63,6 +64,13 @@ public:
 protected:
     gl::StageTimer timer_;
 };
+
+// True when `in` is one process's piece of a tiled parallel render (screen_tiles.h).
+bool tiledParallel(const FrameInput& in, const CommonParams& params);
+// In a tiled parallel render, the pixels this process's piece can cover: the host shows
+// only those of its images (the other processes' fragments elsewhere), so its overlay
+// writes only those; none otherwise (every pixel).
+std::optional<PixelRect> piecePixels(const FrameInput& in, const CommonParams& params, const core::Viewport& viewport);
 
 // Object-space time step so that the fastest vector moves at most stepPx pixels.
 float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx);

@@ -96,8 +96,10 @@ void Overlay::updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth
 
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                     const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
-                    const DyeView* dye) const {
+                    const DyeView* dye, const std::optional<PixelRect>& pixels) const {
     if (params_.legend) updateLegend(surface, depth);
+    const PixelRect r = pixels.value_or(PixelRect{0, 0, flow.width(), flow.height()});
+    if (r.empty()) return;
     if (dye && !dyeProgram_) dyeProgram_ = makeProgram(path_, params_, true);
     const gl::Program& prog = dye ? dyeProgram_ : program_;
     prog.use();
@@ -126,15 +128,22 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
         glGetNamedFramebufferAttachmentParameteriv(target.id(), GL_COLOR_ATTACHMENT0,
                                                    GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &composite);
         glBindImageTexture(0, GLuint(composite), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        dispatchPerPixel(flow.width(), flow.height());  // read next also by the edge mask's draw
+        glUniform2i(prog.uniform("uOrigin"), r.x0, r.y0);
+        glUniform2i(prog.uniform("uEnd"), r.x1, r.y1);
+        dispatchPerPixel(r.width(), r.height());  // read next also by the edge mask's draw
         return;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, flow.width(), flow.height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
+    if (pixels) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x0, r.y0, r.width(), r.height());
+    }
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (pixels) glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace flowsurf::methods

@@ -9,8 +9,10 @@
 #include "methods/common/dye.h"
 #include "methods/common/legend.h"
 #include "methods/common/params.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/common/surface_gpu.h"
 
+#include <optional>
 #include <string>
 
 namespace flowsurf::methods {
@@ -20,10 +22,12 @@ public:
     explicit Overlay(const CommonParams& params);
     // `surface` gives the colour range and name the legend shows. `target`: the composite
     // (RGBA8) as the colour attachment 0 of a framebuffer. `dye`: the dye to show over the
-    // surface (FrameInput::dye), or null.
+    // surface (FrameInput::dye), or null. `pixels`: the pixels to write (a tiled parallel
+    // render writes its own piece's only: the host composites the rest from the others);
+    // none: every pixel.
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
-               const DyeView* dye = nullptr) const;
+               const DyeView* dye = nullptr, const std::optional<PixelRect>& pixels = std::nullopt) const;
 
 private:
     // Re-rasterises the legend when its range or title changed (auto ranges move), and

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace flowsurf::methods {
@@ -53,19 +54,7 @@ void writeRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f,
     writeRect(t.id(), -1, r, f, in);
 }
 
-// Messages are plain byte strings: a writer and a reader of fixed-size values.
-struct Writer {
-    std::vector<uint8_t>& out;
-    void put(const void* p, size_t n) {
-        const auto* b = static_cast<const uint8_t*>(p);
-        out.insert(out.end(), b, b + n);
-    }
-    void rect(const PixelRect& r) {
-        const int32_t v[4] = {r.x0, r.y0, r.x1, r.y1};
-        put(v, sizeof v);
-    }
-};
-
+// Messages are plain byte strings, read in order.
 struct Reader {
     const std::vector<uint8_t>& in;
     size_t at = 0;
@@ -120,6 +109,25 @@ void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int 
 }
 
 }  // namespace
+
+PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height) {
+    const PixelRect all{0, 0, width, height};
+    if (!bounds.valid()) return {};
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p((c & 1) ? bounds.hi.x : bounds.lo.x, (c & 2) ? bounds.hi.y : bounds.lo.y,
+                          (c & 4) ? bounds.hi.z : bounds.lo.z);
+        const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+        if (!(clip.w > 1e-6f)) return all;
+        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+        lo = glm::min(lo, px);
+        hi = glm::max(hi, px);
+    }
+    const auto floorTo = [](float v, int limit) { return int(std::clamp(std::floor(v), -1.0f, float(limit) + 1.0f)); };
+    return PixelRect{floorTo(lo.x, width) - 1, floorTo(lo.y, height) - 1, floorTo(hi.x, width) + 2,
+                     floorTo(hi.y, height) + 2}
+        .intersect(all);
+}
 
 TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill) {
     if (local.width() != tile.width() || local.height() != tile.height() || local.format() != tile.format())
@@ -199,14 +207,23 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         sent_[size_t(t)] = r.empty() ? PixelRect{} : r;
         if (t == me || r.empty()) continue;
         std::vector<uint8_t>& out = sends[size_t(t)];
-        Writer wr{out};
-        wr.rect(r);
-        for (int y = r.y0; y < r.y1; ++y) wr.put(&depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * 4);
+        size_t coveredHere = 0;
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) coveredHere += depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
+        out.resize(16 + r.area() * 4 + coveredHere * layerBytes);
+        const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
+        std::memcpy(out.data(), header, 16);
+        uint8_t* at = out.data() + 16;
+        for (int y = r.y0; y < r.y1; ++y, at += size_t(r.width()) * 4)
+            std::memcpy(at, &depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * 4);
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x) {
                 if (!(depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f)) continue;
-                const size_t at = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
-                for (size_t i = 0; i < layers.size(); ++i) wr.put(&local[i][at * formats[i].bytes], formats[i].bytes);
+                const size_t px = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
+                for (size_t i = 0; i < layers.size(); ++i) {
+                    std::memcpy(at, &local[i][px * formats[i].bytes], formats[i].bytes);
+                    at += formats[i].bytes;
+                }
             }
         traffic_.bytesSent += out.size();
     }
@@ -339,11 +356,14 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
         if (r.empty()) continue;
         const PixelRect& qr = received_[size_t(q)];
         const std::vector<float>& qd = receivedDepth_[size_t(q)];
-        Writer wr{sends[size_t(q)]};
+        std::vector<float> values;
+        values.reserve(r.area());
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x)
                 if (qd[size_t(y - qr.y0) * size_t(qr.width()) + size_t(x - qr.x0)] < 1.0f)
-                    wr.put(&mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)], 4);
+                    values.push_back(mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)]);
+        sends[size_t(q)].resize(values.size() * 4);
+        std::memcpy(sends[size_t(q)].data(), values.data(), values.size() * 4);
         traffic_.bytesSent += sends[size_t(q)].size();
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/mesh.h"
 #include "gl/objects.h"
 #include "methods/common/process_group.h"
 
@@ -53,6 +54,11 @@ struct PixelRect {
     PixelRect grown(int g) const { return {x0 - g, y0 - g, x1 + g, y1 + g}; }
     bool operator==(const PixelRect&) const = default;
 };
+
+// The pixels `bounds` can cover in a view (`viewProj`, `width` x `height`): its corners'
+// projection, a pixel wider on each side, within the image; the whole image when a corner
+// lies behind the eye; empty for empty bounds. What a process's piece can draw.
+PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height);
 
 // `parts` rectangles that together cover width x height, of about equal weight: the
 // weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut

@@ -259,6 +259,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     }
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
+    pieceBounds_ = mesh.bounds();
     positionSamples_.clear();
     const size_t stride = std::max<size_t>(1, (mesh.vertexCount() + kPositionSamples - 1) / kPositionSamples);
     for (size_t i = 0; i < mesh.vertexCount(); i += stride) positionSamples_.push_back(mesh.positions[i]);

@@ -128,6 +128,8 @@ public:
     // The field is a line field (principal directions): its sign carries no meaning.
     bool lineField() const { return lineField_; }
     const core::Bounds& bounds() const { return bounds_; }
+    // This mesh's own bounds (bounds() is the whole surface's when this is a piece).
+    const core::Bounds& pieceBounds() const { return pieceBounds_; }
     // Up to kPositionSamples vertex positions spread over the mesh (every n-th): where the
     // surface is when the bounds say too little (a camera inside them, dtForStep).
     static constexpr size_t kPositionSamples = 4096;
@@ -155,7 +157,7 @@ private:
     glm::vec2 colorDataRange_{1.0f, 0.0f};
     std::string colorName_;
     bool lineField_ = false;
-    core::Bounds bounds_;
+    core::Bounds bounds_, pieceBounds_;
     std::vector<glm::vec3> positionSamples_;
     uint64_t generation_ = 0;
 };

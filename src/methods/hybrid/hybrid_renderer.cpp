@@ -28,7 +28,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // the surface point on the pixel ray at that depth) [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
-    const bool tiled = in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles;
+    const bool tiled = tiledParallel(in, c);
     if (unsteady && in.group && !tiled)
         throw ConfigError("the hybrid method's unsteady time levels are merged over processes in the tiled mode only: "
                           "set parallel to tiles (FlowSurfParallel), or render each time step as steady");
@@ -102,7 +102,8 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(lic_.texture(), seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye);
+    overlay_.apply(lic_.texture(), seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
+                   piecePixels(in, c, viewport_));
     timer_.endFrame();
 }
 

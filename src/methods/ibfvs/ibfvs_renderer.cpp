@@ -43,7 +43,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // next frame's source (the texture lives in the image). Tiles: each process merges its
     // tile by depth, then every tile goes to every process; shade, mask and depth stay
     // this piece's (its own fragments are what it composites).
-    if (in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles) {
+    if (tiledParallel(in, c)) {
         timer_.begin("tile exchange");
         if (!tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
         const gl::Texture2D& fa = flow_.texture(target);
@@ -56,7 +56,8 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye);
+    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
+                   piecePixels(in, c, viewport_));
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {

@@ -40,7 +40,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);
-    const bool tiled = in.group && in.group->size() > 1 && c.parallel == ParallelMode::Tiles;
+    const bool tiled = tiledParallel(in, c);
     // The depth of the whole surface per velocity image: merged (tiles) or this render's.
     const auto depthOf = [&](int v) -> const gl::Texture2D& {
         return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
@@ -112,7 +112,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye);
+    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
+                   piecePixels(in, c, viewport_));
     timer_.endFrame();
 }
 

@@ -491,6 +491,15 @@ void vtkFlowSurfMapper::Internals::drawComposite(
   {
     glDisable(GL_BLEND);
   }
+  // Only where this piece can be: in parallel each process draws its own fragments.
+  const fs::methods::PixelRect piece = fs::methods::projectedRect(
+    steps.mesh.bounds(), lastCamera.viewProjection(float(w) / float(h)), w, h);
+  if (piece.empty())
+  {
+    return;
+  }
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0 + piece.x0, y0 + piece.y0, piece.width(), piece.height());
   program.use();
   glUniform2i(program.uniform("uOrigin"), x0, y0);
   glUniform1f(program.uniform("uDepthBias"), 2e-5f);
@@ -539,4 +548,5 @@ void vtkFlowSurfMapper::Internals::drawComposite(
   }
   glBindVertexArray(emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
 }
