@@ -390,3 +390,45 @@ TEST(TiledParallelUnsteady, HybridPathlinesEqualTheOneProcessImage) {
 }
 
 }  // namespace
+
+namespace {
+
+// The split of the screen: the tiles cover it without overlap, and cut the weight evenly.
+TEST(ScreenSplit, TilesCoverTheScreenWithEvenWeight) {
+    const int cellsX = 20, cellsY = 12, cell = 16, w = 310, h = 190;  // the last cells partly outside
+    std::vector<float> weight(size_t(cellsX * cellsY));
+    for (int y = 0; y < cellsY; ++y)
+        for (int x = 0; x < cellsX; ++x) weight[size_t(y * cellsX + x)] = x < 10 ? 4.0f : 1.0f;  // left: 4x the work
+    for (int parts : {1, 2, 3, 4, 7, 8}) {
+        const std::vector<methods::PixelRect> tiles = methods::splitScreen(weight, cellsX, cellsY, cell, w, h, parts);
+        ASSERT_EQ(int(tiles.size()), parts);
+        std::vector<int> covered(size_t(w * h), 0);
+        std::vector<double> load(tiles.size(), 0.0);
+        for (size_t t = 0; t < tiles.size(); ++t)
+            for (int y = tiles[t].y0; y < tiles[t].y1; ++y)
+                for (int x = tiles[t].x0; x < tiles[t].x1; ++x) {
+                    ++covered[size_t(y * w + x)];
+                    if (x % cell == 0 && y % cell == 0) load[t] += weight[size_t((y / cell) * cellsX + x / cell)];
+                }
+        for (int c : covered) ASSERT_EQ(c, 1) << parts << " parts: a pixel in no tile or in two";
+        const double mean = 600.0 / parts;  // 10 x 12 x 4 + 10 x 12 x 1
+        for (double l : load) EXPECT_LE(std::abs(l - mean), 0.25 * mean + 24.0) << parts << " parts";
+    }
+}
+
+// Load balance from measured costs: a tile that took three times as long as the other
+// gets fewer cells, so that the costs it predicts are even.
+TEST(ScreenSplit, MeasuredCostsMoveTheCut) {
+    const int cellsX = 16, cellsY = 8, cell = 16;
+    const std::vector<float> weight(size_t(cellsX * cellsY), 1.0f);
+    const auto tiles = methods::splitScreen(weight, cellsX, cellsY, cell, 256, 128, 2);
+    ASSERT_EQ(tiles[0].x1, 128);  // even weights: the middle
+    const float ms[2] = {30.0f, 10.0f};
+    const std::vector<float> costs = methods::costWeights(weight, cellsX, cell, tiles, ms);
+    const auto again = methods::splitScreen(costs, cellsX, cellsY, cell, 256, 128, 2);
+    // Per cell 30/64 ms left of x = 128, 10/64 right of it: even at 5.33 cells, the cut at 5.
+    EXPECT_EQ(again[0].x1, 80);
+    EXPECT_EQ(again[1].x0, 80);
+}
+
+}  // namespace

@@ -6,6 +6,11 @@ tests/paraview/run_parallel_test.sh under mpiexec).
       (PARTITIONS pieces; 0 = one per rank, fewer leaves ranks empty), with each method,
       into OUTDIR/<method>_<TAG>.png, plus the surface mask OUTDIR/mask_<TAG>.png and the
       rank of each pixel's piece OUTDIR/ranks_<TAG>.png (ParaView's process ids).
+  pvpython parallel_test.py PLUGIN OUTDIR client TAG PARTITIONS PORT
+      the same renders through a client connected to a pvserver on localhost:PORT (the
+      plugin loaded on both sides), screenshots saved by the client.
+  mpiexec ... pvbatch parallel_test.py PLUGIN OUTDIR glerror
+      FlowSurf where one rank's OpenGL is too old: the same error on every rank, no hang.
   pvbatch parallel_test.py PLUGIN OUTDIR compare REF TAG...
       compares each TAG's images with REF's: the mean absolute gray difference over the
       surface must be <= 1 and every 16x16 tile's mean <= 3 (issue 11); prints the numbers
@@ -48,8 +53,13 @@ def write_png(path, gray):
     w.Write()
 
 
-def render(TAG, PARTITIONS):
-    LoadPlugin(PLUGIN, ns=globals())
+def render(TAG, PARTITIONS, server=None):
+    if server:  # client-server: the plugin on both sides, the pipeline and rendering remote
+        Connect('localhost', server)
+        LoadPlugin(PLUGIN, remote=False, ns=globals())
+        LoadPlugin(PLUGIN, remote=True, ns=globals())
+    else:
+        LoadPlugin(PLUGIN, ns=globals())
     sphere = Sphere(Radius=1.0, ThetaResolution=192, PhiResolution=96)
     spin = Calculator(Input=sphere, ResultArrayName='V', Function='-coordsY*iHat+coordsX*jHat')
     split = RedistributeDataSet(Input=spin)
@@ -134,7 +144,31 @@ def compare(REF, TAGS):
 
 
 # No sys.exit: pvbatch's teardown after it raised an X error (GLXBadContext) here.
+def gl_error():
+    """One rank without OpenGL 4.5 (MESA_GL_VERSION_OVERRIDE=3.3 on it): every rank reports
+    that rank's error, none waits in a collective step, and ParaView goes on rendering."""
+    LoadPlugin(PLUGIN, ns=globals())
+    sphere = Sphere(Radius=1.0, ThetaResolution=64, PhiResolution=32)
+    spin = Calculator(Input=sphere, ResultArrayName='V', Function='-coordsY*iHat+coordsX*jHat')
+    pieces = ExtractSurface(Input=RedistributeDataSet(Input=spin))
+    view = CreateRenderView()
+    view.ViewSize = [200, 200]
+    rep = Show(pieces, view)
+    Render(view)
+    print('FLOWSURF_STARTED', flush=True)
+    rep.SetRepresentationType('FlowSurf')
+    rep.FlowSurfVectors = ['POINTS', 'V']
+    Render(view)
+    rep.SetRepresentationType('Surface')
+    Render(view)
+    print('SURVIVED', flush=True)
+
+
 if MODE == 'render':
     render(sys.argv[4], int(sys.argv[5]))
+elif MODE == 'glerror':
+    gl_error()
+elif MODE == 'client':
+    render(sys.argv[4], int(sys.argv[5]), int(sys.argv[6]))
 else:
     compare(sys.argv[4], sys.argv[5:])

@@ -54,6 +54,31 @@ run np1 0 1
 run np2 0 2
 run np4 0 4
 run np4of2 2 4
-xrun "$OUT/compare.log" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" compare np1 np2 np4 np4of2
+# A rank whose OpenGL is too old (Mesa told to report 3.3 on rank 1 only): both ranks
+# report rank 1's error, neither hangs in a collective step, ParaView renders on.
+echo "== glerror: rank 1 without OpenGL 4.5"
+xrun "$OUT/glerror.log" "${MPI[@]}" -np 1 pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" glerror : \
+  -np 1 -x MESA_GL_VERSION_OVERRIDE=3.3 pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" glerror
+rc=$?
+errors=$(grep -c "FlowSurf needs OpenGL 4.5; ParaView's context is 3.3.* (on process 1 of 2)" "$OUT/glerror.log")
+echo "glerror: exit $rc, the error reported $errors time(s)"
+[ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/glerror.log" ||
+  { echo "glerror: expected rank 1's error on both ranks and a render after it"; cat "$OUT/glerror.log"; exit 1; }
+# Client-server: pvserver on 2 ranks, a pvpython client that connects, loads the plugin on
+# both sides and saves the screenshots (compared with 1-rank pvbatch below).
+PORT=$((20000 + RANDOM % 20000))
+echo "== cs2: pvserver on 2 ranks, a client on port $PORT"
+timeout -k 10 200 xvfb-run -a -n "$((200 + RANDOM % 600))" "${MPI[@]}" -np 2 pvserver --server-port="$PORT" \
+  --force-offscreen-rendering >"$OUT/cs2_server.log" 2>&1 &
+server=$!
+for _ in $(seq 1 60); do grep -q "Accepting connection" "$OUT/cs2_server.log" 2>/dev/null && break; sleep 1; done
+timeout -k 10 150 "$PREFIX/usr/bin/pvpython" --force-offscreen-rendering "$HERE/parallel_test.py" "$PLUGIN" "$OUT" \
+  client cs2 0 "$PORT" >"$OUT/cs2.log" 2>&1
+rc=$?
+wait "$server" 2>/dev/null
+grep -E "RENDERED" "$OUT/cs2.log"
+[ $rc -eq 0 ] && grep -q "^RENDERED cs2" "$OUT/cs2.log" ||
+  { echo "cs2: client failed ($rc)"; cat "$OUT/cs2.log"; tail -n 30 "$OUT/cs2_server.log"; exit 1; }
+xrun "$OUT/compare.log" pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" compare np1 np2 np4 np4of2 cs2
 cat "$OUT/compare.log"
 grep -q '^PASSED' "$OUT/compare.log"

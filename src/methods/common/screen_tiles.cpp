@@ -129,6 +129,34 @@ PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, i
         .intersect(all);
 }
 
+std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,
+                               const std::vector<PixelRect>& tiles, std::span<const float> ms) {
+    if (tiles.size() != ms.size()) throw GlError("costWeights: one cost per tile");
+    // The tile holding each cell (its lower-left pixel), and each tile's weight.
+    std::vector<int> owner(weights.size(), -1);
+    std::vector<double> tileWeight(tiles.size(), 0.0);
+    for (size_t c = 0; c < weights.size(); ++c) {
+        const int x = int(c % size_t(cellsX)) * cellPx, y = int(c / size_t(cellsX)) * cellPx;
+        for (size_t t = 0; t < tiles.size(); ++t)
+            if (x >= tiles[t].x0 && x < tiles[t].x1 && y >= tiles[t].y0 && y < tiles[t].y1) {
+                owner[c] = int(t);
+                tileWeight[t] += weights[c];
+                break;
+            }
+    }
+    double cost = 0, weight = 0;
+    for (size_t t = 0; t < tiles.size(); ++t) cost += ms[t], weight += tileWeight[t];
+    const double mean = weight > 0 ? cost / weight : 0.0;
+    std::vector<float> out(weights.begin(), weights.end());
+    if (!(mean > 0)) return out;
+    for (size_t c = 0; c < weights.size(); ++c) {
+        const int t = owner[c];
+        if (t < 0 || !(tileWeight[size_t(t)] > 0) || !(ms[size_t(t)] > 0)) continue;
+        out[c] = float(double(weights[c]) * (double(ms[size_t(t)]) / tileWeight[size_t(t)]) / mean);
+    }
+    return out;
+}
+
 TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill) {
     if (local.width() != tile.width() || local.height() != tile.height() || local.format() != tile.format())
         throw GlError("screen tiles: a layer's tile texture has another size or format than its own");
@@ -185,7 +213,12 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     // The image stages cost mostly per surface pixel; a little per pixel keeps empty
     // screen parts from collapsing into one tile.
     for (size_t c = 0; c < weight.size(); ++c) weight[c] += 0.05f * float(kCellPx * kCellPx);
+    if (costScale_.size() != weight.size()) costScale_.assign(weight.size(), 1.0f);
+    for (size_t c = 0; c < weight.size(); ++c) weight[c] *= costScale_[c];
     tiles_ = splitScreen(weight, cellsX, cellsY, kCellPx, w, h, n);
+    weights_ = std::move(weight);
+    cellsX_ = cellsX;
+    splitDue_ = false;
     const PixelRect previous = region_;
     region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect(full);
 
@@ -315,6 +348,23 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     for (float d : best) traffic_.coveredPixels += d < 1.0f;
 }
 
+void ScreenTiles::reportCost(ProcessGroup& group, float ms) {
+    if (!ready()) return;
+    const float mine[1] = {ms};
+    const std::vector<float> all = group.gather(mine);
+    double total = 0, slowest = 0;
+    for (float v : all) total += v, slowest = std::max(slowest, double(v));
+    const double mean = total / double(all.size());
+    imbalanced_ = slowest > double(kImbalance) * mean && mean > 0 ? imbalanced_ + 1 : 0;
+    if (imbalanced_ < kImbalanceFrames) return;
+    // The same on every process: the same gathered costs and the same last split.
+    const std::vector<float> scaled = costWeights(weights_, cellsX_, kCellPx, tiles_, all);
+    for (size_t c = 0; c < scaled.size(); ++c) costScale_[c] *= weights_[c] > 0 ? scaled[c] / weights_[c] : 1.0f;
+    imbalanced_ = 0;
+    splitDue_ = true;
+    ++rebalances_;
+}
+
 void ScreenTiles::shareTiles(ProcessGroup& group, const gl::Texture2D& texture) {
     const int n = group.size(), me = group.rank();
     if (!ready() || n != int(tiles_.size())) throw GlError("screen tiles: tiles shared before they were made");
@@ -362,6 +412,7 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
             for (int x = r.x0; x < r.x1; ++x)
                 if (qd[size_t(y - qr.y0) * size_t(qr.width()) + size_t(x - qr.x0)] < 1.0f)
                     values.push_back(mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)]);
+        if (values.empty()) continue;
         sends[size_t(q)].resize(values.size() * 4);
         std::memcpy(sends[size_t(q)].data(), values.data(), values.size() * 4);
         traffic_.bytesSent += sends[size_t(q)].size();

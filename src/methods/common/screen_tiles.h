@@ -68,6 +68,14 @@ PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, i
 std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
                                    int width, int height, int parts);
 
+// Load balance from measured costs: the cell weights of the last split (`weights`, cellsX
+// per row of cellPx pixels) scaled so that each tile's cells carry its measured cost
+// (`ms[t]`, tile t of `tiles`): a cell's new weight is its weight times its tile's cost
+// per unit of weight over the mean cost per unit of weight. A split of the result gives the
+// tiles that took longer fewer cells.
+std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,
+                               const std::vector<PixelRect>& tiles, std::span<const float> ms);
+
 // One of the per-pixel buffers an image stage reads: this process's own render (`local`)
 // and the texture of the same size and format the tile's merge goes into (`tile`; it may
 // be `local` itself): 2D textures, or one layer of two 3D textures (the hybrid's time
@@ -112,6 +120,18 @@ public:
     // advect from (any source coordinate, any camera motion, freeze and a new split alike).
     void shareTiles(ProcessGroup& group, const gl::Texture2D& texture);
 
+    // Collective, once per frame after the image stages: `ms`, what they took on this
+    // process's tile. When the slowest tile has taken more than kImbalance times the mean
+    // for kImbalanceFrames frames in a row, the cells are weighted by the measured costs
+    // (costWeights) from then on, and splitDue() says so until the next distribute, which
+    // the method then runs at once (from its own buffers: nothing else is needed, the
+    // history being whole on every process).
+    static constexpr float kImbalance = 1.15f;
+    static constexpr int kImbalanceFrames = 3;
+    void reportCost(ProcessGroup& group, float ms);
+    bool splitDue() const { return splitDue_; }
+    int rebalances() const { return rebalances_; }  // how often the costs redid the split
+
     // This process's tile (where its image stages run) and the tile plus guard.
     const PixelRect& tile() const { return tiles_[size_t(rank_)]; }
     const PixelRect& region() const { return region_; }
@@ -134,6 +154,10 @@ private:
     std::vector<PixelRect> received_;
     std::vector<std::vector<float>> receivedDepth_;
     std::vector<float> values_;             // scratch for returnValues
+    // The last split's cell weights, the measured cost scale per cell, and the balance.
+    std::vector<float> weights_, costScale_;
+    int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
+    bool splitDue_ = false;
     TileTraffic traffic_;
 };
 

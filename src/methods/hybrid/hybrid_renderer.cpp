@@ -4,6 +4,7 @@
 #include "methods/common/gl_path.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace flowsurf::methods::hybrid {
@@ -36,6 +37,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
                    !core::sameCamera(in.camera, seedCamera_) || unsteady != haveLevels_ ||
                    (unsteady && !(*in.levels == seedLevels_));
     const float speedRef = in.surface->maxSpeed();
+    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (lastDynamic_) {
         timer_.begin("seed textures");
         seeds_.render(*in.surface, in.camera);
@@ -45,27 +47,25 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
             timer_.begin("velocity levels");
             levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
         }
-        if (tiled) {
-            // The whole surface's seeds (and time levels) over this process's tile and the
-            // streaks' reach; the seeds' depth decides every layer's nearest fragment.
-            timer_.begin("tile exchange");
-            if (!tiles_) {
-                tiles_ = std::make_unique<ScreenTiles>(viewport_);
-                tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
-            }
-            std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
-            if (unsteady) {
-                if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
-                for (int j = 0; j < levels_.count(); ++j)
-                    layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
-            }
-            tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
-        } else if (in.group) {
-            seeds_.merge(*in.group);  // the whole surface's seeds
-        }
+        if (!tiled && in.group) seeds_.merge(*in.group);  // the whole surface's seeds
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
+    }
+    if (tiled && (lastDynamic_ || tiles_->splitDue())) {
+        // The whole surface's seeds (and time levels) over this process's tile and the
+        // streaks' reach; the seeds' depth decides every layer's nearest fragment. Also
+        // when the measured costs call for a new split (a still camera).
+        timer_.begin("tile exchange");
+        if (!tileVelocity_)
+            tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
+        std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
+        if (unsteady) {
+            if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
+            for (int j = 0; j < levels_.count(); ++j)
+                layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
+        }
+        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
     }
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
@@ -93,9 +93,13 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
+    const auto traced = std::chrono::steady_clock::now();
     if (!tiled || !tiles_->tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
     if (tiled) {
-        // I back to the processes whose fragments cover each pixel of the tile.
+        // The tile's cost (the return reads I back, so the wait costs nothing), then I back
+        // to the processes whose fragments cover each pixel of the tile.
+        glFinish();
+        tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
         timer_.begin("tile return");
         tiles_->returnValues(*in.group, lic_.texture());
     }

@@ -3,6 +3,7 @@
 #include "methods/common/gl_path.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace flowsurf::methods::isa {
 
@@ -53,7 +54,23 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
     // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
     // source view changed). Static: reuse (1)-(2).
-    lastDynamic_ = meshStale(in, plan);
+    // Tiles: the whole surface's velocity over this tile plus a grid cell, its depth
+    // everywhere; again from the same image when the measured costs call for a new split.
+    const auto distribute = [&] {
+        timer_.begin("tile exchange");
+        if (!tileVelocity_) {
+            tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
+            for (gl::Texture2D& d : mergedDepth_)
+                d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+        }
+        const SurfaceGBuffer& v = velocityImage_[vi_];
+        const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
+        tiles_->distribute(*in.group, v.depth(), layers, guardPx());
+        tiles_->shareTiles(*in.group, mergedDepth_[vi_]);
+    };
+    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
+    const bool resplit = tiled && tiles_->splitDue() && !viewChanged(in);
+    lastDynamic_ = meshStale(in, plan) || resplit;
     if (lastDynamic_) {
         const int prevVi = vi_;
         if (viewChanged(in)) {
@@ -61,23 +78,10 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
             // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
             timer_.begin("velocity image");
             velocityImage_[vi_].render(*in.surface, in.camera);
-            if (tiled) {
-                // The whole surface's velocity over this tile plus a grid cell, its depth
-                // everywhere.
-                timer_.begin("tile exchange");
-                if (!tiles_) {
-                    tiles_ = std::make_unique<ScreenTiles>(viewport_);
-                    tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
-                    for (gl::Texture2D& d : mergedDepth_)
-                        d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-                }
-                const SurfaceGBuffer& v = velocityImage_[vi_];
-                const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
-                tiles_->distribute(*in.group, v.depth(), layers, guardPx());
-                tiles_->shareTiles(*in.group, mergedDepth_[vi_]);
-            } else if (in.group) {
-                velocityImage_[vi_].merge(*in.group);  // the whole surface's image
-            }
+            if (tiled) distribute();
+            else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        } else if (resplit) {
+            distribute();
         }
 
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
@@ -101,12 +105,18 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    const auto advected = std::chrono::steady_clock::now();
     if (!tiled || !tiles_->tile().empty())
         textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
                                 flow_.fbo(target), params_.isa.edgeBlending, noise, tiled ? tiles_->tile() : PixelRect{});
     current_ = target;
     if (tiled) {
-        timer_.begin("tile exchange");  // F_a whole on every process: next frame's source
+        // The tile's cost (sharing reads F_a back: the wait costs nothing), then F_a whole
+        // on every process: next frame's source.
+        glFinish();
+        tiles_->reportCost(*in.group,
+                           std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
+        timer_.begin("tile exchange");
         tiles_->shareTiles(*in.group, flow_.texture(target));
     }
 
