@@ -6,7 +6,7 @@ tests/paraview/run_parallel_test.sh under mpiexec).
       (PARTITIONS pieces; 0 = one per rank, fewer leaves ranks empty), with each method,
       into OUTDIR/<method>_<TAG>.png, plus the surface mask OUTDIR/mask_<TAG>.png and the
       rank of each pixel's piece OUTDIR/ranks_<TAG>.png (ParaView's process ids).
-  pvpython parallel_test.py PLUGIN OUTDIR client TAG PARTITIONS PORT
+  python3 parallel_test.py PLUGIN OUTDIR client TAG PARTITIONS PORT
       the same renders through a client connected to a pvserver on localhost:PORT (the
       plugin loaded on both sides), screenshots saved by the client.
   mpiexec ... pvbatch parallel_test.py PLUGIN OUTDIR glerror
@@ -56,6 +56,8 @@ def write_png(path, gray):
 def render(TAG, PARTITIONS, server=None):
     if server:  # client-server: the plugin on both sides, the pipeline and rendering remote
         Connect('localhost', server)
+        # Render on the server's ranks always (else small data comes to the client to render).
+        GetSettingsProxy('RenderViewSettings').RemoteRenderThreshold = 0.0
         LoadPlugin(PLUGIN, remote=False, ns=globals())
         LoadPlugin(PLUGIN, remote=True, ns=globals())
     else:
