@@ -66,20 +66,32 @@ echo "glerror: exit $rc, the error reported $errors time(s)"
   { echo "glerror: expected rank 1's error on both ranks and a render after it"; cat "$OUT/glerror.log"; exit 1; }
 # Client-server: pvserver on 2 ranks, a Python client that connects, loads the plugin on
 # both sides and saves the screenshots (compared with 1-rank pvbatch below).
-PORT=$((20000 + RANDOM % 20000))
-echo "== cs2: pvserver on 2 ranks, a client on port $PORT"
-timeout -k 10 200 xvfb-run -a -n "$((200 + RANDOM % 600))" "${MPI[@]}" -np 2 pvserver --server-port="$PORT" \
-  --force-offscreen-rendering >"$OUT/cs2_server.log" 2>&1 &
-server=$!
-for _ in $(seq 1 60); do grep -q "Accepting connection" "$OUT/cs2_server.log" 2>/dev/null && break; sleep 1; done
-# The client is Debian's python3 with ParaView's modules first on its path (the private
-# prefix's pvpython finds Debian's VTK 9.1 modules first and crashes on import).
-timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" /usr/bin/python3 "$HERE/parallel_test.py" "$PLUGIN" \
-  "$OUT" client cs2 0 "$PORT" >"$OUT/cs2.log" 2>&1
-rc=$?
-for _ in $(seq 1 20); do kill -0 "$server" 2>/dev/null || break; sleep 1; done
-kill "$server" 2>/dev/null
-wait "$server" 2>/dev/null
+# A display taken by another xvfb-run starting at the same moment ("bad X server
+# connection") is tried again, as in xrun.
+cs() {
+  local PORT=$((20000 + RANDOM % 20000)) server rc
+  echo "== cs2: pvserver on 2 ranks, a client on port $PORT"
+  timeout -k 10 200 xvfb-run -a -n "$((200 + RANDOM % 600))" "${MPI[@]}" -np 2 pvserver --server-port="$PORT" \
+    --force-offscreen-rendering >"$OUT/cs2_server.log" 2>&1 &
+  server=$!
+  for _ in $(seq 1 60); do grep -q "Accepting connection" "$OUT/cs2_server.log" 2>/dev/null && break; sleep 1; done
+  # The client is Debian's python3 with ParaView's modules first on its path (the private
+  # prefix's pvpython finds Debian's VTK 9.1 modules first and crashes on import).
+  timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" /usr/bin/python3 "$HERE/parallel_test.py" "$PLUGIN" \
+    "$OUT" client cs2 0 "$PORT" >"$OUT/cs2.log" 2>&1
+  rc=$?
+  for _ in $(seq 1 20); do kill -0 "$server" 2>/dev/null || break; sleep 1; done
+  kill "$server" 2>/dev/null
+  wait "$server" 2>/dev/null
+  return $rc
+}
+for attempt in 1 2 3; do
+  cs
+  rc=$?
+  grep -q -e "bad X server connection" -e "Xvfb failed to start" "$OUT/cs2_server.log" "$OUT/cs2.log" || break
+  echo "no X display (attempt $attempt), again"
+  sleep 2
+done
 grep -E "RENDERED" "$OUT/cs2.log"
 [ $rc -eq 0 ] && grep -q "^RENDERED cs2" "$OUT/cs2.log" ||
   { echo "cs2: client failed ($rc)"; cat "$OUT/cs2.log"; tail -n 30 "$OUT/cs2_server.log"; exit 1; }
