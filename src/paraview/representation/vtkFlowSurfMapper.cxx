@@ -6,6 +6,7 @@
 #include "gl_state_guard.h"
 #include "host_look.h"
 #include "polydata_to_mesh.h"
+#include "rank_stats.h"
 #include "vtk_process_group.h"
 
 #include "core/errors.h"
@@ -23,9 +24,6 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <ctime>
-#include <fstream>
 #include <string>
 #include <algorithm>
 #include <optional>
@@ -45,13 +43,6 @@ public:
   fs::core::SurfaceMesh load(size_t) override { return mesh; }
   std::string label(size_t) const override { return "FlowSurf input"; }
   fs::core::Bounds bounds() override { return mesh.bounds(); }
-};
-
-// Wall and process CPU time (ms), for FLOWSURF_RANK_STATS.
-struct RenderClock
-{
-  double wallMs = 0, cpuMs = 0;
-  static RenderClock now();
 };
 
 }  // namespace
@@ -135,8 +126,7 @@ struct vtkFlowSurfMapper::Internals
       throw fs::GlError(agreed);
     }
   }
-  void logRankStats(const char* dir, const RenderClock& start, bool warmup);
-  long statsRenders = 0;
+  std::unique_ptr<fs::paraview::RankStats> stats = fs::paraview::RankStats::fromEnvironment();
   void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
 };
 
@@ -391,17 +381,11 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
   // otherwise the last image. The clock is the command line's (session/playback.h).
   const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
-  const char* statsDir = std::getenv("FLOWSURF_RANK_STATS");
-  if (statsDir)
+  const bool frames = warmup || timeChanged || cameraChanged;
+  if (stats && frames)
   {
-    // Each stage charged its own work: glFinish and a clock at every boundary.
-    for (size_t i = 0; i < playback->viewCount(); ++i)
-    {
-      playback->view(i).timer().setSynchronous(true);
-    }
-    playback->setStageTiming(true);
+    stats->begin(*playback);
   }
-  const RenderClock start = statsDir ? RenderClock::now() : RenderClock{};
   if (warmup)
   {
     playback->warmUp({ camera });
@@ -411,53 +395,15 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   {
     playback->render({ camera });
   }
-  if (statsDir && (warmup || timeChanged || cameraChanged))
+  if (stats && frames)
   {
-    logRankStats(statsDir, start, warmup);
+    stats->end(*playback, group ? group->rank() : 0, group ? group->size() : 1, warmup);
   }
   lastTime = viewTime;
   lastCamera = camera;
 
   // (4) composite into ParaView's framebuffer by depth
   drawComposite(guard, x0, y0, w, h);
-}
-
-RenderClock RenderClock::now()
-{
-  timespec wall{}, cpu{};
-  clock_gettime(CLOCK_MONOTONIC, &wall);
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
-  return { wall.tv_sec * 1e3 + wall.tv_nsec * 1e-6, cpu.tv_sec * 1e3 + cpu.tv_nsec * 1e-6 };
-}
-
-// FLOWSURF_RANK_STATS=DIR: one JSON line per render per process in DIR/rank<r>.jsonl, for
-// bench/paraview/scaling.sh: wall and CPU time of the frame loop (the process's CPU time,
-// llvmpipe's threads included; glFinish first, in this mode only) and what the tiles sent.
-void vtkFlowSurfMapper::Internals::logRankStats(const char* dir, const RenderClock& start, bool warmup)
-{
-  glFinish();
-  const RenderClock end = RenderClock::now();
-  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
-  fs::methods::FlowMethod& method = playback->view(0);
-  const fs::methods::TileTraffic t = method.tileTraffic();
-  std::ofstream out(std::string(dir) + "/rank" + std::to_string(rank) + ".jsonl", std::ios::app);
-  out << "{\"rank\": " << rank << ", \"ranks\": " << ranks << ", \"render\": " << statsRenders++
-      << ", \"method\": \"" << method.name() << "\", \"parallel\": \""
-      << fs::methods::nameOf(fs::methods::kParallelModeNames, options.params.common.parallel)
-      << "\", \"warmup\": " << (warmup ? "true" : "false")
-      << ", \"dynamic\": " << (method.lastFrameDynamic() ? "true" : "false") << ", \"wall_ms\": " << end.wallMs - start.wallMs
-      << ", \"cpu_ms\": " << end.cpuMs - start.cpuMs << ", \"bytes_sent\": " << t.bytesSent
-      << ", \"bytes_received\": " << t.bytesReceived << ", \"tile_px\": " << t.tilePixels
-      << ", \"guard_px\": " << t.guardPixels << ", \"covered_px\": " << t.coveredPixels << ", \"stages_ms\": {";
-  fs::gl::StageTimer& timer = playback->view(0).timer();
-  const char* sep = "";
-  for (const auto& [stage, ms] : timer.meanMs())
-  {
-    out << sep << "\"" << stage << "\": " << ms;
-    sep = ", ";
-  }
-  out << "}}\n";
-  timer.reset();
 }
 
 void vtkFlowSurfMapper::Internals::drawComposite(

@@ -1,0 +1,62 @@
+#include "rank_stats.h"
+
+#include "methods/common/params.h"
+
+#include <epoxy/gl.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+
+namespace flowsurf::paraview {
+
+namespace {
+double clockMs(clockid_t id)
+{
+  timespec t{};
+  clock_gettime(id, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+}  // namespace
+
+std::unique_ptr<RankStats> RankStats::fromEnvironment()
+{
+  const char* dir = std::getenv("FLOWSURF_RANK_STATS");
+  return dir && *dir ? std::unique_ptr<RankStats>(new RankStats(dir)) : nullptr;
+}
+
+void RankStats::begin(session::Playback& playback)
+{
+  for (size_t i = 0; i < playback.viewCount(); ++i)
+  {
+    playback.view(i).timer().setSynchronous(true);
+  }
+  playback.setStageTiming(true);
+  wallMs_ = clockMs(CLOCK_MONOTONIC);
+  cpuMs_ = clockMs(CLOCK_PROCESS_CPUTIME_ID);
+}
+
+void RankStats::end(session::Playback& playback, int rank, int ranks, bool warmup)
+{
+  glFinish();
+  methods::FlowMethod& method = playback.view(0);
+  const methods::TileTraffic t = method.tileTraffic();
+  nlohmann::ordered_json line = { { "rank", rank }, { "ranks", ranks }, { "render", renders_++ },
+    { "method", method.name() },
+    { "parallel", methods::nameOf(methods::kParallelModeNames, playback.options().params.common.parallel) },
+    { "warmup", warmup }, { "dynamic", method.lastFrameDynamic() },
+    { "wall_ms", clockMs(CLOCK_MONOTONIC) - wallMs_ }, { "cpu_ms", clockMs(CLOCK_PROCESS_CPUTIME_ID) - cpuMs_ },
+    { "bytes_sent", t.bytesSent }, { "bytes_received", t.bytesReceived }, { "tile_px", t.tilePixels },
+    { "guard_px", t.guardPixels }, { "covered_px", t.coveredPixels } };
+  nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+  for (const auto& [stage, ms] : method.timer().meanMs())
+  {
+    stages[stage] = ms;
+  }
+  line["stages_ms"] = stages;
+  method.timer().reset();
+  std::ofstream(dir_ + "/rank" + std::to_string(rank) + ".jsonl", std::ios::app) << line.dump() << "\n";
+}
+
+}  // namespace flowsurf::paraview
