@@ -159,6 +159,28 @@ std::pair<double, double> difference(const Images& a, const Images& b, const cor
     return {n ? sum / n : 0.0, worst};
 }
 
+// `n` processes as threads of one group, each with its own GL context: `render(member, r)`
+// makes rank r's images; what a thread throws fails the test, naming its rank.
+std::vector<Images> inThreads(int n, const std::function<Images(methods::ProcessGroup&, int)>& render) {
+    ThreadGroup group(n);
+    std::vector<Images> images(static_cast<size_t>(n));
+    std::vector<std::string> errors(static_cast<size_t>(n));
+    std::vector<std::thread> threads;
+    for (int r = 0; r < n; ++r)
+        threads.emplace_back([&, r] {
+            try {
+                gl::HeadlessContext context;
+                ThreadGroup::Member member(group, r);
+                images[size_t(r)] = render(member, r);
+            } catch (const std::exception& e) {
+                errors[size_t(r)] = e.what();
+            }
+        });
+    for (auto& t : threads) t.join();
+    for (int r = 0; r < n; ++r) EXPECT_EQ(errors[size_t(r)], "") << "rank " << r;
+    return images;
+}
+
 class ParallelMerge : public ::testing::TestWithParam<std::string> {};
 
 // The spinning sphere cut into 2 and 4 pieces (vertical seams through the view; 4: also a
@@ -182,23 +204,10 @@ TEST_P(ParallelMerge, PiecesGiveTheOneProcessImage) {
                 const int col = c.x < 0.0f ? 0 : 1, row = c.y < 0.1f ? 0 : 1;
                 return (n == 2 ? col : col * 2 + row) == r;
             }));
-        ThreadGroup group(n);
-        std::vector<Images> images(static_cast<size_t>(n));
-        std::vector<std::string> errors(static_cast<size_t>(n));
-        std::vector<std::thread> threads;
-        for (int r = 0; r < n; ++r)
-            threads.emplace_back([&, r] {
-                try {
-                    gl::HeadlessContext context;  // one context per process
-                    ThreadGroup::Member member(group, r);
-                    images[size_t(r)] = renderWith(GetParam(), pieces[size_t(r)], still, vp, frames, &member, replicate);
-                } catch (const std::exception& e) {
-                    errors[size_t(r)] = e.what();
-                }
-            });
-        for (auto& t : threads) t.join();
+        const std::vector<Images> images = inThreads(n, [&](methods::ProcessGroup& member, int r) {
+            return renderWith(GetParam(), pieces[size_t(r)], still, vp, frames, &member, replicate);
+        });
         for (int r = 0; r < n; ++r) {
-            ASSERT_EQ(errors[size_t(r)], "") << "rank " << r;
             auto [mean, tile] = difference(one, images[size_t(r)], vp);
             std::printf("%s, %d processes, rank %d: mean %.3f, worst tile %.3f gray levels\n", GetParam().c_str(), n,
                         r, mean, tile);
@@ -252,24 +261,12 @@ std::vector<core::SurfaceMesh> sectors(const core::SurfaceMesh& mesh, int parts,
 Images renderInParallel(const std::string& method, const std::vector<core::SurfaceMesh>& pieces,
                         const std::function<core::Camera(int)>& cameraAt, const core::Viewport& vp, int frames,
                         const methods::MethodParams& params) {
-    const int n = int(pieces.size());
-    ThreadGroup group(n);
-    std::vector<Images> images(static_cast<size_t>(n));
-    std::vector<std::string> errors(static_cast<size_t>(n));
-    std::vector<std::thread> threads;
-    for (int r = 0; r < n; ++r)
-        threads.emplace_back([&, r] {
-            try {
-                gl::HeadlessContext context;
-                ThreadGroup::Member member(group, r);
-                images[size_t(r)] = renderWith(method, pieces[size_t(r)], cameraAt, vp, frames, &member, params);
-            } catch (const std::exception& e) {
-                errors[size_t(r)] = e.what();
-            }
-        });
-    for (auto& t : threads) t.join();
-    for (int r = 0; r < n; ++r) EXPECT_EQ(errors[size_t(r)], "") << "rank " << r;
-    return depthComposite(images, vp);
+    return depthComposite(inThreads(int(pieces.size()),
+                                    [&](methods::ProcessGroup& member, int r) {
+                                        return renderWith(method, pieces[size_t(r)], cameraAt, vp, frames, &member,
+                                                          params);
+                                    }),
+                          vp);
 }
 
 class TiledParallel : public ::testing::TestWithParam<std::string> {};
@@ -362,26 +359,13 @@ TEST(TiledParallelUnsteady, HybridPathlinesEqualTheOneProcessImage) {
     std::printf("hybrid, pathlines against streamlines: mean %.3f gray levels\n", steadyMean);
     EXPECT_GT(steadyMean, 1.0);  // the levels are in use: the check below can fail
     for (int parts : {2, 4}) {
-        ThreadGroup group(parts);
-        std::vector<Images> images(static_cast<size_t>(parts));
-        std::vector<std::string> errors(static_cast<size_t>(parts));
-        std::vector<std::thread> threads;
-        for (int r = 0; r < parts; ++r)
-            threads.emplace_back([&, r] {
-                try {
-                    gl::HeadlessContext context;
-                    ThreadGroup::Member member(group, r);
-                    PieceSteps piece(data, [r, parts](glm::vec3 c) {
-                        const float a = std::atan2(c.y, c.x) + 3.14159265f;
-                        return std::min(parts - 1, int(a / (6.2831853f / float(parts)))) == r;
-                    });
-                    images[size_t(r)] = playHybrid(piece, perFrame, frames, &member);
-                } catch (const std::exception& e) {
-                    errors[size_t(r)] = e.what();
-                }
+        const std::vector<Images> images = inThreads(parts, [&](methods::ProcessGroup& member, int r) {
+            PieceSteps piece(data, [r, parts](glm::vec3 c) {
+                const float a = std::atan2(c.y, c.x) + 3.14159265f;
+                return std::min(parts - 1, int(a / (6.2831853f / float(parts)))) == r;
             });
-        for (auto& t : threads) t.join();
-        for (int r = 0; r < parts; ++r) ASSERT_EQ(errors[size_t(r)], "") << "rank " << r;
+            return playHybrid(piece, perFrame, frames, &member);
+        });
         auto [mean, tile] = difference(one, depthComposite(images, vp), vp);
         std::printf("hybrid unsteady tiles, %d processes: mean %.3f, worst tile %.3f gray levels\n", parts, mean, tile);
         EXPECT_EQ(mean, 0.0) << parts << " processes";
