@@ -365,6 +365,39 @@ void ScreenTiles::reportCost(ProcessGroup& group, float ms) {
     ++rebalances_;
 }
 
+void ScreenTiles::pull(ProcessGroup& group, const gl::Texture2D& texture, const std::vector<PixelRect>& madeWith,
+                       const PixelRect& wanted) {
+    const int n = group.size(), me = group.rank();
+    if (int(madeWith.size()) != n) throw GlError("screen tiles: history pulled from another number of processes");
+    const PixelFormat f = pixelFormatOf(texture.format());
+    const float mine[4] = {float(wanted.x0), float(wanted.y0), float(wanted.x1), float(wanted.y1)};
+    const std::vector<float> all = group.gather(mine);  // pixel coordinates: exact in float
+    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    for (int q = 0; q < n; ++q) {
+        if (q == me) continue;
+        const size_t at = size_t(q) * 4;
+        const PixelRect want{int(all[at]), int(all[at + 1]), int(all[at + 2]), int(all[at + 3])};
+        const PixelRect r = want.intersect(madeWith[size_t(me)]);
+        if (r.empty()) continue;
+        std::vector<uint8_t>& out = sends[size_t(q)];
+        out.resize(16 + r.area() * f.bytes);
+        const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
+        std::memcpy(out.data(), header, 16);
+        readRect(texture, r, f, out.data() + 16);
+        traffic_.bytesSent += out.size();
+    }
+    const std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+    for (int t = 0; t < n; ++t) {
+        if (t == me || in[size_t(t)].empty()) continue;
+        Reader rd{in[size_t(t)]};
+        const PixelRect r = rd.rect();
+        if (r.empty() || !(r.intersect(wanted) == r) || !(r.intersect(madeWith[size_t(t)]) == r))
+            throw GlError("screen tiles: process " + std::to_string(t) + " sent history outside what was asked");
+        writeRect(texture, r, f, rd.take(r.area() * f.bytes));
+        traffic_.bytesReceived += in[size_t(t)].size();
+    }
+}
+
 void ScreenTiles::shareTiles(ProcessGroup& group, const gl::Texture2D& texture) {
     const int n = group.size(), me = group.rank();
     if (!ready() || n != int(tiles_.size())) throw GlError("screen tiles: tiles shared before they were made");
@@ -427,7 +460,8 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
             covered = {std::min(covered.x0, r.x0), std::min(covered.y0, r.y0), std::max(covered.x1, r.x1),
                        std::max(covered.y1, r.y1)};
     if (covered.empty()) return;
-    values_.assign(covered.area(), 0.0f);
+    values_.resize(covered.area());
+    readRect(values, covered, f, values_.data());  // what is not this piece's stays as it is
     for (int t = 0; t < n; ++t) {
         const PixelRect r = sent_[size_t(t)].intersect(tiles_[size_t(t)]);
         if (r.empty()) continue;

@@ -112,8 +112,16 @@ public:
     // Collective, every frame after the image stage: `values` (R32F, full size) holds the
     // stage's result over this process's tile; afterwards it holds at every pixel that this
     // process's piece covers (its `depth` < 1 in distribute) the value computed there by
-    // the tile's owner. Other pixels are left undefined.
+    // the tile's owner. Other pixels keep their values.
     void returnValues(ProcessGroup& group, const gl::Texture2D& values);
+
+    // Collective: history from its footprint. Every process states the rectangle of
+    // `texture` it will read this frame (`wanted`: where its advected coordinates land);
+    // the processes that own parts of it under `madeWith` (the split the texture was made
+    // with: tiles() then) send them, and they are written into `texture`; the rest of it is
+    // left as it is. Exact as long as `wanted` holds every texel read.
+    void pull(ProcessGroup& group, const gl::Texture2D& texture, const std::vector<PixelRect>& madeWith,
+              const PixelRect& wanted);
 
     // Collective: every process's tile of `texture` (full size; float, half or depth) to
     // every other process, so that each holds the whole image: the history ISA and IBFVS

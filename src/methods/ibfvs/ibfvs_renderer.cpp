@@ -1,5 +1,7 @@
 #include "methods/ibfvs/ibfvs_renderer.h"
 
+#include <cmath>
+
 namespace flowsurf::methods::ibfvs {
 
 IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
@@ -18,6 +20,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
+    if (tiledParallel(in, params_.common) && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (tiles_) tiles_->beginFrame();
     // Static and dynamic cases run the same stages [L Table II: IBFVS cost ~ N in both].
     lastDynamic_ = in.surface->generation() != lastGeneration_ || !core::sameCamera(in.camera, lastCamera_);
@@ -29,6 +32,20 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
     const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
+    const bool tiled = tiledParallel(in, c);
+    if (tiled && !madeWith_[source_].empty()) {
+        // Tiles: the source texture where this piece's fragments read it, from the processes
+        // that made it: the piece seen from the source view, plus the step (at most stepPx
+        // on screen), twice for safety, and the bicubic's reach.
+        timer_.begin("tile exchange");
+        const int margin = int(std::ceil(2.0f * c.stepPx)) + 3;
+        const PixelRect wanted =
+            projectedRect(in.surface->pieceBounds(), plan.sourceCamera.viewProjection(viewport_.aspect()), viewport_.width,
+                          viewport_.height)
+                .grown(margin)
+                .intersect({0, 0, viewport_.width, viewport_.height});
+        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
+    }
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
@@ -43,13 +60,13 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // next frame's source (the texture lives in the image). Tiles: each process merges its
     // tile by depth, then every tile goes to every process; shade, mask and depth stay
     // this piece's (its own fragments are what it composites).
-    if (tiledParallel(in, c)) {
+    if (tiled) {
+        // Each tile's F_a merged by depth; the owners keep it for the next frame's pulls.
         timer_.begin("tile exchange");
-        if (!tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
         const gl::Texture2D& fa = flow_.texture(target);
         const TileLayer layers[] = {TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
         tiles_->distribute(*in.group, depth_, layers, 0);
-        tiles_->shareTiles(*in.group, fa);
+        madeWith_[target] = tiles_->tiles();
     } else if (in.group) {
         mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
     }

@@ -12,6 +12,7 @@
 #include "methods/ibfvs/polygon_advection.h"
 
 #include <memory>
+#include <vector>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -41,7 +42,10 @@ private:
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
     bool lastDynamic_ = false;
-    std::unique_ptr<ScreenTiles> tiles_;  // parallel = tiles (screen_tiles.h)
+    // parallel = tiles (screen_tiles.h), and the split each F_a texture was made with: its
+    // owners, from whom a process pulls what its fragments read of it.
+    std::unique_ptr<ScreenTiles> tiles_;
+    std::vector<PixelRect> madeWith_[2];
 };
 
 }  // namespace flowsurf::methods::ibfvs

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <vector>
 
 namespace flowsurf::methods::isa {
 
@@ -105,19 +107,29 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    if (tiled && !madeWith_[source_].empty()) {
+        // The source F_a where this tile's pixels read it, from the processes that made it.
+        timer_.begin("tile exchange");
+        if (lastDynamic_ || !(footprintTile_ == tiles_->tile())) {
+            footprint_ = footprint(tiles_->tile());
+            footprintTile_ = tiles_->tile();
+        }
+        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
+    }
     const auto advected = std::chrono::steady_clock::now();
     if (!tiled || !tiles_->tile().empty())
         textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
                                 flow_.fbo(target), params_.isa.edgeBlending, noise, tiled ? tiles_->tile() : PixelRect{});
     current_ = target;
     if (tiled) {
-        // The tile's cost (sharing reads F_a back: the wait costs nothing), then F_a whole
-        // on every process: next frame's source.
+        // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
         glFinish();
         tiles_->reportCost(*in.group,
                            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
-        timer_.begin("tile exchange");
-        tiles_->shareTiles(*in.group, flow_.texture(target));
+        madeWith_[target] = tiles_->tiles();
+        // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
+        timer_.begin("tile return");
+        tiles_->returnValues(*in.group, flow_.texture(target));
     }
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
@@ -125,6 +137,30 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
+}
+
+// Where the pixels of `tile` read the source F_a: the box of the advection mesh's source
+// coordinates over the vertices the tile's pixels interpolate, plus the bicubic's reach.
+PixelRect IsaRenderer::footprint(const PixelRect& tile) const {
+    if (tile.empty()) return {};
+    const int r = params_.isa.gridRes, w = viewport_.width, h = viewport_.height;
+    const int i0 = std::clamp(tile.x0 * r / w, 0, r), i1 = std::clamp((tile.x1 * r + w - 1) / w + 1, 0, r);
+    const int j0 = std::clamp(tile.y0 * r / h, 0, r), j1 = std::clamp((tile.y1 * r + h - 1) / h + 1, 0, r);
+    const int nx = i1 - i0 + 1, ny = j1 - j0 + 1;
+    std::vector<glm::vec4> v(size_t(nx) * size_t(ny));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(advectionMesh_.vertices().id(), 0, i0, j0, 0, nx, ny, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(v.size() * sizeof(glm::vec4)), v.data());
+    glm::vec2 lo{float(w), float(h)}, hi{0.0f, 0.0f};
+    for (const glm::vec4& p : v) {
+        const glm::vec2 px = glm::vec2(p) * glm::vec2(float(w), float(h));
+        lo = glm::min(lo, px);
+        hi = glm::max(hi, px);
+    }
+    constexpr int kReach = 3;  // the bicubic's 4 x 4 texels around a coordinate, and rounding
+    return PixelRect{int(std::floor(lo.x)) - kReach, int(std::floor(lo.y)) - kReach, int(std::ceil(hi.x)) + kReach,
+                     int(std::ceil(hi.y)) + kReach}
+        .intersect({0, 0, w, h});
 }
 
 // How far beyond its tile a process reads the velocity image: the per-pixel warp

@@ -12,6 +12,7 @@
 #include "methods/common/surface_gbuffer.h"
 
 #include <memory>
+#include <vector>
 
 namespace flowsurf::methods::isa {
 
@@ -54,10 +55,16 @@ private:
     // parallel = tiles (screen_tiles.h): this process advects its own tile. The velocity
     // image merged over the tile plus one grid cell (the mesh vertices it interpolates),
     // the whole surface's depth per velocity image (the edge test's source depth is read
-    // wherever the flow came from) and F_a whole on every process (shared each frame).
+    // wherever the flow came from: shared whole once per view), and of F_a the tile and
+    // what its pixels read (pulled from its makers each frame).
     std::unique_ptr<ScreenTiles> tiles_;
     gl::Texture2D tileVelocity_;
     gl::Texture2D mergedDepth_[2];
+    // The split each F_a texture was made with (its owners, from whom a process pulls the
+    // part its tile reads), and this tile's footprint in the source F_a.
+    std::vector<PixelRect> madeWith_[2];
+    PixelRect footprint_, footprintTile_;
+    PixelRect footprint(const PixelRect& tile) const;
     int guardPx() const;
 };
 
