@@ -9,15 +9,17 @@
 //           band (what the stages read around the tile: the method's own reach), and the
 //           owner merges them by depth, the nearest fragment winning (on a tie the lowest
 //           rank), so its buffers over the tile and guard equal the one-process buffers;
-// and every frame, for the hybrid (its image stage's output feeds the overlay only):
-//   return  the owner sends the image stage's result (R32F) at each pixel of its tile back
+// and every frame:
+//   return  the owner sends the image stage's result (R32F: the hybrid's I, ISA's F_a; IBFVS
+//           draws its own fragments' F_a itself) at each pixel of its tile back
 //           to every process whose piece covers that pixel, which overlays and composites
 //           its own fragments with its own shade, mask and depth; the host's depth
 //           compositing (ParaView's IceT) keeps the nearest, as for any surface.
-// or, for ISA and IBFVS (whose F_a is next frame's input, read at the advected coordinates
-// anywhere in the image, and whose depth is the edge test's source depth):
-//   share   every owner's tile of F_a (and, on a new view, of the merged depth) goes to every
-//           process, so each overlays its own fragments and advects from the whole image.
+// and for ISA and IBFVS, whose F_a is next frame's input, read at the advected coordinates:
+//   pull    each frame a process obtains from the owners of the split that made the source
+//           F_a exactly the rectangle its pixels read (its footprint), before advecting;
+//   share   ISA's merged depth, which the edge test reads wherever the flow came from, goes
+//           whole to every process once per view.
 // The result at every pixel equals the one-process image as long as the stages read no
 // further than the guard (the methods derive it from their parameters).
 // The idea of screen-space decomposition with guard pixels for a parallel surface LIC is
@@ -25,7 +27,8 @@
 // value to the process whose fragment won are flowsurf's.
 // Cost per dynamic frame and process: one read-back of depth (4 B/px) and of the layers
 // over the piece's covered rectangle; messages of 4 B per pixel of tile plus guard and the
-// layers' bytes per covered pixel; per frame 4 B per covered pixel back.
+// layers' bytes per covered pixel; per frame 4 B per covered pixel back, the footprint's
+// 4 B per pixel outside the tile, and one float per process (the measured cost).
 #pragma once
 
 #include "core/camera.h"
@@ -124,8 +127,8 @@ public:
               const PixelRect& wanted);
 
     // Collective: every process's tile of `texture` (full size; float, half or depth) to
-    // every other process, so that each holds the whole image: the history ISA and IBFVS
-    // advect from (any source coordinate, any camera motion, freeze and a new split alike).
+    // every other process, so that each holds the whole image (ISA's merged depth: the
+    // edge test's source depth, read wherever the flow came from).
     void shareTiles(ProcessGroup& group, const gl::Texture2D& texture);
 
     // Collective, once per frame after the image stages: `ms`, what they took on this
