@@ -1,0 +1,114 @@
+#include "methods/common/screen_split.h"
+
+#include "core/errors.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace flowsurf::methods {
+
+namespace {
+
+// Recursive bisection of the cell rectangle [cx0, cx1) x [cy0, cy1) into `parts`.
+void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int cy1, int parts,
+           std::vector<std::array<int, 4>>& out) {
+    if (parts == 1) {
+        out.push_back({cx0, cy0, cx1, cy1});
+        return;
+    }
+    const int first = parts / 2;
+    const bool alongX = (cx1 - cx0) >= (cy1 - cy0);
+    const int lo = alongX ? cx0 : cy0, hi = alongX ? cx1 : cy1;
+    // The weight of each slice across the cut direction.
+    std::vector<double> slice(size_t(std::max(0, hi - lo)), 0.0);
+    for (int y = cy0; y < cy1; ++y)
+        for (int x = cx0; x < cx1; ++x) slice[size_t((alongX ? x : y) - lo)] += w[size_t(y) * size_t(cellsX) + size_t(x)];
+    double total = 0;
+    for (double s : slice) total += s;
+    const double target = total * double(first) / double(parts);
+    // The cut c (lo < c < hi where possible) whose weight below is nearest the target.
+    int cut = lo + (hi - lo) * first / parts;
+    if (total > 0) {
+        double below = 0, best = -1;
+        for (int c = lo + 1; c < hi; ++c) {
+            below += slice[size_t(c - 1 - lo)];
+            const double miss = std::abs(below - target);
+            if (best < 0 || miss < best) best = miss, cut = c;
+        }
+    }
+    if (hi - lo >= 2) cut = std::clamp(cut, lo + 1, hi - 1);
+    if (alongX) {
+        split(w, cellsX, cx0, cy0, cut, cy1, first, out);
+        split(w, cellsX, cut, cy0, cx1, cy1, parts - first, out);
+    } else {
+        split(w, cellsX, cx0, cy0, cx1, cut, first, out);
+        split(w, cellsX, cx0, cut, cx1, cy1, parts - first, out);
+    }
+}
+
+}  // namespace
+
+PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height) {
+    const PixelRect all{0, 0, width, height};
+    if (!bounds.valid()) return {};
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p((c & 1) ? bounds.hi.x : bounds.lo.x, (c & 2) ? bounds.hi.y : bounds.lo.y,
+                          (c & 4) ? bounds.hi.z : bounds.lo.z);
+        const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+        if (!(clip.w > 1e-6f)) return all;
+        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+        lo = glm::min(lo, px);
+        hi = glm::max(hi, px);
+    }
+    const auto floorTo = [](float v, int limit) { return int(std::clamp(std::floor(v), -1.0f, float(limit) + 1.0f)); };
+    return PixelRect{floorTo(lo.x, width) - 1, floorTo(lo.y, height) - 1, floorTo(hi.x, width) + 2,
+                     floorTo(hi.y, height) + 2}
+        .intersect(all);
+}
+
+std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,
+                               const std::vector<PixelRect>& tiles, std::span<const float> ms) {
+    if (tiles.size() != ms.size()) throw GlError("costWeights: one cost per tile");
+    // The tile holding each cell (its lower-left pixel), and each tile's weight.
+    std::vector<int> owner(weights.size(), -1);
+    std::vector<double> tileWeight(tiles.size(), 0.0);
+    for (size_t c = 0; c < weights.size(); ++c) {
+        const int x = int(c % size_t(cellsX)) * cellPx, y = int(c / size_t(cellsX)) * cellPx;
+        for (size_t t = 0; t < tiles.size(); ++t)
+            if (x >= tiles[t].x0 && x < tiles[t].x1 && y >= tiles[t].y0 && y < tiles[t].y1) {
+                owner[c] = int(t);
+                tileWeight[t] += weights[c];
+                break;
+            }
+    }
+    double cost = 0, weight = 0;
+    for (size_t t = 0; t < tiles.size(); ++t) cost += ms[t], weight += tileWeight[t];
+    const double mean = weight > 0 ? cost / weight : 0.0;
+    std::vector<float> out(weights.begin(), weights.end());
+    if (!(mean > 0)) return out;
+    for (size_t c = 0; c < weights.size(); ++c) {
+        const int t = owner[c];
+        if (t < 0 || !(tileWeight[size_t(t)] > 0) || !(ms[size_t(t)] > 0)) continue;
+        out[c] = float(double(weights[c]) * (double(ms[size_t(t)]) / tileWeight[size_t(t)]) / mean);
+    }
+    return out;
+}
+
+std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
+                                   int width, int height, int parts) {
+    if (cellWeights.size() != size_t(cellsX) * size_t(cellsY))
+        throw GlError("splitScreen: " + std::to_string(cellWeights.size()) + " weights for " + std::to_string(cellsX) +
+                      " x " + std::to_string(cellsY) + " cells");
+    std::vector<std::array<int, 4>> cells;
+    split(cellWeights, cellsX, 0, 0, cellsX, cellsY, std::max(1, parts), cells);
+    std::vector<PixelRect> rects;
+    for (const auto& c : cells)
+        rects.push_back({std::min(c[0] * cellPx, width), std::min(c[1] * cellPx, height), std::min(c[2] * cellPx, width),
+                         std::min(c[3] * cellPx, height)});
+    return rects;
+}
+
+}  // namespace flowsurf::methods

@@ -1,0 +1,53 @@
+// flowsurf — the geometry of a tiled parallel render (screen_tiles.h): pixel rectangles,
+// the weighted split of the screen into one tile per process, the reweighting by measured
+// costs, and the pixels a piece can cover. No GL, no messages: the same inputs give the
+// same rectangles on every process.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace flowsurf::methods {
+
+// A pixel rectangle [x0, x1) x [y0, y1) in GL's image coordinates (rows bottom-up).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return std::max(0, x1 - x0); }
+    int height() const { return std::max(0, y1 - y0); }
+    bool empty() const { return width() == 0 || height() == 0; }
+    size_t area() const { return size_t(width()) * size_t(height()); }
+    PixelRect intersect(const PixelRect& o) const {
+        return {std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
+    }
+    PixelRect grown(int g) const { return {x0 - g, y0 - g, x1 + g, y1 + g}; }
+    bool operator==(const PixelRect&) const = default;
+};
+
+// The pixels `bounds` can cover in a view (`viewProj`, `width` x `height`): its corners'
+// projection, a pixel wider on each side, within the image; the whole image when a corner
+// lies behind the eye; empty for empty bounds. What a process's piece can draw.
+PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height);
+
+// `parts` rectangles that together cover width x height, of about equal weight: the
+// weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut
+// recursively across the longer side at the cell boundary nearest the weight's share.
+// The same weights give the same rectangles on every process. Rectangles can be empty
+// when there are more parts than cells.
+std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
+                                   int width, int height, int parts);
+
+// Load balance from measured costs: the cell weights of the last split (`weights`, cellsX
+// per row of cellPx pixels) scaled so that each tile's cells carry its measured cost
+// (`ms[t]`, tile t of `tiles`): a cell's new weight is its weight times its tile's cost
+// per unit of weight over the mean cost per unit of weight. A split of the result gives the
+// tiles that took longer fewer cells.
+std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,
+                               const std::vector<PixelRect>& tiles, std::span<const float> ms);
+
+}  // namespace flowsurf::methods
