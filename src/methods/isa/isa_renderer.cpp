@@ -48,16 +48,18 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     const auto depthOf = [&](int v) -> const gl::Texture2D& {
         return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
     };
-    if (plan.freezeStarts)  // keep where the frozen texture was made
+    if (plan.freezeStarts) {  // keep where the frozen texture was made
         glCopyImageSubData(depthOf(vi_).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
                            GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
+        depthMadeWith_[2] = depthMadeWith_[vi_];
+    }
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
 
     // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
     // source view changed). Static: reuse (1)-(2).
-    // Tiles: the whole surface's velocity over this tile plus a grid cell, its depth
-    // everywhere; again from the same image when the measured costs call for a new split.
+    // Tiles: the whole surface's velocity and depth over this tile plus a grid cell; again
+    // from the same image when the measured costs call for a new split.
     const auto distribute = [&] {
         timer_.begin("tile exchange");
         if (!tileVelocity_) {
@@ -68,7 +70,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         const SurfaceGBuffer& v = velocityImage_[vi_];
         const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
         tiles_->distribute(*in.group, v.depth(), layers, guardPx());
-        tiles_->shareTiles(*in.group, mergedDepth_[vi_]);
+        depthMadeWith_[vi_] = tiles_->tiles();
     };
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     const bool resplit = tiled && tiles_->splitDue() && !viewChanged(in);
@@ -89,12 +91,26 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
         timer_.begin("advection mesh");
         const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
-        const gl::Texture2D& sourceDepth = !plan.advect ? frozenDepth_
-                                          : sameView    ? depthOf(vi_)
-                                                        : depthOf(prevVi);
-        advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth, in.camera,
-                               plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
-                               params_.isa.edgeEpsilon);
+        const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
+        const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi);
+        const auto computeMesh = [&] {
+            advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth,
+                                   in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
+                                   params_.isa.edgeEpsilon);
+        };
+        computeMesh();
+        if (tiled) {
+            // The edge test reads the source depth where the flow came from: the mesh's
+            // footprint, known once it is computed (its coordinates do not depend on that
+            // depth); that part of the depth from its makers, then the mesh again.
+            footprint_ = footprint(tiles_->tile());
+            if (!depthMadeWith_[sourceVi].empty()) {
+                timer_.begin("tile exchange");
+                tiles_->pull(*in.group, sourceDepth, depthMadeWith_[sourceVi], footprint_);
+                timer_.begin("advection mesh");
+                computeMesh();
+            }
+        }
         haveCache_ = true;
         cachedGeneration_ = in.surface->generation();
         cachedCamera_ = in.camera;
@@ -110,10 +126,6 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     if (tiled && !madeWith_[source_].empty()) {
         // The source F_a where this tile's pixels read it, from the processes that made it.
         timer_.begin("tile exchange");
-        if (lastDynamic_ || !(footprintTile_ == tiles_->tile())) {
-            footprint_ = footprint(tiles_->tile());
-            footprintTile_ = tiles_->tile();
-        }
         tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
     }
     const auto advected = std::chrono::steady_clock::now();
