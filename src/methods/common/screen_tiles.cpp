@@ -297,29 +297,6 @@ void ScreenTiles::pull(ProcessGroup& group, const gl::Texture2D& texture, const 
     }
 }
 
-void ScreenTiles::shareTiles(ProcessGroup& group, const gl::Texture2D& texture) {
-    const int n = group.size(), me = group.rank();
-    if (!ready() || n != int(tiles_.size())) throw GlError("screen tiles: tiles shared before they were made");
-    const PixelFormat f = pixelFormatOf(texture.format());
-    std::vector<uint8_t> mine(tile().area() * f.bytes);
-    if (!tile().empty()) readRect(texture, tile(), f, mine.data());
-    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
-    for (int q = 0; q < n; ++q)
-        if (q != me) {
-            sends[size_t(q)] = mine;
-            traffic_.bytesSent += mine.size();
-        }
-    const std::vector<std::vector<uint8_t>> in = group.exchange(sends);
-    for (int t = 0; t < n; ++t) {
-        const PixelRect& r = tiles_[size_t(t)];
-        if (t == me || r.empty()) continue;
-        if (in[size_t(t)].size() != r.area() * f.bytes)
-            throw GlError("screen tiles: process " + std::to_string(t) + " sent a tile of another size");
-        traffic_.bytesReceived += in[size_t(t)].size();
-        writeRect(texture, r, f, in[size_t(t)].data());
-    }
-}
-
 void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values) {
     const int n = group.size(), me = group.rank();
     const int w = viewport_.width;

@@ -17,9 +17,8 @@
 //           compositing (ParaView's IceT) keeps the nearest, as for any surface.
 // and for ISA and IBFVS, whose F_a is next frame's input, read at the advected coordinates:
 //   pull    each frame a process obtains from the owners of the split that made the source
-//           F_a exactly the rectangle its pixels read (its footprint), before advecting;
-//   share   ISA's merged depth, which the edge test reads wherever the flow came from, goes
-//           whole to every process once per view.
+//           F_a exactly the rectangle its pixels read (its footprint), before advecting
+//           (ISA also the merged depth its edge test reads there).
 // The result at every pixel equals the one-process image as long as the stages read no
 // further than the guard (the methods derive it from their parameters).
 // The idea of screen-space decomposition with guard pixels for a parallel surface LIC is
@@ -91,17 +90,12 @@ public:
     void pull(ProcessGroup& group, const gl::Texture2D& texture, const std::vector<PixelRect>& madeWith,
               const PixelRect& wanted);
 
-    // Collective: every process's tile of `texture` (full size; float, half or depth) to
-    // every other process, so that each holds the whole image (ISA's merged depth: the
-    // edge test's source depth, read wherever the flow came from).
-    void shareTiles(ProcessGroup& group, const gl::Texture2D& texture);
-
     // Collective, once per frame after the image stages: `ms`, what they took on this
     // process's tile. When the slowest tile has taken more than kImbalance times the mean
     // for kImbalanceFrames frames in a row, the cells are weighted by the measured costs
     // (costWeights) from then on, and splitDue() says so until the next distribute, which
-    // the method then runs at once (from its own buffers: nothing else is needed, the
-    // history being whole on every process).
+    // the method then runs at once from its own buffers (history is pulled from the split
+    // that made it, so a new split needs nothing more).
     static constexpr float kImbalance = 1.15f;
     static constexpr int kImbalanceFrames = 3;
     void reportCost(ProcessGroup& group, float ms);
