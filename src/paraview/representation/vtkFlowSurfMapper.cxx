@@ -24,9 +24,9 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
-#include <string>
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace fs = flowsurf;
@@ -78,6 +78,7 @@ struct vtkFlowSurfMapper::Internals
   // frame); nullopt: ParaView's own pass drew the surface first. Set by Render.
   std::optional<fs::paraview::HostLook> host;
   bool pathLogged = false;
+  std::unique_ptr<fs::paraview::RankStats> stats = fs::paraview::RankStats::fromEnvironment();
 
   void releaseGl()
   {
@@ -116,17 +117,9 @@ struct vtkFlowSurfMapper::Internals
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
-  // Throws `error` (if any process has one, that process's) on every process; collective
-  // in parallel.
-  void agreeOn(const std::string& error)
-  {
-    const std::string agreed = group ? group->agree(error) : error;
-    if (!agreed.empty())
-    {
-      throw fs::GlError(agreed);
-    }
-  }
-  std::unique_ptr<fs::paraview::RankStats> stats = fs::paraview::RankStats::fromEnvironment();
+  // `error`, or in parallel the first process's error on every process (collective: every
+  // process calls it at the same point, with or without an error of its own).
+  std::string agreed(const std::string& error) { return group ? group->agree(error) : error; }
   void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
 };
 
@@ -251,7 +244,7 @@ fs::core::Camera cameraOf(vtkCamera* c)
 void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
 {
   // Every step that can fail on one process alone is followed by an agreement, so that all
-  // report the same error and none is left waiting in a collective step (agreeOn).
+  // report the same error and none is left waiting in a collective step (agreed).
   if (!glChecked)
   {
     std::string error;
@@ -260,7 +253,11 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
       error = "FlowSurf needs OpenGL 4.5; ParaView's context is " +
         std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
     }
-    agreeOn(error);
+    error = agreed(error);
+    if (!error.empty())
+    {
+      throw fs::GlError(error);
+    }
     glChecked = true;
   }
   if (!input && !group)
@@ -315,10 +312,7 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     {
       error = e.what();
     }
-    if (group)
-    {
-      error = group->agree(error);
-    }
+    error = agreed(error);
     if (!error.empty())
     {
       playback.reset();
@@ -364,17 +358,11 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   {
     error = e.what();
   }
-  if (!error.empty() || group)
+  error = agreed(error);  // a shader that failed on one process fails them all
+  if (!error.empty())
   {
-    if (group)
-    {
-      error = group->agree(error);  // a shader that failed on one process fails them all
-    }
-    if (!error.empty())
-    {
-      playback.reset();
-      throw fs::Error(error);
-    }
+    playback.reset();
+    throw fs::Error(error);
   }
 
   // (3) advection frames: a still render of something new converges (the warm-up, then
