@@ -176,7 +176,7 @@ class Player:
         self._base = None     # the fitted camera: eye, target, up
         self._busy = False
 
-        self.image = w.Image(format="png")
+        self.image = w.Image(format="png", layout=w.Layout(width="%dpx" % size[0], height="%dpx" % size[1]))
         self.play = w.Play(min=0, max=n - 1, step=1, interval=max(1, int(1000 / fps)), description="play")
         self.frame = w.IntSlider(min=0, max=n - 1, description="frame", continuous_update=True)
         # Linked in the kernel (jslink would keep the kernel out of the browser's ticks).
@@ -203,7 +203,7 @@ class Player:
         self.zoom = w.FloatSlider(min=0.25, max=4, value=1, step=0.05, description="zoom", continuous_update=False)
         self.dye_point = w.Text(placeholder="x,y,z", description="dye at")
         self.dye_button = w.Button(description="add dye")
-        self.status = w.Label()
+        self.status = w.Label(layout=w.Layout(width="100%"))
 
         self.frame.observe(lambda change: self.show(change["new"]), "value")
         for name, control in self.controls.items():
@@ -232,6 +232,9 @@ class Player:
                 self.renderer._r.advance()
                 self._last += 1
                 self._cache[self._last] = to_png(self.renderer._r.image())
+                if self._base is None:  # the view fitted to the surface: what the camera sliders turn
+                    cam = self.renderer.camera
+                    self._base = tuple(_np.array(cam[k], dtype=float) for k in ("eye", "target", "up"))
         self.image.value = self._cache[f]
         self.status.value = "frame %d, data time %g, %s" % (f, self.renderer.time, self._timing())
 
@@ -254,9 +257,6 @@ class Player:
         self._cache = {}
         self._last = -1
         self.renderer._r.begin(self.surface)
-        if self._base is None:
-            cam = self.renderer.camera
-            self._base = tuple(_np.array(cam[k], dtype=float) for k in ("eye", "target", "up"))
 
     def _camera_changed(self):
         """A camera option: the texture goes on (the remedy of --on-camera-move), the frames
@@ -296,14 +296,23 @@ class Player:
                 " (play, seek and steer it in a running notebook)</code></div>" % (data, self.status.value))
 
     def _ipython_display_(self):
+        """The widget. Where no page runs the widgets' JavaScript (an exported notebook), a
+        still of the frame on screen: ipywidgets >= 7 carry it as the text/html fallback that
+        nbconvert keeps without widget state; with ipywidgets 6 (Debian 12), whose page cannot
+        be asked beforehand, FLOWSURF_JUPYTER_STILL=1 asks for the still (headless runs,
+        tools/docs/run_notebook.py)."""
         from IPython.display import display
-        import ipywidgets
-        # ipywidgets 6 (Debian 12) learns at start-up whether the page runs its JavaScript;
-        # None: nobody answered (a headless run, nbconvert), so a picture is what is seen.
-        if getattr(ipywidgets.Widget, "_version_validated", True) is None:
-            display({"text/html": self.snapshot_html(), "text/plain": repr(self)}, raw=True)
-        else:
-            display(self.widget)
+        w = self.widget
+        still = {"text/html": self.snapshot_html(), "text/plain": repr(self)}
+        if _os.environ.get("FLOWSURF_JUPYTER_STILL") == "1":
+            display(still, raw=True)
+        elif hasattr(w, "_repr_mimebundle_"):  # ipywidgets >= 7
+            bundle = dict(still)
+            bundle.update(w._repr_mimebundle_() or {})
+            display(bundle, raw=True)
+        else:  # ipywidgets 6: the view is made by a message to the page's widget JavaScript
+            w._send({"method": "display"})
+            w._handle_displayed()
 
     def __repr__(self):
         return "<flowsurf.Player: %s>" % self.status.value

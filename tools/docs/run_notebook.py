@@ -8,7 +8,8 @@ picture (image, video or animated PNG) per figure cell.
 Debian 12 pairs nbclient 0.7 (which expects the widget messages of ipywidgets 7) with
 ipywidgets 6, whose comm_open carries the state itself: `jupyter nbconvert --execute` then
 fails with KeyError 'state' on the first widget. This runs the same NotebookClient with
-that one handler tolerant of ipywidgets 6 (no widget state is stored either way).
+that one handler tolerant of ipywidgets 6 (no widget state is stored either way), and with
+FLOWSURF_JUPYTER_STILL=1, so that flowsurf.Player shows the frame it is on.
 """
 import argparse
 import os
@@ -34,6 +35,7 @@ def main():
     ap.add_argument("--timeout", type=int, default=600)
     args = ap.parse_args()
     nb = nbformat.read(args.notebook, as_version=4)
+    os.environ["FLOWSURF_JUPYTER_STILL"] = "1"  # no page runs widgets here: the player as a still
     Client(nb, timeout=args.timeout, kernel_name="python3", store_widget_state=False,
            resources={"metadata": {"path": os.path.dirname(os.path.abspath(args.notebook))}}).execute()
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", []) if o.output_type == "error"]
