@@ -174,15 +174,23 @@ TEST(IoEnSight, EveryGeometryFileOfASeriesIsChecked) {
     expectRefused(refusal(path), dir.file("mesh.geo04"), "70000 elements");
 }
 
-// The budget: the base for an empty input, 0.5 s more per MiB, a real 1 GiB case well
-// beyond what the slowest reader needs (8 MB/s measured: about 130 s), and capped.
+// The budgets: the base for an empty input, more per MiB (time rounded up to whole
+// seconds), a real 1 GiB case well beyond what the slowest reader needs (8 MB/s measured:
+// about 130 s), and capped.
 TEST(IoReaderBudget, GrowsWithTheInputSize) {
-    using io::detail::readerBudgetSeconds;
-    EXPECT_EQ(readerBudgetSeconds(0), 30);
-    EXPECT_EQ(readerBudgetSeconds(1024), 31);  // rounded up to whole seconds
-    EXPECT_EQ(readerBudgetSeconds(100ull << 20), 80);
-    EXPECT_EQ(readerBudgetSeconds(1ull << 30), 30 + 512);
-    EXPECT_EQ(readerBudgetSeconds(~0ull), 7 * 24 * 3600);
+    using io::detail::readerBudget;
+    EXPECT_EQ(readerBudget(0).wallS, 30);
+    EXPECT_EQ(readerBudget(0).cpuS, 2);
+    EXPECT_EQ(readerBudget(0).memoryMb, 2048u);
+    EXPECT_EQ(readerBudget(1024).wallS, 31);
+    EXPECT_EQ(readerBudget(1024).cpuS, 2);  // CPU time: to the nearest second
+    EXPECT_EQ(readerBudget(100ull << 20).wallS, 80);
+    EXPECT_EQ(readerBudget(100ull << 20).cpuS, 102);
+    EXPECT_EQ(readerBudget(1600ull << 10).cpuS, 4);
+    EXPECT_EQ(readerBudget(100ull << 20).memoryMb, 2048u + 3200u);
+    EXPECT_EQ(readerBudget(1ull << 30).wallS, 30 + 512);
+    EXPECT_EQ(readerBudget(~0ull).wallS, 7 * 24 * 3600);
+    EXPECT_EQ(readerBudget(~0ull).cpuS, 7 * 24 * 3600);
 }
 
 TEST(IoReaderBudget, InputOfACaseIsItsFolder) {

@@ -1,7 +1,8 @@
 // flowsurf — the wire between the library and its reader process (private to src/io):
 // length-prefixed little-endian records over one AF_UNIX stream socket. Requests carry
-// the child's CPU-time budget (seconds), an op and its arguments; replies a status (ok, or the typed error the reader threw)
-// and the payload: a surface mesh, a dataset, the metadata of a source, a FileInfo.
+// the child's budgets (CPU seconds, address space in MiB), an op and its arguments;
+// replies a status (ok, or the typed error the reader threw) and the payload: a surface
+// mesh, a dataset, the metadata of a source, a FileInfo.
 #pragma once
 
 #include "core/mesh.h"
