@@ -32,9 +32,10 @@ namespace flowsurf::io::detail {
 // library) is kReaderBaseS, for starting the child and a small file on a busy machine, plus
 // kReaderSecondsPerMb per MiB: the slowest reader measured (legacy ASCII .vtk, 70 MB in 9 s
 // on a loaded 2-core machine: 8 MB/s; ASCII EnSight 23 MB/s) is 4x faster than this
-// allows. CPU time: a few seconds plus twice the wall clock's allowance per MiB (VTK's
-// filters run on several threads), so a small file that spins a reader is stopped within
-// seconds. Address space: kReaderMemoryBaseMb (the libraries, thread stacks and arenas)
+// allows. CPU time: a second (the child rounds what it used so far up to whole seconds,
+// so a request gets between 1 and 2 s; small files need milliseconds) plus twice the wall
+// clock's allowance per MiB (VTK's filters run on several threads), so a small file that
+// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb (the libraries, thread stacks and arenas)
 // plus kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times
 // are capped at a week (an unbounded folder).
 struct ReaderBudget {
@@ -44,7 +45,7 @@ struct ReaderBudget {
 };
 constexpr long long kReaderBaseS = 30;
 constexpr double kReaderSecondsPerMb = 0.5;
-constexpr long long kReaderCpuBaseS = 2;
+constexpr long long kReaderCpuBaseS = 1;
 constexpr double kReaderCpuSecondsPerMb = 1.0;
 constexpr unsigned long long kReaderMemoryBaseMb = 2048;
 constexpr unsigned long long kReaderMemoryPerMb = 32;
