@@ -143,37 +143,25 @@ Header parseHeader(const Mapping& m, const std::string& path, int version) {
     return h;
 }
 
-// Every variable's data inside the file, in order, sizes agreeing with the dimensions
-// (what netCDF itself checks, plus the file length it does not). A record variable's
-// first dimension is the unlimited one (length 0); its records interleave.
+// Every variable's data inside the file (the netCDF library checks the header, not the
+// file's length). A record variable's first dimension is the unlimited one (length 0);
+// its numRecs records interleave with the other record variables'.
 void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
     auto bytesPerRecord = [&](const Variable& v) {
         uint64_t b = typeSize(v.type);
         for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]].second, path);
         return b;
     };
-    uint64_t recordSize = 0, recordVars = 0, fixedEnd = h.end;
+    uint64_t recordSize = 0, recordVars = 0;
     for (const auto& v : h.vars)
         if (h.isRecord(v)) {
             recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
             ++recordVars;
-        } else {
-            if (v.begin < fixedEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
-                                                      v.name + "' overlaps the one before");
-            fixedEnd = v.begin + bytesPerRecord(v);
         }
-    uint64_t recordEnd = fixedEnd;
     for (const auto& v : h.vars) {
-        const uint64_t size = bytesPerRecord(v), padded = (size + 3) / 4 * 4;
-        const bool record = h.isRecord(v);
-        // vsize saturates for variables over 4 GiB: only smaller ones are compared.
-        if ((padded < 0xFFFFFFFCu && v.vsize != padded && !(recordVars == 1 && record && v.vsize == size)) ||
-            (record && v.begin < recordEnd))
-            throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" + v.name +
-                              "' has an inconsistent size or offset");
-        if (record) recordEnd = v.begin + size;
+        const uint64_t size = bytesPerRecord(v);
         uint64_t end = v.begin + size;
-        if (record)
+        if (h.isRecord(v))
             end = h.numRecs == 0 ? v.begin
                                  : v.begin + mul(h.numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
         if (end > m.size || end < v.begin)
