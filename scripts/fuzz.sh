@@ -27,7 +27,7 @@ done
 B=build-fuzz
 werror=OFF
 [ "${CI:-}" = true ] && werror=ON  # CI builds warning-free (clang's warnings here)
-CXX=clang++ cmake -S fuzz -B $B -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWSURF_WERROR=$werror > /dev/null
+CC=clang CXX=clang++ cmake -S fuzz -B $B -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWSURF_WERROR=$werror > /dev/null
 cmake --build $B -j"${JOBS:-2}" --target "${targets[@]}"
 python3 fuzz/make_seeds.py $B/seeds
 mkdir -p $B/crashes

@@ -56,9 +56,9 @@ int main(int argc, char** argv) {
     sandbox::start(sandbox::parseArgs(argc, argv));
     wire::Reader in(sandbox::kSocketFd);
     const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
-    in.u8();  // the op: Dataset (path, max steps)
+    in.u8();  // the op: Open (path, source options)
     const std::string path = in.str();
-    in.u64();
+    wire::readSourceOptions(in);
     sandbox::limitRequest(memoryMb, cpuSeconds);
     const char* what = std::getenv("FLOWSURF_TEST_HOSTILE");
     wire::Writer out(sandbox::kSocketFd);

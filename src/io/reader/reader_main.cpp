@@ -30,23 +30,6 @@ struct OpenSource {
     std::unique_ptr<io::detail::StepSource> source;
 };
 
-core::Dataset readWholeDataset(const std::string& path, size_t maxSteps) {
-    io::detail::VtkMessageTrap trap;
-    auto source = io::detail::openSource(path, trap);
-    size_t count = source->stepCount();
-    if (maxSteps > 0) count = std::min(count, maxSteps);
-    core::Dataset dataset;
-    dataset.source = path;
-    for (size_t i = 0; i < count; ++i) {
-        vtkSmartPointer<vtkDataObject> raw = source->readStep(i);
-        core::TimeStep step;
-        step.time = source->times().empty() ? 0.0 : source->times()[i];
-        step.mesh = io::detail::readSurfaceMesh(raw, trap, io::detail::stepLabel(path, *source, i));
-        dataset.steps.push_back(std::move(step));
-    }
-    return dataset;
-}
-
 // Answers one request into `out` (status Ok and the payload). Throws what the reader throws.
 bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>& open) {
     switch (op) {
@@ -70,14 +53,6 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
                                                               io::detail::stepLabel(open->path, *open->source, i));
             out.u8(uint8_t(w::Status::Ok));
             out.mesh(m);
-            return true;
-        }
-        case w::Op::Dataset: {
-            std::string path = in.str();
-            uint64_t maxSteps = in.u64();
-            core::Dataset d = readWholeDataset(path, size_t(maxSteps));
-            out.u8(uint8_t(w::Status::Ok));
-            w::writeDataset(out, d);
             return true;
         }
         case w::Op::Inspect: {

@@ -279,15 +279,16 @@ auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, S
 
 core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
     std::lock_guard lock(mutex_);
-    ensureChild(rootFor(path));
-    return call(
-        path, budgetFor(path),
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Dataset));
-            w.str(path);
-            w.u64(maxSteps);
-        },
-        [](wire::Reader& r) { return wire::readDataset(r); });
+    const SourceInfo info = openLocked(path, {});
+    const size_t steps = info.times.empty() ? 1 : info.times.size();
+    core::Dataset dataset;
+    dataset.source = path;
+    for (size_t i = 0; i < (maxSteps > 0 ? std::min(steps, maxSteps) : steps); ++i) {
+        const std::string label =
+            steps == 1 ? path : path + " (time step " + std::to_string(i + 1) + " of " + std::to_string(steps) + ")";
+        dataset.steps.push_back({info.times.empty() ? 0.0 : info.times[i], readStepLocked(i, label)});
+    }
+    return dataset;
 }
 
 ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const SourceOptions& options) {
@@ -319,6 +320,10 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
 
 core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
     std::lock_guard lock(mutex_);
+    return readStepLocked(index, label);
+}
+
+core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
     if (pid_ <= 0 && !lastOpen_.empty()) openLocked(lastOpen_, lastOptions_);  // the child died: restore its source
     ensureChild(root_);
     return call(

@@ -58,7 +58,7 @@ public:
     ReaderProcess(const ReaderProcess&) = delete;
     ReaderProcess& operator=(const ReaderProcess&) = delete;
 
-    // Every time step of `path` (at most `maxSteps`, 0 = all).
+    // Every time step of `path` (at most `maxSteps`, 0 = all): opened, then read step by step.
     core::Dataset readDataset(const std::string& path, size_t maxSteps);
     // Opens `path` as the child's current multi-step source: its format and times.
     // `options`: OpenFOAM's boundary patches and case layout.
@@ -81,6 +81,7 @@ private:
     void ensureChild(const std::string& root);
     void spawn(const std::string& root);
     SourceInfo openLocked(const std::string& path, const SourceOptions& options);
+    core::SurfaceMesh readStepLocked(size_t index, const std::string& label);
     // Ends the child (killing it if needed) and returns why it died, for messages.
     std::string reap(bool kill);
 
