@@ -42,17 +42,6 @@ unsigned long long defaultMemoryMb() {
     return std::max<unsigned long long>(2048, (unsigned long long)pages * size / 4 * 3 >> 20);
 }
 
-bool sanitized() {
-#if defined(__SANITIZE_ADDRESS__)
-    return true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return true;
-#endif
-#endif
-    return false;
-}
-
 // FLOWSURF_READER_TIMEOUT_S and FLOWSURF_READER_MEMORY_MB, or 0 when unset.
 long long fixedSeconds() { return envNumber("FLOWSURF_READER_TIMEOUT_S", 0); }
 unsigned long long fixedMemoryMb() { return (unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", 0); }
@@ -62,7 +51,7 @@ ReaderBudget budgetFor(const std::string& path) {
     ReaderBudget b = readerBudget(readerInputBytes(path));
     if (const long long s = fixedSeconds(); s > 0) b.wallS = b.cpuS = s;
     if (const unsigned long long mb = fixedMemoryMb(); mb > 0) b.memoryMb = mb;
-    if (sanitized()) b.memoryMb = 0;  // an address-space limit breaks AddressSanitizer's shadow memory
+    if (sandbox::kSanitized) b.memoryMb = 0;  // an address-space limit breaks AddressSanitizer's shadow memory
     return b;
 }
 
@@ -79,10 +68,7 @@ std::string deathText(int status, const std::string& reason, const ReaderBudget&
             case SIGXCPU:
                 return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
                        overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
-            case SIGSEGV: return "crashed (SIGSEGV)";
-            case SIGBUS: return "crashed (SIGBUS)";
-            case SIGFPE: return "crashed (SIGFPE)";
-            case SIGILL: return "crashed (SIGILL)";
+            case SIGSEGV: case SIGBUS: case SIGFPE: case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
             case SIGABRT: return "aborted (SIGABRT)";
             default: return "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
         }
@@ -163,7 +149,7 @@ std::string readerExecutable() {
 
 ReaderProcess::ReaderProcess()
     : exe_(readerExecutable()), memoryHardMb_(fixedMemoryMb() > 0 ? fixedMemoryMb() : defaultMemoryMb()) {
-    if (sanitized()) memoryHardMb_ = 0;
+    if (sandbox::kSanitized) memoryHardMb_ = 0;
 }
 
 ReaderProcess::~ReaderProcess() {

@@ -26,18 +26,6 @@ namespace {
 
 constexpr rlim_t kMaxDescriptors = 64;  // the readers open a handful of files at once
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
 void setLimit(int resource, rlim_t soft, rlim_t hard) {
     rlimit r{soft, hard};
     setrlimit(resource, &r);

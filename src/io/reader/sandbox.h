@@ -14,6 +14,16 @@ namespace flowsurf::io::sandbox {
 constexpr int kSocketFd = 3;
 constexpr int kReasonFd = 4;
 
+// An AddressSanitizer build: no address-space limit (its shadow memory needs the room),
+// and the filter answers what its error reports do (a symbolizer) with EPERM.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+constexpr bool kSanitized = __has_feature(address_sanitizer);
+#else
+constexpr bool kSanitized = false;
+#endif
+
 // The command line the library starts the child with: --memory-mb N --root DIR.
 struct ChildArgs {
     unsigned long long memoryHardMb = 0;  // the address space's hard limit; 0: none
