@@ -228,6 +228,55 @@ TEST_P(ParallelMerge, PiecesGiveTheOneProcessImage) {
 INSTANTIATE_TEST_SUITE_P(Methods, ParallelMerge, ::testing::Values("isa", "ibfvs", "hybrid"),
                          [](const auto& info) { return info.param; });
 
+// Contrast enhancement [issue 28] needs the whole image's percentiles: in the replicate
+// mode every process holds the merged image and stretches it as one process does (2
+// pieces, the same bounds as above); the tiles mode, which divides the image, refuses with
+// a message naming the option and the way out.
+TEST(ParallelContrast, ReplicateEqualsOneProcessTilesRefuse) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere");
+    const core::SurfaceMesh& mesh = data.steps.front().mesh;
+    const core::Viewport vp{160, 160};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    const auto still = [&](int) { return cam; };
+    methods::MethodParams params = test::testParams();
+    params.common.enhanceContrast = methods::EnhanceContrast::Both;
+    params.common.parallel = methods::ParallelMode::Replicate;
+    std::vector<core::SurfaceMesh> pieces;
+    for (int r = 0; r < 2; ++r) pieces.push_back(pieceOf(mesh, [r](glm::vec3 c) { return (c.x < 0.0f ? 0 : 1) == r; }));
+    for (const std::string method : {"isa", "hybrid"}) {
+        const Images one = renderWith(method, mesh, still, vp, 12, nullptr, params);
+        const std::vector<Images> images = inThreads(2, [&](methods::ProcessGroup& member, int r) {
+            return renderWith(method, pieces[size_t(r)], still, vp, 12, &member, params);
+        });
+        for (int r = 0; r < 2; ++r) {
+            auto [mean, tile] = difference(one, images[size_t(r)], vp);
+            std::printf("%s contrast, replicate, rank %d: mean %.3f, worst tile %.3f gray levels\n", method.c_str(), r,
+                        mean, tile);
+            EXPECT_LE(mean, 1.0) << method << " rank " << r;
+            EXPECT_LE(tile, 3.0) << method << " rank " << r;
+        }
+    }
+    params.common.parallel = methods::ParallelMode::Tiles;
+    ThreadGroup group(2);
+    std::vector<std::string> errors(2);
+    std::vector<std::thread> threads;
+    for (int r = 0; r < 2; ++r)
+        threads.emplace_back([&, r] {
+            try {
+                gl::HeadlessContext context;
+                ThreadGroup::Member member(group, r);
+                renderWith("hybrid", pieces[size_t(r)], still, vp, 1, &member, params);
+            } catch (const std::exception& e) {
+                errors[size_t(r)] = e.what();
+            }
+        });
+    for (auto& t : threads) t.join();
+    for (const std::string& e : errors) {
+        EXPECT_NE(e.find("enhance-contrast"), std::string::npos) << e;
+        EXPECT_NE(e.find("replicate"), std::string::npos) << e;
+    }
+}
+
 }  // namespace
 
 namespace {
