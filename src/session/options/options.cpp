@@ -409,7 +409,17 @@ std::vector<OptionSpec> buildTable() {
                     FS_REF(params.common.maskRangeMode)));
     add(onOff("lighting", gLook, "Diffuse lighting", FS_REF(params.common.lighting)));
     add(flag("velocity-mask", gLook, "Texture contrast follows speed [L ref 14]", FS_REF(params.common.velocityMask)));
-    add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean", FS_REF(params.common.contrast), 0, 20));
+    add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean (not applied to a texture "
+                     "--enhance-contrast stretches)", FS_REF(params.common.contrast), 0, 20));
+    add(choice("enhance-contrast", gLook, "Contrast enhancement as ParaView's Surface LIC: stretch the flow "
+               "texture's intensity (texture), the surface colour's lightness (color) or both between robust "
+               "percentiles of the surface's pixels, smoothed over frames (see doc/contrast.md)",
+               methods::kEnhanceContrastNames, FS_REF(params.common.enhanceContrast)));
+    add(param<float>("enhance-percentile", gLook, "Contrast enhancement: percent of the surface's pixels clamped "
+                     "at each end of the stretch", FS_REF(params.common.enhancePercentile), 0, 25));
+    add(param<float>("enhance-smoothing", gLook, "Contrast enhancement: frames over which the stretch's "
+                     "percentiles are smoothed (time constant; 1: each frame's own)",
+                     FS_REF(params.common.enhanceSmoothing), 1, 1000));
     {
         OptionSpec s{"background", "", gLook, "Background colour: #RRGGBB, r,g,b in 0..1, black, white, gray",
                      OptionKind::Color, 0, 1, {}, true, nullptr, nullptr};
