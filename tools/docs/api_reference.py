@@ -110,13 +110,25 @@ def cpp(folder):
         print(cpp_header(os.path.join(folder, name)))
 
 
-def signature(obj, name):
+def pybind_doc(obj):
+    """(signature, text) of a pybind11 callable: its docstring opens with the signature."""
+    doc = (getattr(obj, "__doc__", "") or "").strip()
+    first, _, rest = doc.partition("\n")
+    first = re.sub(r"self: [\w.]+(, )?", "", first)
+    first = re.sub(r"flowsurf\._flowsurf\.", "", first)
+    return first, " ".join(rest.split())
+
+
+def describe(obj, name):
+    """(signature, text) of a function or method, Python or pybind11."""
     try:
-        return f"{name}{inspect.signature(obj)}"
+        text = " ".join((inspect.getdoc(obj) or "").split())
+        return f"{name}{inspect.signature(obj)}", "" if text.startswith("Initialize self.") else text
     except (TypeError, ValueError):
-        doc = getattr(obj, "__doc__", "") or ""
-        first = doc.strip().split("\n")[0]
-        return first if first.startswith(name.split(".")[-1] + "(") else name + "(...)"
+        sig, text = pybind_doc(obj)
+        short = name.rsplit(".", 1)[-1]
+        prefix = name[: -len(short)]
+        return (prefix + sig if sig.startswith(short + "(") else name + "(...)"), text
 
 
 def python():
@@ -139,22 +151,26 @@ def python():
             doc = inspect.getdoc(obj) or ""
             if doc:
                 print("```text\n" + doc.strip() + "\n```\n")
+            init = inspect.getattr_static(obj, "__init__", None)
+            if init is not None and init is not object.__init__:
+                sig, text = describe(obj.__init__, name + ".__init__")
+                sig = sig.replace(name + ".__init__(self, ", name + "(").replace(name + ".__init__(self)", name + "()")
+                sig = sig.replace(name + ".__init__(", name + "(")
+                print(f"- `{sig}`" + (f" — {text}" if text else ""))
             for mname, member in inspect.getmembers(obj):
-                if mname.startswith("_") and mname != "__init__":
+                if mname.startswith("_"):
                     continue
                 if isinstance(inspect.getattr_static(obj, mname), property):
-                    d = inspect.getdoc(member) or ""
-                    print(f"- `{name}.{mname}` (property)" + (f" — {' '.join(d.split())}" if d else ""))
+                    d = " ".join((inspect.getdoc(member) or "").split())
+                    print(f"- `{name}.{mname}` (property)" + (f" — {d}" if d else ""))
                 elif callable(member):
-                    if mname == "__init__":
-                        continue
-                    d = inspect.getdoc(member) or ""
-                    print(f"- `{signature(member, name + '.' + mname)}`" + (f" — {' '.join(d.split())}" if d else ""))
+                    sig, text = describe(member, name + "." + mname)
+                    print(f"- `{sig}`" + (f" — {text}" if text else ""))
             print()
         elif callable(obj):
-            print(f"## `{signature(obj, name)}`\n")
-            d = inspect.getdoc(obj) or ""
-            print(" ".join(d.split()) + "\n")
+            sig, text = describe(obj, name)
+            print(f"## `{sig}`\n")
+            print(text + "\n")
 
 
 def main(argv):
