@@ -67,7 +67,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
         timer_.begin("tile exchange");
         const gl::Texture2D& fa = flow_.texture(target);
         const TileLayer layers[] = {TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
-        tiles_->distribute(*in.group, depth_, layers, 0);
+        tiles_->distribute(*in.group, depth_, layers, 0, {0, 0, viewport_.width, viewport_.height});
         madeWith_[target] = tiles_->tiles();
     } else if (in.group) {
         mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
