@@ -45,6 +45,7 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
                               std::to_string(steps.count()) + " time step(s)");
         core::SurfaceMesh mesh = provider_.load(o.timeStep);
         noteUnits(mesh);
+        checkScalarArrays(mesh, steps.label(o.timeStep));
         upload(mesh, steps.label(o.timeStep));
         common_.colorRange = surface_->colorRange();
         return;
@@ -54,6 +55,20 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
     mapping_ = makeTimeMapping(o, stream_->times());
     levels_ = std::make_unique<methods::TimeLevelSource>(*stream_, field_);
     if (units_.empty()) noteUnits(stream_->meshAt(mapping_.at(0)));
+    checkScalarArrays(stream_->meshAt(mapping_.at(0)), steps.label(0));
+}
+
+void AnimatedSurface::checkScalarArrays(const core::SurfaceMesh& mesh, const std::string& where) const {
+    if (mesh.triangleCount() == 0) return;  // an empty piece of a parallel render
+    for (const auto& [option, spec] : {std::pair{"--color-by", common_.colorBy}, std::pair{"--mask-by", common_.maskBy}}) {
+        std::vector<float> values;
+        if (spec.empty() || core::evalScalar(mesh, core::ScalarSpec::parse(spec), values)) continue;
+        std::string names;
+        for (const auto& a : mesh.scalars) names += (names.empty() ? "" : ", ") + a.name;
+        for (const auto& a : mesh.fields) names += (names.empty() ? "" : ", ") + a.name;
+        throw FieldError(std::string(option) + " " + spec + ": " + where + " has no point array '" +
+                         core::ScalarSpec::parse(spec).array + "' (available: " + (names.empty() ? "none" : names) + ")");
+    }
 }
 
 methods::MethodParams AnimatedSurface::paramsFor(const methods::MethodParams& params) const {

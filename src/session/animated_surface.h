@@ -50,6 +50,9 @@ public:
     size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
 
 private:
+    // Throws FieldError when --color-by or --mask-by names an array `mesh` lacks (the first
+    // step shown: a later step lacking it shows NaN, the no-value colour).
+    void checkScalarArrays(const core::SurfaceMesh& mesh, const std::string& where) const;
     void upload(const core::SurfaceMesh& mesh, const std::string& where);
     void noteUnits(const core::SurfaceMesh& mesh) { if (units_.empty()) units_ = mesh.units; }
 

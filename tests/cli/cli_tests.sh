@@ -49,6 +49,8 @@ expect_fail "index out of range"  4 "badindex.obj"         "$WORK/o6.png" -- ren
 expect_fail "geometry only"       5 "vector"               "$WORK/o7.png" -- render "$WORK/plain.obj" -o "$WORK/o7.png" -q
 expect_fail "unknown extension"   4 "\.xyz"                "$WORK/o8.png" -- render "$WORK/a.xyz" -o "$WORK/o8.png" -q
 expect_fail "missing field"       5 "no vector field 'p'"  "$WORK/o9.png" -- render builtin:sphere --field p -o "$WORK/o9.png" -q
+expect_fail "missing colour array" 5 "--color-by epsilon: .*no point array 'epsilon' \(available: .*velocity\)" "$WORK/o9b.png" -- render builtin:sphere --color-by epsilon -o "$WORK/o9b.png" -q
+expect_fail "missing mask array"  5 "--mask-by k:x: .*no point array 'k'" "$WORK/o9c.png" -- render builtin:sphere --mask-by k:x -o "$WORK/o9c.png" -q
 expect_fail "unknown builtin"     2 "unknown built-in"     "$WORK/oa.png" -- render builtin:nosuch -o "$WORK/oa.png" -q
 expect_fail "zero-size image"     2 "--size"               "$WORK/ob.png" -- render builtin:sphere --size 0x100 -o "$WORK/ob.png" -q
 expect_fail "absurd image size"   2 "out of range"         "$WORK/oc.png" -- render builtin:sphere --size 100000x100000 -o "$WORK/oc.png" -q
