@@ -2,7 +2,7 @@
 // is tested by hand against the surface depth with a tolerance: just inside an outline
 // the surface is much nearer than the silhouette edge itself (grazing angle), so a plain
 // depth test would drop the inner half of every outline.
-layout(binding = 0) uniform sampler2D uDepth;  // surface window depth, 1 = background
+layout(binding = EDGE_MASK_DEPTH_UNIT) uniform sampler2D uDepth;  // surface window depth, 1 = background
 uniform vec4 uColor;
 uniform float uNear;
 uniform float uFar;

@@ -24,6 +24,10 @@ inline constexpr int kPixelGroup = 8;
 inline constexpr int kHistogramBinding = 8;  // SSBO, apart from the dye and visibility ones
 inline constexpr int kContrastFlowUnit = 0;
 inline constexpr int kContrastDepthUnit = 1;
+// IBFVS edge mask (ibfvs/edge_mask.h): the surface depth it tests against, and the SSBO its
+// geometry shader writes the outline quads to when they are shared between processes.
+inline constexpr int kEdgeMaskDepthUnit = 0;
+inline constexpr int kEdgeCaptureBinding = 9;
 
 // A per-pixel compute pass over a width x height image with the bound program, then the
 // barrier that makes its image stores visible to what reads them next: textures, read-backs,

@@ -88,10 +88,11 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
                    piecePixels(in, c, viewport_));
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
-    if (params_.ibfvs.edgeMask && in.surface->hasEdges()) {
+    // In parallel every process takes part (an empty piece receives the others' outlines).
+    if (params_.ibfvs.edgeMask && (in.surface->hasEdges() || (in.group && in.group->size() > 1))) {
         timer_.begin("edge mask");
-        edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, composite_.fbo(), c.background,
-                        params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx);
+        edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, composite_.fbo(),
+                        {c.background, params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx}, in.group);
     }
     timer_.endFrame();
 }
