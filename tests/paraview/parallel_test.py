@@ -99,6 +99,7 @@ def render(TAG, PARTITIONS, server=None):
     rep.SetRepresentationType('FlowSurf')
     # Dye released on the front: every rank holds the whole band (methods/common/dye_shared.h).
     rep.FlowSurfDye = '0,-0.8,0.6:0.06:red;0.6,-0.8,0.1:0.06:yellow'
+    rep.FlowSurfEdgeMask = 1  # IBFVS's outlines: every rank draws every piece's, seams none
     camera = view.GetActiveCamera()
     for mode in MODES:
         rep.FlowSurfParallel = mode

@@ -1,8 +1,8 @@
 #include "methods/common/piece_seams.h"
 
+#include <glm/gtc/type_precision.hpp>
+
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cstring>
 #include <map>
 #include <unordered_map>
@@ -11,13 +11,38 @@ namespace flowsurf::methods {
 
 namespace {
 
-using EdgeKey = std::array<uint32_t, 6>;  // the bits of both end points, in lexicographic order
-
-EdgeKey keyOf(const glm::vec3& p, const glm::vec3& q) {
-    const EdgeKey a{std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y), std::bit_cast<uint32_t>(p.z),
-                    std::bit_cast<uint32_t>(q.x), std::bit_cast<uint32_t>(q.y), std::bit_cast<uint32_t>(q.z)};
-    const EdgeKey b{a[3], a[4], a[5], a[0], a[1], a[2]};
-    return std::min(a, b);
+// Representatives of `points`: points within `eps` of an earlier one (per axis) share its
+// index. The same list gives the same answer on every process.
+std::vector<uint32_t> weld(const std::vector<glm::vec3>& points, float eps) {
+    const auto cellOf = [eps](const glm::vec3& p) { return glm::i64vec3(glm::floor(glm::dvec3(p) / double(eps))); };
+    const auto hash = [](const glm::i64vec3& c) {
+        return uint64_t(c.x) * 73856093u ^ uint64_t(c.y) * 19349663u ^ uint64_t(c.z) * 83492791u;
+    };
+    std::unordered_multimap<uint64_t, uint32_t> grid;  // cell hash -> representative point
+    std::vector<uint32_t> rep(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        const glm::i64vec3 c = cellOf(points[i]);
+        int64_t found = -1;
+        for (int dz = -1; dz <= 1 && found < 0; ++dz)
+            for (int dy = -1; dy <= 1 && found < 0; ++dy)
+                for (int dx = -1; dx <= 1 && found < 0; ++dx) {
+                    const auto [lo, hi] = grid.equal_range(hash(c + glm::i64vec3(dx, dy, dz)));
+                    for (auto it = lo; it != hi; ++it) {
+                        const glm::vec3 d = glm::abs(points[it->second] - points[i]);
+                        if (std::max(d.x, std::max(d.y, d.z)) <= eps) {
+                            found = it->second;
+                            break;
+                        }
+                    }
+                }
+        if (found >= 0) {
+            rep[i] = rep[size_t(found)];
+        } else {
+            rep[i] = uint32_t(i);
+            grid.emplace(hash(c), uint32_t(i));
+        }
+    }
+    return rep;
 }
 
 struct OneSided {
@@ -50,26 +75,50 @@ PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
     }
     std::vector<std::vector<uint8_t>> sends(size_t(group.size()), bytes);
     sends[size_t(group.rank())].clear();
-    const std::vector<std::vector<uint8_t>> received = group.exchange(sends);
+    std::vector<std::vector<uint8_t>> all = group.exchange(sends);
+    all[size_t(group.rank())] = std::move(bytes);
 
-    // The other processes' one-triangle edges by position (the first process to hold each).
-    std::map<EdgeKey, std::pair<int, glm::vec3>> others;
+    // Every process's one-sided edges, in (rank, order), their end points welded within a
+    // millionth of their extent (a piece's end may be computed apart from its neighbour's:
+    // cos 2 pi against cos 0); the first two at the same pair of points are the two sides
+    // of a seam (a piece's own duplicated vertices included).
+    std::vector<AdjacentEdge> edges;
+    std::vector<int> rankOf;
     for (int q = 0; q < group.size(); ++q) {
-        if (q == group.rank()) continue;
-        const std::vector<uint8_t>& msg = received[size_t(q)];
+        const std::vector<uint8_t>& msg = all[size_t(q)];
         for (size_t i = 0; i + sizeof(AdjacentEdge) <= msg.size(); i += sizeof(AdjacentEdge)) {
-            AdjacentEdge e;
-            std::memcpy(&e, msg.data() + i, sizeof e);
-            others.try_emplace(keyOf(e.v0, e.v1), q, e.a);
+            edges.emplace_back();
+            std::memcpy(&edges.back(), msg.data() + i, sizeof(AdjacentEdge));
+            rankOf.push_back(q);
         }
     }
+    std::vector<glm::vec3> ends;
+    core::Bounds box;
+    for (const AdjacentEdge& e : edges) {
+        ends.push_back(e.v0);
+        ends.push_back(e.v1);
+        box.extend(e.v0);
+        box.extend(e.v1);
+    }
+    const glm::vec3 size = box.valid() ? box.hi - box.lo : glm::vec3(0.0f);
+    const float extent = std::max(size.x, std::max(size.y, size.z));
+    const std::vector<uint32_t> rep = weld(ends, std::max(extent * 1e-6f, 1e-30f));
+    std::map<uint64_t, std::vector<size_t>> sides;  // welded edge -> indices into edges
+    for (size_t i = 0; i < edges.size(); ++i) {
+        const uint32_t r0 = rep[2 * i], r1 = rep[2 * i + 1];
+        sides[(uint64_t(std::min(r0, r1)) << 32) | std::max(r0, r1)].push_back(i);
+    }
+    size_t first = 0;  // this process's first edge in `edges`
+    while (first < edges.size() && rankOf[first] != group.rank()) ++first;
     PieceSeams seams;
-    for (const OneSided& s : mine) {
-        const glm::vec3 p0 = piece.positions[s.v0], p1 = piece.positions[s.v1];
-        auto it = others.find(keyOf(p0, p1));
-        if (it == others.end()) continue;  // a boundary of the surface
+    for (size_t k = 0; k < mine.size(); ++k) {
+        const size_t i = first + k;
+        const uint32_t r0 = rep[2 * i], r1 = rep[2 * i + 1];
+        const std::vector<size_t>& list = sides.at((uint64_t(std::min(r0, r1)) << 32) | std::max(r0, r1));
+        if (list.size() < 2) continue;  // a boundary of the surface
+        const OneSided& s = mine[k];
         seams.edges.push_back((uint64_t(std::min(s.v0, s.v1)) << 32) | std::max(s.v0, s.v1));
-        if (group.rank() < it->second.first) seams.drawn.push_back({p0, p1, piece.positions[s.a], it->second.second});
+        if (list[0] == i) seams.drawn.push_back({edges[i].v0, edges[i].v1, edges[i].a, edges[list[1]].a});
     }
     std::sort(seams.edges.begin(), seams.edges.end());
     return seams;

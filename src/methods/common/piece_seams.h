@@ -3,8 +3,10 @@
 // neighbouring triangle lies in another process's piece). The IBFVS edge mask [L §IV-E.2]
 // outlines boundaries and silhouettes: a seam is neither, but a silhouette may run along
 // one. The processes exchange their one-triangle edges (positions: the pieces share the
-// seam's vertices): an edge another piece also holds is a seam; the lower of the two
-// processes draws it as an ordinary edge with the other side's opposite vertex.
+// seam's vertices): where two lie at the same position — two pieces', or one piece's own
+// duplicated vertices (a source that made its pieces with seams, then redistributed) — it
+// is a seam, drawn by the first side (lowest rank) as an ordinary edge with the other
+// side's opposite vertex.
 // Cost: collective, once per uploaded geometry; 36 bytes per one-triangle edge of a piece
 // (O(sqrt n) for a piece of n triangles) to every process.
 #pragma once
