@@ -70,11 +70,17 @@ public:
             context_ = std::make_unique<gl::HeadlessContext>(o.verbose);
             renderer_ = context_->renderer();
         } else {
-            window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view");
+            // The views beside the panel: --size each, or what suits the screen [issue 28].
+            window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view", !v.sizeGiven);
             renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
         }
         info_.renderer = renderer_;
         state_.setWindowSize(o.size.width * n, o.size.height);
+        if (window_) {
+            int w = 0, h = 0;
+            window_->framebufferSize(&w, &h);  // the render area the window manager gave
+            if (w > 0 && h > 0) state_.setWindowSize(w, h);
+        }
         // The initial data: headless, an error ends the run; in a window it is shown.
         try {
             loadData(state_.options);
