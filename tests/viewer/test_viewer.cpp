@@ -384,6 +384,34 @@ TEST_F(Viewer, RealWindowUnderXvfb) {
     EXPECT_LE(meanAbsDiff(columns(full, panel, w.width), w), 1.0 / 255.0);
 }
 
+// "rescale: visible" [issue 28]: zoomed in on the sphere near a pole of its rotation, the
+// colour range becomes the speeds the view shows (0 .. 1 on the whole sphere), set and
+// recorded as MIN:MAX so that the log replays it without the view.
+TEST_F(Viewer, ColorRangeVisibleRescalesToTheShownValues) {
+    ASSERT_EQ(replay("builtin:sphere",
+                     "at 2 mouse-move 140 50\n"
+                     "at 3 scroll 6\n"
+                     "at 7 set color-range visible\n"
+                     "at 12 save-config " + path("visible.json") + "\n"
+                     "at 13 quit\n",
+                     "--size 240x200 --record-events '" + path("visible.log") + "'"), 0) << err_;
+    const std::string range = readJson(path("visible.json"))["color-range"].get<std::string>();
+    float lo = 0, hi = 0;
+    ASSERT_EQ(std::sscanf(range.c_str(), "%f:%f", &lo, &hi), 2) << range;
+    EXPECT_GE(lo, 0.0f);
+    EXPECT_LT(hi, 0.95f) << "the fastest speeds (the equator) are out of view";
+    EXPECT_GT(hi - lo, 0.3f);
+    std::ifstream in(path("visible.log"));
+    std::stringstream log;
+    log << in.rdbuf();
+    EXPECT_NE(log.str().find("set color-range " + range), std::string::npos) << log.str();
+    // An empty view has no range: an error, and the range stays.
+    ASSERT_EQ(replay("builtin:sphere", "at 2 set eye 0,0,-40\nat 2 set target 0,0,-50\nat 3 set color-range visible\n"
+                     "at 4 save-config " + path("none.json") + "\nat 5 quit\n", "--size 96x96"), 0) << err_;
+    EXPECT_NE(err_.find("color-range visible"), std::string::npos) << err_;
+    EXPECT_EQ(readJson(path("none.json"))["color-range"].get<std::string>(), "robust");
+}
+
 // Collapsing the panel gives its width back [issue 28 item 4]: the image then spans the
 // window (the same window, one view as wide as the window), the camera fitted again to
 // it; shown again, the image is as wide as before.

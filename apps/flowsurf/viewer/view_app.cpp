@@ -97,7 +97,8 @@ public:
             const bool idle = !lastRendered_ && next_ >= replay_.size();
             std::vector<Event> input = window_ ? window_->poll(frame, idle) : std::vector<Event>{};
             while (next_ < replay_.size() && replay_[next_].frame <= frame) input.push_back(replay_[next_++]);
-            for (const Event& e : input) {
+            for (Event& e : input) {
+                if (!resolveVisibleRange(e)) continue;
                 state_.handle(e);
                 if (!view_.recordEvents.empty()) {
                     recorded_.push_back(e);
@@ -132,6 +133,21 @@ public:
 private:
     static double msSince(Clock::time_point t0) {
         return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    }
+
+    // `set color-range visible` (the panel's rescale button, or a log): the range of the
+    // colour values the view shows now, set and recorded as MIN:MAX [issue 28]. False
+    // (the event dropped, the error shown) when the view shows no such range.
+    bool resolveVisibleRange(Event& e) {
+        if (e.type != EventType::Set || e.name != "color-range" || e.value != "visible") return true;
+        const std::optional<glm::vec2> r =
+            pipeline_.ready() ? pipeline_.visibleColorRange(state_.time) : std::optional<glm::vec2>{};
+        if (!r) {
+            state_.error = "color-range visible: the view shows no surface with a range of colour values";
+            return false;
+        }
+        e.value = formatFloat(r->x) + ":" + formatFloat(r->y);
+        return true;
     }
 
     void report(const std::string& message) {

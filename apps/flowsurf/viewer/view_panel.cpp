@@ -24,7 +24,7 @@ std::string upper(std::string s) {
 
 }  // namespace
 
-void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, ViewPipeline* pipeline) {
+void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool visibleRange) {
     const std::string current = spec.get(state.options);
     const char* label = spec.name.c_str();
     switch (spec.kind) {
@@ -88,16 +88,11 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, View
                 ImGui::SameLine();
                 if (ImGui::SmallButton(to)) emitSet(spec.name, to);
             }
-            if (spec.name == "color-range" && pipeline && pipeline->ready()) {
+            if (spec.name == "color-range" && visibleRange) {
                 ImGui::SameLine();
-                if (ImGui::SmallButton("visible")) {
-                    const auto r = pipeline->visibleColorRange(state.time);
-                    if (r) emitSet(spec.name, formatFloat(r->x) + ":" + formatFloat(r->y));
-                    visibleNote_ = r ? "" : "the view shows no range of colour values";
-                }
+                if (ImGui::SmallButton("visible")) emitSet(spec.name, "visible");  // resolved by the session
                 if (ImGui::IsItemHovered())
                     ImGui::SetTooltip("The range of the colour values over the surface's visible pixels");
-                if (!visibleNote_.empty()) ImGui::TextWrapped("  %s", visibleNote_.c_str());
             }
             ImGui::PopID();
         }
@@ -231,7 +226,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     for (const char* group : {"Method", "Overlay"})
         if (ImGui::CollapsingHeader(group == std::string("Method") ? "Method parameters" : "Overlay"))
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.group == group && spec.name != "method") optionWidget(spec, state, &pipeline);
+                if (spec.group == group && spec.name != "method") optionWidget(spec, state, pipeline.ready());
 
     if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
 

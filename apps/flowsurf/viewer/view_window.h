@@ -53,8 +53,8 @@ public:
 
 private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
-    // `pipeline`: for the colour range's "visible" button (null: none).
-    void optionWidget(const struct OptionSpec& spec, const ViewerState& state, ViewPipeline* pipeline = nullptr);
+    // `visibleRange`: the colour range gets a "visible" button (`set color-range visible`).
+    void optionWidget(const struct OptionSpec& spec, const ViewerState& state, bool visibleRange = false);
     void emitSet(const std::string& name, const std::string& value);
     // The panel's Quality section (doc/algorithms.md §9): off until turned on.
     void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
@@ -74,7 +74,6 @@ private:
     std::optional<glm::vec2> dyeClick_;  // framebuffer pixels of a ctrl + click, origin top-left
     bool swallowRelease_ = false;        // the release of that click is not a drag's end
     bool panelShown_ = true, panelCollapsed_ = false;  // as of the last present()
-    std::string visibleNote_;            // why "rescale to visible" found no range
 
     friend struct WindowCallbacks;
 };
