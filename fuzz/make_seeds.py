@@ -57,20 +57,27 @@ seed("fuzz_obj", "quad.obj", "# seed\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0
      "f 1 2 3\nf 1//1 3//1 4//1\nf 1/1/1 2/1/1 3/1/1\nf -4 -3 -2 -1\ng group\no obj\ns off\n")
 seed("fuzz_obj", "bad.obj", "v 0 0\nf 1 2 9\n")
 
-# EnSight Gold geometry (fuzz_ensight; the case file names it): ASCII with and without
-# ids, nsided and nfaced blocks, a structured block, C binary in both byte orders.
+# The reader process (fuzz_reader): the first byte picks the format (fuzz_reader.cpp's
+# kExtensions), the rest is the file. EnSight Gold geometry (the case file names it):
+# ASCII with and without ids, nsided and nfaced blocks, a structured block, C binary in
+# both byte orders.
+EXT = {e: i for i, e in enumerate([".geo", ".vtk", ".vtp", ".vtu", ".e", ".stl", ".ply", ".obj", ".pvd"])}
+
+
+def reader_seed(name, data):
+    ext = "." + name.rsplit(".", 1)[1]
+    seed("fuzz_reader", name, bytes([EXT[ext]]) + (data if isinstance(data, bytes) else data.encode()))
+
+
 ens_coords = "".join("%g\n" % v for v in (0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0))
 ens_head = "square\ngeometry\nnode id %s\nelement id %s\nextents\n0 1\n0 1\n0 0\npart\n1\nsquare\n"
-seed("fuzz_ensight", "ascii.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
-     "tria3\n2\n1 2 3\n1 3 4\nquad4\n1\n1 2 3 4\n")
-seed("fuzz_ensight", "ascii_ids.geo", ens_head % ("given", "given") + "coordinates\n4\n11\n12\n13\n14\n" +
-     ens_coords + "tria3\n2\n7\n8\n1 2 3\n1 3 4\n")
-seed("fuzz_ensight", "nsided_nfaced.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
-     "nsided\n1\n4\n1 2 3 4\nnfaced\n1\n2\n3\n3\n1 2 3\n1 3 4\n")
-seed("fuzz_ensight", "block.geo", ens_head % ("off", "off") + "block iblanked\n2 2 1\n" + ens_coords +
-     "1\n1\n1\n1\n")
-seed("fuzz_ensight", "time_steps.geo", "BEGIN TIME STEP\n" + ens_head % ("off", "off") + "coordinates\n4\n" +
-     ens_coords + "tria3\n1\n1 2 3\nEND TIME STEP\n")
+reader_seed("ascii.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
+            "tria3\n2\n1 2 3\n1 3 4\nquad4\n1\n1 2 3 4\n")
+reader_seed("ascii_ids.geo", ens_head % ("given", "given") + "coordinates\n4\n11\n12\n13\n14\n" +
+            ens_coords + "tria3\n2\n7\n8\n1 2 3\n1 3 4\n")
+reader_seed("nsided_nfaced.geo", ens_head % ("off", "off") + "coordinates\n4\n" + ens_coords +
+            "nsided\n1\n4\n1 2 3 4\nnfaced\n1\n2\n3\n3\n1 2 3\n1 3 4\n")
+reader_seed("block.geo", ens_head % ("off", "off") + "block iblanked\n2 2 1\n" + ens_coords + "1\n1\n1\n1\n")
 
 
 def ens_binary(order, nodes=4, elements=2):
@@ -82,17 +89,40 @@ def ens_binary(order, nodes=4, elements=2):
             i32(1, 2, 3, 1, 3, 4))
 
 
-seed("fuzz_ensight", "binary_le.geo", ens_binary("<"))
-seed("fuzz_ensight", "binary_be.geo", ens_binary(">"))
-# Regressions: counts beyond the file that kept VTK's reader looping until its timeout.
-seed("fuzz_ensight", "regress_coordinates_beyond_file.geo", ens_head % ("off", "off") +
-     "coordinates\n100000000\n" + ens_coords + "tria3\n1\n1 2 3\n")
-seed("fuzz_ensight", "regress_elements_beyond_file.geo", ens_head % ("off", "off") + "coordinates\n4\n" +
-     ens_coords + "tria3\n50000000\n1 2 3\n")
-seed("fuzz_ensight", "regress_nsided_missing_line.geo", ens_head % ("off", "off") + "coordinates\n4\n" +
-     ens_coords + "nsided\n2\n4\n4\n1 2 3 4\n#\n")
-seed("fuzz_ensight", "regress_binary_elements_beyond_file.geo", ens_binary(">", elements=5000))
-seed("fuzz_ensight", "regress_binary_shorter_than_a_string.geo", "C Binary\n")  # read past the end
+reader_seed("binary_le.geo", ens_binary("<"))
+reader_seed("binary_be.geo", ens_binary(">"))
+# Legacy .vtk (new and old cell layouts), VTK XML, STL, PLY, OBJ, a .pvd naming a file.
+vtk_points = "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n"
+reader_seed("poly.vtk", "# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n" + vtk_points +
+            "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 6\nCONNECTIVITY vtktypeint64\n0 1 2 0 2 3\n"
+            "POINT_DATA 4\nVECTORS U float\n1 0 0 1 0 0 1 0 0 1 0 0\n")
+reader_seed("old.vtk", "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + vtk_points +
+            "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n")
+reader_seed("tri.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+            '<PolyData><Piece NumberOfPoints="3" NumberOfPolys="1">\n<PointData><DataArray type="Float32" '
+            'Name="U" NumberOfComponents="3" format="ascii">1 0 0 1 0 0 1 0 0</DataArray></PointData>\n'
+            '<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0'
+            '</DataArray></Points>\n<Polys><DataArray type="Int32" Name="connectivity" format="ascii">0 1 2'
+            '</DataArray>\n<DataArray type="Int32" Name="offsets" format="ascii">3</DataArray></Polys>\n'
+            '</Piece></PolyData></VTKFile>\n')
+reader_seed("tri.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+            "endloop\nendfacet\nendsolid t\n")
+reader_seed("tri.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+reader_seed("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+reader_seed("steps.pvd", '<VTKFile type="Collection"><Collection><DataSet timestep="0" file="input.vtp"/>'
+            '</Collection></VTKFile>')
+# Regressions: what the retired pre-parsers refused (counts beyond the file that kept VTK's
+# EnSight reader looping; old-layout legacy cell lists VTK walked unchecked).
+reader_seed("regress_coordinates_beyond_file.geo", ens_head % ("off", "off") +
+            "coordinates\n100000000\n" + ens_coords + "tria3\n1\n1 2 3\n")
+reader_seed("regress_nsided_missing_line.geo", ens_head % ("off", "off") + "coordinates\n4\n" +
+            ens_coords + "nsided\n2\n4\n4\n1 2 3 4\n#\n")
+reader_seed("regress_binary_elements_beyond_file.geo", ens_binary(">", elements=5000))
+reader_seed("regress_binary_shorter_than_a_string.geo", "C Binary\n")
+reader_seed("regress_old_cell_count.vtk", "# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" +
+            vtk_points + "POLYGONS 1 5\n4 0 x 2 3\n")
 
 # Camera path JSON.
 seed("fuzz_camera_path", "path.json", json.dumps({"keyframes": [

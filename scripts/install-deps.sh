@@ -5,6 +5,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config              # toolchain
   libvtk9-dev                                   # readers for CFD formats (VTK 9)
+  libseccomp-dev                                # the reader process's system-call filter
   libepoxy-dev libegl-dev libgl-dev             # OpenGL 4.5 function loading, EGL headless
   libegl-mesa0 libgl1-mesa-dri                  # Mesa llvmpipe: GL without a GPU
   libglm-dev                                    # vector maths
@@ -20,5 +21,6 @@ PACKAGES=(
   python3-pytest python3-vedo                   # Python tests (vedo: a real client mesh library)
   clang                                         # fuzz targets (libFuzzer, scripts/fuzz.sh)
   patchelf                                      # the portable tree's $ORIGIN RUNPATHs (test install_portable_tree)
+  mkdocs mkdocs-material python3-pymdownx       # the manual (scripts/docs.sh, ctest docs)
 )
 exec "$(dirname "$0")/apt-install.sh" "${PACKAGES[@]}"

@@ -39,6 +39,11 @@ expect_fail "missing file"        3 "nosuch.vtp"           "$WORK/o1.png" -- ren
 expect_fail "empty file"          4 "empty.vtp"            "$WORK/o2.png" -- render "$WORK/empty.vtp" -o "$WORK/o2.png" -q
 expect_fail "truncated file"      4 "truncated.vtp"        "$WORK/o3.png" -- render "$WORK/truncated.vtp" -o "$WORK/o3.png" -q
 expect_fail "garbage file"        4 "garbage.vtp"          "$WORK/o4.png" -- render "$WORK/garbage.vtp" -o "$WORK/o4.png" -q
+# An EnSight count beyond the file: VTK's reader loops until the reader's CPU limit stops it.
+mkdir -p "$WORK/ens"
+printf 'FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: m.geo\n' > "$WORK/ens/t.case"
+printf 'x\ny\nnode id off\nelement id off\npart\n1\ns\ncoordinates\n4\n0\n1\n1\n0\n0\n0\n1\n1\n0\n0\n0\n0\nnsided\n2\n4\n4\n1 2 3 4\n#\n' > "$WORK/ens/m.geo"
+expect_fail "reader out of CPU"   4 "t.case: the reader used more than 1 s of CPU" "$WORK/o4b.png" -- render "$WORK/ens/t.case" -o "$WORK/o4b.png" -q
 expect_fail "no triangles"        4 "nogeometry.stl"       "$WORK/o5.png" -- render "$WORK/nogeometry.stl" -o "$WORK/o5.png" -q
 expect_fail "index out of range"  4 "badindex.obj"         "$WORK/o6.png" -- render "$WORK/badindex.obj" -o "$WORK/o6.png" -q
 expect_fail "geometry only"       5 "vector"               "$WORK/o7.png" -- render "$WORK/plain.obj" -o "$WORK/o7.png" -q

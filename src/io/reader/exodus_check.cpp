@@ -143,37 +143,25 @@ Header parseHeader(const Mapping& m, const std::string& path, int version) {
     return h;
 }
 
-// Every variable's data inside the file, in order, sizes agreeing with the dimensions
-// (what netCDF itself checks, plus the file length it does not). A record variable's
-// first dimension is the unlimited one (length 0); its records interleave.
+// Every variable's data inside the file (the netCDF library checks the header, not the
+// file's length). A record variable's first dimension is the unlimited one (length 0);
+// its numRecs records interleave with the other record variables'.
 void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
     auto bytesPerRecord = [&](const Variable& v) {
         uint64_t b = typeSize(v.type);
         for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]].second, path);
         return b;
     };
-    uint64_t recordSize = 0, recordVars = 0, fixedEnd = h.end;
+    uint64_t recordSize = 0, recordVars = 0;
     for (const auto& v : h.vars)
         if (h.isRecord(v)) {
             recordSize += (bytesPerRecord(v) + 3) / 4 * 4;
             ++recordVars;
-        } else {
-            if (v.begin < fixedEnd) throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" +
-                                                      v.name + "' overlaps the one before");
-            fixedEnd = v.begin + bytesPerRecord(v);
         }
-    uint64_t recordEnd = fixedEnd;
     for (const auto& v : h.vars) {
-        const uint64_t size = bytesPerRecord(v), padded = (size + 3) / 4 * 4;
-        const bool record = h.isRecord(v);
-        // vsize saturates for variables over 4 GiB: only smaller ones are compared.
-        if ((padded < 0xFFFFFFFCu && v.vsize != padded && !(recordVars == 1 && record && v.vsize == size)) ||
-            (record && v.begin < recordEnd))
-            throw FormatError(path + ": malformed Exodus II (NetCDF) header: variable '" + v.name +
-                              "' has an inconsistent size or offset");
-        if (record) recordEnd = v.begin + size;
+        const uint64_t size = bytesPerRecord(v);
         uint64_t end = v.begin + size;
-        if (record)
+        if (h.isRecord(v))
             end = h.numRecs == 0 ? v.begin
                                  : v.begin + mul(h.numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
         if (end > m.size || end < v.begin)
@@ -181,8 +169,6 @@ void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
                               std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
     }
 }
-
-void checkExodusSchema(const std::string& path, const Mapping& m, const Header& h);
 
 }  // namespace
 
@@ -204,72 +190,6 @@ void checkExodusFile(const std::string& path) {
         throw FormatError(path + ": not an Exodus II file (neither NetCDF nor HDF5)");
     const Header header = parseHeader(m, path, version);
     checkExtents(header, m, path);
-    checkExodusSchema(path, m, header);
 }
-
-namespace {
-
-// Integer entry `i` of a non-record NC_INT or NC_INT64 variable (range checked above).
-int64_t intAt(const Mapping& m, const Variable& v, uint64_t i) {
-    const uint64_t width = typeSize(v.type);
-    uint64_t raw = 0;
-    for (uint64_t b = 0; b < width; ++b) raw = (raw << 8) | m.data[v.begin + i * width + b];
-    return width == 4 ? int64_t(int32_t(uint32_t(raw))) : int64_t(raw);
-}
-
-// The variables vtkExodusIIReader reads by default must exist (it dereferences a null
-// array otherwise), and connectivity must name existing nodes (1-based).
-void checkExodusSchema(const std::string& path, const Mapping& m, const Header& h) {
-    const Dims& dims = h.dims;
-    const std::vector<Variable>& vars = h.vars;
-    const uint64_t numRecs = h.numRecs;
-    auto dim = [&](const std::string& name) {
-        for (const auto& [n, length] : dims)
-            if (n == name) return length;
-        return uint64_t(0);
-    };
-    auto var = [&](const std::string& name) -> const Variable* {
-        for (const auto& v : vars)
-            if (v.name == name) return &v;
-        return nullptr;
-    };
-    auto require = [&](const std::string& name) {
-        if (!var(name)) throw FormatError(path + ": Exodus II variable '" + name + "' is missing");
-    };
-    const uint64_t blocks = dim("num_el_blk"), elemVars = dim("num_elem_var");
-    if (!var("coord")) {
-        require("coordx");
-        if (dim("num_dim") >= 2) require("coordy");
-        if (dim("num_dim") >= 3) require("coordz");
-    }
-    if (numRecs > 0 && dim("num_nod_var") > 0 && !var("vals_nod_var"))
-        for (uint64_t j = 1; j <= dim("num_nod_var"); ++j) require("vals_nod_var" + std::to_string(j));
-    const Variable* truth = var("elem_var_tab");
-    if (truth && (truth->dims.size() != 2 || dims[truth->dims[0]].second != blocks ||
-                  dims[truth->dims[1]].second != elemVars || (truth->type != 4 && truth->type != 10)))
-        throw FormatError(path + ": Exodus II truth table 'elem_var_tab' has the wrong shape");
-    for (uint64_t i = 1; i <= blocks; ++i) {
-        const std::string block = std::to_string(i);
-        if (dim("num_el_in_blk" + block) > 0) require("connect" + block);
-        for (uint64_t j = 1; numRecs > 0 && j <= elemVars; ++j)
-            if (!truth || intAt(m, *truth, (i - 1) * elemVars + (j - 1)) != 0)
-                require("vals_elem_var" + std::to_string(j) + "eb" + block);
-    }
-    const uint64_t nodes = dim("num_nodes");
-    for (const auto& v : vars) {
-        if (v.name.rfind("connect", 0) != 0 || h.isRecord(v) || (v.type != 4 && v.type != 10)) continue;
-        uint64_t count = 1;
-        for (uint64_t d : v.dims) count *= dims[d].second;  // sizes checked in checkExtents
-        for (uint64_t i = 0; i < count; ++i) {
-            const int64_t node = intAt(m, v, i);
-            if (node < 1 || uint64_t(node) > nodes)
-                throw FormatError(path + ": Exodus II connectivity '" + v.name + "' entry " + std::to_string(i) +
-                                  " names node " + std::to_string(node) + ", the file has " +
-                                  std::to_string(nodes) + " nodes");
-        }
-    }
-}
-
-}  // namespace
 
 }  // namespace flowsurf::io::detail

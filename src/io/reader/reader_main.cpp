@@ -1,15 +1,17 @@
 // flowsurf-reader: the process every file is read in (see reader_process.h). Started by
-// the library with the socket on fd 3; limits its address space, then answers requests
-// (each: its CPU-time budget in seconds, the op, its arguments) until Quit or end of stream. A crash, abort or
-// limit hit here ends this process only; the library reports it as a FormatError.
+// the library with the socket on fd 3 and the reasons pipe on fd 4; limits itself and
+// enters its sandbox (sandbox.h), then answers requests (each: its CPU-time and memory
+// budgets, the op, its arguments) until Quit or end of stream. A crash, abort or limit hit
+// here ends this process only; the library reports it as a FormatError.
 #include "core/errors.h"
 #include "io/reader/file_inspect.h"
 #include "io/reader/reader_wire.h"
+#include "io/reader/sandbox.h"
 #include "io/reader/surface_pipeline.h"
 #include "io/reader/vtk_messages.h"
 #include "io/reader/vtk_sources.h"
 
-#include <sys/resource.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <memory>
@@ -17,29 +19,9 @@
 
 using namespace flowsurf;
 namespace w = flowsurf::io::wire;
+namespace sandbox = flowsurf::io::sandbox;
 
 namespace {
-
-constexpr int kSocketFd = 3;
-
-// The address space from the command line: --memory-mb N (0: none).
-void limitMemory(unsigned long long memoryMb) {
-    if (memoryMb == 0) return;
-    rlimit r{rlim_t(memoryMb) << 20, rlim_t(memoryMb) << 20};
-    setrlimit(RLIMIT_AS, &r);
-}
-
-// RLIMIT_CPU counts the process's whole life: give each request its own budget (0: none).
-void limitCpuForRequest(unsigned long long cpuSeconds) {
-    if (cpuSeconds == 0) return;
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    rlimit r{};
-    getrlimit(RLIMIT_CPU, &r);
-    r.rlim_cur = rlim_t(u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1) + rlim_t(cpuSeconds);
-    if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
-    setrlimit(RLIMIT_CPU, &r);
-}
 
 // The open multi-step source of Open/Step requests.
 struct OpenSource {
@@ -47,23 +29,6 @@ struct OpenSource {
     io::detail::VtkMessageTrap trap;
     std::unique_ptr<io::detail::StepSource> source;
 };
-
-core::Dataset readWholeDataset(const std::string& path, size_t maxSteps) {
-    io::detail::VtkMessageTrap trap;
-    auto source = io::detail::openSource(path, trap);
-    size_t count = source->stepCount();
-    if (maxSteps > 0) count = std::min(count, maxSteps);
-    core::Dataset dataset;
-    dataset.source = path;
-    for (size_t i = 0; i < count; ++i) {
-        vtkSmartPointer<vtkDataObject> raw = source->readStep(i);
-        core::TimeStep step;
-        step.time = source->times().empty() ? 0.0 : source->times()[i];
-        step.mesh = io::detail::readSurfaceMesh(raw, trap, io::detail::stepLabel(path, *source, i));
-        dataset.steps.push_back(std::move(step));
-    }
-    return dataset;
-}
 
 // Answers one request into `out` (status Ok and the payload). Throws what the reader throws.
 bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>& open) {
@@ -90,14 +55,6 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
             out.mesh(m);
             return true;
         }
-        case w::Op::Dataset: {
-            std::string path = in.str();
-            uint64_t maxSteps = in.u64();
-            core::Dataset d = readWholeDataset(path, size_t(maxSteps));
-            out.u8(uint8_t(w::Status::Ok));
-            w::writeDataset(out, d);
-            return true;
-        }
         case w::Op::Inspect: {
             std::string path = in.str();
             io::FileInfo info = io::detail::inspectFileHere(path, w::readSourceOptions(in));
@@ -118,19 +75,22 @@ void error(w::Writer& out, w::Status status, const char* what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    unsigned long long memoryMb = 0;
-    for (int i = 1; i + 1 < argc; i += 2)
-        if (std::string(argv[i]) == "--memory-mb") memoryMb = std::strtoull(argv[i + 1], nullptr, 10);
-    limitMemory(memoryMb);
+    try {
+        sandbox::start(sandbox::parseArgs(argc, argv));
+    } catch (const std::exception& e) {
+        const std::string why = std::string("could not enter its sandbox: ") + e.what();
+        [[maybe_unused]] ssize_t n = ::write(sandbox::kReasonFd, why.data(), why.size());
+        return 70;
+    }
     std::unique_ptr<OpenSource> open;
-    w::Writer out(kSocketFd);
+    w::Writer out(sandbox::kSocketFd);
     for (;;) {
-        w::Reader in(kSocketFd);
+        w::Reader in(sandbox::kSocketFd);
         w::Op op;
         try {
-            const uint64_t cpuSeconds = in.u64();
+            const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
             op = w::Op(in.u8());
-            limitCpuForRequest(cpuSeconds);
+            sandbox::limitRequest(memoryMb, cpuSeconds);
         } catch (const w::Broken&) {
             return 0;  // the library closed the socket
         }
@@ -147,7 +107,12 @@ int main(int argc, char** argv) {
         } catch (const ConfigError& e) {
             error(out, w::Status::ConfigError, e.what());
         } catch (const std::bad_alloc&) {
-            error(out, w::Status::Other, "out of memory while reading (the reader's limit)");
+            const unsigned long long mb = sandbox::memoryLimitMb();
+            error(out, w::Status::Other,
+                  mb > 0 ? ("the reader needed more than " + std::to_string(mb) +
+                            " MiB (its memory limit for this input; FLOWSURF_READER_MEMORY_MB sets another)")
+                               .c_str()
+                         : "the reader ran out of memory");
         } catch (const std::exception& e) {
             error(out, w::Status::Other, e.what());
         }

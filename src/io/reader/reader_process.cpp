@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/program_dirs.h"
 #include "io/reader/reader_wire.h"
+#include "io/reader/sandbox.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -41,35 +42,54 @@ unsigned long long defaultMemoryMb() {
     return std::max<unsigned long long>(2048, (unsigned long long)pages * size / 4 * 3 >> 20);
 }
 
-bool sanitized() {
-#if defined(__SANITIZE_ADDRESS__)
-    return true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return true;
-#endif
-#endif
-    return false;
+// FLOWSURF_READER_TIMEOUT_S and FLOWSURF_READER_MEMORY_MB, or 0 when unset.
+long long fixedSeconds() { return envNumber("FLOWSURF_READER_TIMEOUT_S", 0); }
+unsigned long long fixedMemoryMb() { return (unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", 0); }
+
+// The budgets for `path`: its input's size, or the environment's fixed values.
+ReaderBudget budgetFor(const std::string& path) {
+    ReaderBudget b = readerBudget(readerInputBytes(path));
+    if (const long long s = fixedSeconds(); s > 0) b.wallS = b.cpuS = s;
+    if (const unsigned long long mb = fixedMemoryMb(); mb > 0) b.memoryMb = mb;
+    if (sandbox::kSanitized) b.memoryMb = 0;  // an address-space limit breaks AddressSanitizer's shadow memory
+    return b;
 }
 
-std::string signalText(int sig) {
-    switch (sig) {
-        case SIGSEGV: return "crashed (SIGSEGV)";
-        case SIGBUS: return "crashed (SIGBUS)";
-        case SIGFPE: return "crashed (SIGFPE)";
-        case SIGILL: return "crashed (SIGILL)";
-        case SIGABRT: return "aborted (SIGABRT)";
-        case SIGXCPU: return "ran out of CPU time (SIGXCPU)";
-        default: return std::string("was killed by signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")";
+// Which variable sets another value, for messages.
+std::string overrideHint(bool fixed, const char* variable) {
+    return fixed ? std::string(variable) : std::string("its limit for this input's size; ") + variable + " sets another";
+}
+
+// Why the child ended, from its exit status and what it wrote to the reasons pipe.
+std::string deathText(int status, const std::string& reason, const ReaderBudget& budget) {
+    if (WIFSIGNALED(status)) {
+        switch (const int sig = WTERMSIG(status)) {
+            case SIGSYS: return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
+            case SIGXCPU:
+                return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
+                       overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
+            case SIGSEGV: case SIGBUS: case SIGFPE: case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
+            case SIGABRT: return "aborted (SIGABRT)";
+            default: return "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+        }
     }
+    if (WIFEXITED(status))
+        return "exited unexpectedly (status " + std::to_string(WEXITSTATUS(status)) + ")" +
+               (reason.empty() ? "" : ": " + reason);
+    return "stopped";
 }
 
-// FLOWSURF_READER_TIMEOUT_S, or 0 when unset (the budget follows the input's size).
-long long fixedBudgetSeconds() { return envNumber("FLOWSURF_READER_TIMEOUT_S", 0); }
+// The folder a request on `path` reads below (symbolic links resolved, as the kernel sees it).
+std::string rootFor(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) p = fs::absolute(path);
+    return p.has_parent_path() ? p.parent_path().string() : "/";
+}
 
-long long budgetFor(const std::string& path) {
-    const long long fixed = fixedBudgetSeconds();
-    return fixed > 0 ? fixed : readerBudgetSeconds(readerInputBytes(path));
+bool isBelow(const std::string& path, const std::string& root) {
+    const fs::path rel = fs::path(path).lexically_relative(root);
+    return !rel.empty() && *rel.begin() != "..";
 }
 
 // The reader's warnings that end every reply, printed as the library's own.
@@ -77,14 +97,17 @@ void printWarnings(wire::Reader& r) {
     for (uint64_t i = 0, n = r.count(1 << 16); i < n; ++i)
         std::fprintf(stderr, "flowsurf: warning: %s\n", r.str().c_str());
 }
-
 }  // namespace
 
-long long readerBudgetSeconds(unsigned long long inputBytes) {
-    constexpr long long kWeek = 7 * 24 * 3600;
+ReaderBudget readerBudget(unsigned long long inputBytes) {
+    constexpr double kWeek = 7 * 24 * 3600;
     const double mb = double(inputBytes) / double(1 << 20);
-    const double s = double(kReaderBaseS) + std::ceil(mb * kReaderSecondsPerMb);
-    return s >= double(kWeek) ? kWeek : (long long)s;
+    ReaderBudget b;
+    b.wallS = (long long)std::min(kWeek, double(kReaderBaseS) + std::ceil(mb * kReaderSecondsPerMb));
+    b.cpuS = (long long)std::min(kWeek, std::round(double(kReaderCpuBaseS) + mb * kReaderCpuSecondsPerMb));
+    const double memory = double(kReaderMemoryBaseMb) + std::ceil(mb) * double(kReaderMemoryPerMb);
+    b.memoryMb = memory >= double(1ull << 40) ? 1ull << 40 : (unsigned long long)memory;
+    return b;
 }
 
 unsigned long long readerInputBytes(const std::string& path) {
@@ -125,45 +148,65 @@ std::string readerExecutable() {
 }
 
 ReaderProcess::ReaderProcess()
-    : memoryMb_((unsigned long long)envNumber("FLOWSURF_READER_MEMORY_MB", long(defaultMemoryMb()))) {
-    // An address-space limit breaks AddressSanitizer's shadow memory.
-    if (sanitized()) memoryMb_ = 0;
-    spawn();
+    : exe_(readerExecutable()), memoryHardMb_(fixedMemoryMb() > 0 ? fixedMemoryMb() : defaultMemoryMb()) {
+    if (sandbox::kSanitized) memoryHardMb_ = 0;
 }
 
 ReaderProcess::~ReaderProcess() {
     if (pid_ <= 0) return;
     wire::Writer w(fd_);
     w.u64(0);
+    w.u64(0);
     w.u8(uint8_t(wire::Op::Quit));
     w.flush();
     reap(false);
 }
 
-void ReaderProcess::spawn() {
-    const std::string exe = readerExecutable();
-    int sv[2];
+void ReaderProcess::ensureChild(const std::string& root) {
+    if (pid_ > 0 && isBelow(root, root_)) return;
+    if (pid_ > 0) reap(true);  // confined below another folder
+    spawn(root);
+}
+
+void ReaderProcess::spawn(const std::string& root) {
+    int sv[2], reasons[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
         throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
+    if (pipe2(reasons, O_CLOEXEC) != 0) {
+        close(sv[0]);
+        close(sv[1]);
+        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
+    }
+    fcntl(reasons[0], F_SETFL, O_NONBLOCK);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, sv[1], 3);  // dup2 clears close-on-exec
+    // dup2 clears close-on-exec; then nothing else of ours reaches the child.
+    posix_spawn_file_actions_adddup2(&actions, sv[1], sandbox::kSocketFd);
+    posix_spawn_file_actions_adddup2(&actions, reasons[1], sandbox::kReasonFd);
+    posix_spawn_file_actions_addclosefrom_np(&actions, sandbox::kReasonFd + 1);
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     // VTK's own printing is trapped in the child; what escapes (a crash's last words) is noise.
     if (!std::getenv("FLOWSURF_READER_STDERR")) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    const std::string mem = std::to_string(memoryMb_);
-    std::vector<char*> argv{const_cast<char*>(exe.c_str()), const_cast<char*>("--memory-mb"),
-                            const_cast<char*>(mem.c_str()), nullptr};
+    const std::string mem = std::to_string(memoryHardMb_);
+    std::vector<char*> argv{const_cast<char*>(exe_.c_str()), const_cast<char*>("--memory-mb"),
+                            const_cast<char*>(mem.c_str()),  const_cast<char*>("--root"),
+                            const_cast<char*>(root.c_str()), nullptr};
     pid_t pid = -1;
-    int rc = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+    int rc = posix_spawn(&pid, exe_.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     close(sv[1]);
+    close(reasons[1]);
     if (rc != 0) {
         close(sv[0]);
-        throw IoError("cannot start the reader process " + exe + ": " + std::strerror(rc));
+        close(reasons[0]);
+        throw IoError("cannot start the reader process " + exe_ + ": " + std::strerror(rc));
     }
     pid_ = pid;
     fd_ = sv[0];
+    reasonFd_ = reasons[0];
+    root_ = root;
+    lastStatus_ = 0;
 }
 
 std::string ReaderProcess::reap(bool kill) {
@@ -175,25 +218,22 @@ std::string ReaderProcess::reap(bool kill) {
     while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
-    if (WIFSIGNALED(status)) return signalText(WTERMSIG(status));
-    if (WIFEXITED(status)) return "exited unexpectedly (status " + std::to_string(WEXITSTATUS(status)) + ")";
-    return "stopped";
+    char text[512];
+    const ssize_t n = read(reasonFd_, text, sizeof text);
+    close(reasonFd_);
+    reasonFd_ = -1;
+    lastStatus_ = status;
+    lastReason_.assign(text, n > 0 ? size_t(n) : 0);
+    return lastReason_;
 }
 
 template <typename Send, typename Parse>
-auto ReaderProcess::call(const std::string& label, long long budgetS, Send send, Parse parse) {
-    if (pid_ <= 0) {
-        spawn();
-        if (!lastOpen_.empty()) {  // the previous child died: restore its open source
-            const std::string path = lastOpen_;
-            lastOpen_.clear();
-            openLocked(path, lastOptions_);
-        }
-    }
+auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse) {
     wire::Writer w(fd_);
-    w.u64(uint64_t(budgetS));  // the child's CPU-time budget for this request
+    w.u64(uint64_t(budget.cpuS));  // the child's budgets for this request
+    w.u64(budget.memoryMb);
     send(w);
-    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(budgetS);
+    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(budget.wallS);
     wire::Reader r(fd_, deadline);
     try {
         if (!w.flush()) throw wire::Broken{};
@@ -214,26 +254,27 @@ auto ReaderProcess::call(const std::string& label, long long budgetS, Send send,
         return result;
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
-        std::string why = reap(true);
-        if (b.timedOut)
-            why = "took longer than " + std::to_string(budgetS) + " s (" +
-                  (fixedBudgetSeconds() > 0 ? "FLOWSURF_READER_TIMEOUT_S"
-                                            : "its budget for this input's size; FLOWSURF_READER_TIMEOUT_S sets another") +
-                  ")";
+        reap(true);
+        const std::string why =
+            b.timedOut ? "took longer than " + std::to_string(budget.wallS) + " s (" +
+                             overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")"
+                       : deathText(lastStatus_, lastReason_, budget);
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }
 
 core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
     std::lock_guard lock(mutex_);
-    return call(
-        path, budgetFor(path),
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Dataset));
-            w.str(path);
-            w.u64(maxSteps);
-        },
-        [](wire::Reader& r) { return wire::readDataset(r); });
+    const SourceInfo info = openLocked(path, {});
+    const size_t steps = info.times.empty() ? 1 : info.times.size();
+    core::Dataset dataset;
+    dataset.source = path;
+    for (size_t i = 0; i < (maxSteps > 0 ? std::min(steps, maxSteps) : steps); ++i) {
+        const std::string label =
+            steps == 1 ? path : path + " (time step " + std::to_string(i + 1) + " of " + std::to_string(steps) + ")";
+        dataset.steps.push_back({info.times.empty() ? 0.0 : info.times[i], readStepLocked(i, label)});
+    }
+    return dataset;
 }
 
 ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const SourceOptions& options) {
@@ -242,9 +283,10 @@ ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const Sou
 }
 
 ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
-    openBudgetS_ = budgetFor(path);
+    ensureChild(rootFor(path));
+    openBudget_ = budgetFor(path);
     SourceInfo info = call(
-        path, openBudgetS_,
+        path, openBudget_,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Open));
             w.str(path);
@@ -264,8 +306,14 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
 
 core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
     std::lock_guard lock(mutex_);
+    return readStepLocked(index, label);
+}
+
+core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
+    if (pid_ <= 0 && !lastOpen_.empty()) openLocked(lastOpen_, lastOptions_);  // the child died: restore its source
+    ensureChild(root_);
     return call(
-        label, openBudgetS_,
+        label, openBudget_,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Step));
             w.u64(index);
@@ -275,6 +323,7 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
 
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
+    ensureChild(rootFor(path));
     return call(
         path, budgetFor(path),
         [&](wire::Writer& w) {

@@ -1,16 +1,20 @@
 // flowsurf — files are read in a child process (private to src/io). VTK's readers (and
 // our PLY/OBJ parsers) run in `flowsurf-reader`, started with posix_spawn (never fork:
-// the step prefetch thread makes it unsafe) under RLIMIT_AS and, per request, a time
-// budget that grows with the input (readerBudgetSeconds: wall clock here, CPU time in the
-// child); the surface comes back over a socket. A crash, abort, hang or allocation bomb
-// ends the child and becomes a one-line FormatError naming the file. One ReaderProcess
-// serves many requests: a time series keeps its child alive.
+// the step prefetch thread makes it unsafe) with only its socket and reasons pipe open,
+// inside a sandbox (sandbox.h: no network, no writes, no programs, reads only below the
+// input's folder) and, per request, budgets that grow with the input (readerBudget):
+// a wall-clock deadline kept here, CPU time and address space limited in the child. The
+// surface comes back over the socket. A crash, abort, hang, allocation bomb or refused
+// system call ends the child and becomes a one-line FormatError naming the file and what
+// was hit. One ReaderProcess serves many requests (a time series keeps its child alive);
+// a request below another folder gets a fresh child confined to that folder.
 //
 // Environment: FLOWSURF_READER (the executable; default: next to the library or program, in
 // its ../libexec/flowsurf/ (core/program_dirs.h), else the build tree's),
-// FLOWSURF_READER_MEMORY_MB (address space, default 3/4 of physical memory),
-// FLOWSURF_READER_TIMEOUT_S (a fixed budget in seconds per request instead of the
-// size-based one).
+// FLOWSURF_READER_MEMORY_MB (a fixed address-space limit instead of the size-based one),
+// FLOWSURF_READER_TIMEOUT_S (a fixed wall-clock and CPU budget in seconds per request
+// instead of the size-based ones), FLOWSURF_READER_SANDBOX=off (limits only; for
+// debugging). doc/reader_sandbox.md says more.
 #pragma once
 
 #include "core/mesh.h"
@@ -24,14 +28,37 @@
 
 namespace flowsurf::io::detail {
 
+// What one request on an input of `inputBytes` may use. The wall clock (kept by the
+// library) is kReaderBaseS, for starting the child and a small file on a busy machine, plus
+// kReaderSecondsPerMb per MiB: the slowest reader measured (legacy ASCII .vtk, 70 MB in 9 s
+// on a loaded 2-core machine: 8 MB/s; ASCII EnSight 23 MB/s) is 4x faster than this
+// allows. CPU time: a second (the child rounds what it used so far up to whole seconds,
+// so a request gets between 1 and 2 s; small files need milliseconds) plus twice the wall
+// clock's allowance per MiB (VTK's filters run on several threads), so a small file that
+// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb (the libraries, thread stacks and arenas)
+// plus kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times
+// are capped at a week (an unbounded folder).
+struct ReaderBudget {
+    long long wallS = 0;
+    long long cpuS = 0;
+    unsigned long long memoryMb = 0;
+};
+constexpr long long kReaderBaseS = 30;
+constexpr double kReaderSecondsPerMb = 0.5;
+constexpr long long kReaderCpuBaseS = 1;
+constexpr double kReaderCpuSecondsPerMb = 1.0;
+constexpr unsigned long long kReaderMemoryBaseMb = 2048;
+constexpr unsigned long long kReaderMemoryPerMb = 32;
+ReaderBudget readerBudget(unsigned long long inputBytes);
+
 class ReaderProcess {
 public:
-    ReaderProcess();  // spawns the child; throws IoError if it cannot be started
+    ReaderProcess();  // finds the executable (IoError if nowhere); the child starts with a request
     ~ReaderProcess();
     ReaderProcess(const ReaderProcess&) = delete;
     ReaderProcess& operator=(const ReaderProcess&) = delete;
 
-    // Every time step of `path` (at most `maxSteps`, 0 = all).
+    // Every time step of `path` (at most `maxSteps`, 0 = all): opened, then read step by step.
     core::Dataset readDataset(const std::string& path, size_t maxSteps);
     // Opens `path` as the child's current multi-step source: its format and times.
     // `options`: OpenFOAM's boundary patches and case layout.
@@ -49,30 +76,28 @@ private:
     // after an Ok status); a typed error from the child is rethrown, a dead or hung
     // child becomes a FormatError naming `label`.
     template <typename Send, typename Parse>
-    auto call(const std::string& label, long long budgetS, Send send, Parse parse);
-    void spawn();
+    auto call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse);
+    // A running child confined to `root` (a running one elsewhere is ended first).
+    void ensureChild(const std::string& root);
+    void spawn(const std::string& root);
     SourceInfo openLocked(const std::string& path, const SourceOptions& options);
+    core::SurfaceMesh readStepLocked(size_t index, const std::string& label);
     // Ends the child (killing it if needed) and returns why it died, for messages.
     std::string reap(bool kill);
 
     std::mutex mutex_;  // the prefetch thread and the caller share a child
+    std::string exe_;
     pid_t pid_ = -1;
-    int fd_ = -1;
-    long long openBudgetS_ = 0;  // of the source opened last, for its step requests
-    unsigned long long memoryMb_ = 0;
-    std::string lastOpen_;  // re-opened after a restart, with these options
+    int fd_ = -1, reasonFd_ = -1;  // the socket; the reasons pipe's read end
+    std::string root_;             // the folder the running child may read below
+    int lastStatus_ = 0;           // how the last child ended, and what it said (reasons pipe)
+    std::string lastReason_;
+    unsigned long long memoryHardMb_ = 0;
+    ReaderBudget openBudget_;  // of the source opened last, for its step requests
+    std::string lastOpen_;    // re-opened after a restart, with these options
     SourceOptions lastOptions_;
 };
 
-// The time one request may take on an input of `inputBytes`: kReaderBaseS (starting the
-// child, a small file on a busy machine) plus kReaderSecondsPerMb per MiB. The slowest
-// reader measured (legacy ASCII .vtk, 70 MB in 9 s on a loaded 2-core machine: 8 MB/s;
-// ASCII EnSight 23 MB/s) is 4x faster than this allows, so a real 1 GiB case reads
-// (budget 30 + 512 s), while a small file that hangs a reader is stopped after 30 s
-// instead of the former fixed 300 s. Capped at a week (an unbounded folder).
-constexpr long long kReaderBaseS = 30;
-constexpr double kReaderSecondsPerMb = 0.5;
-long long readerBudgetSeconds(unsigned long long inputBytes);
 // What a request on `path` may read: the file's size, and for formats whose file names
 // others (.case, .pvd, an OpenFOAM case's .foam) everything in its folder and below.
 unsigned long long readerInputBytes(const std::string& path);

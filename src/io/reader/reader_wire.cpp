@@ -140,26 +140,6 @@ core::SurfaceMesh Reader::mesh() {
     return m;
 }
 
-void writeDataset(Writer& w, const core::Dataset& d) {
-    w.str(d.source);
-    w.u64(d.steps.size());
-    for (const auto& s : d.steps) {
-        w.f64(s.time);
-        w.mesh(s.mesh);
-    }
-}
-
-core::Dataset readDataset(Reader& r) {
-    core::Dataset d;
-    d.source = r.str();
-    d.steps.resize(size_t(r.count(1 << 24)));
-    for (auto& s : d.steps) {
-        s.time = r.f64();
-        s.mesh = r.mesh();
-    }
-    return d;
-}
-
 void writeSourceOptions(Writer& w, const SourceOptions& o) {
     w.str(o.patches);
     w.str(o.foamCase);

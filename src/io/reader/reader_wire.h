@@ -1,7 +1,8 @@
 // flowsurf — the wire between the library and its reader process (private to src/io):
 // length-prefixed little-endian records over one AF_UNIX stream socket. Requests carry
-// the child's CPU-time budget (seconds), an op and its arguments; replies a status (ok, or the typed error the reader threw)
-// and the payload: a surface mesh, a dataset, the metadata of a source, a FileInfo.
+// the child's budgets (CPU seconds, address space in MiB), an op and its arguments;
+// replies a status (ok, or the typed error the reader threw) and the payload: the
+// metadata of a source, a surface mesh (one step of it), a FileInfo.
 #pragma once
 
 #include "core/mesh.h"
@@ -14,7 +15,7 @@
 
 namespace flowsurf::io::wire {
 
-enum class Op : uint8_t { Open = 1, Step = 2, Dataset = 3, Inspect = 4, Quit = 5 };
+enum class Op : uint8_t { Open = 1, Step = 2, Inspect = 4, Quit = 5 };
 // Reply status: the error type the reader threw, rethrown as the same type. Every reply,
 // ok or not, ends with the reader's warnings (a count and the texts).
 enum class Status : uint8_t { Ok = 0, IoError = 1, FormatError = 2, ConfigError = 3, FieldError = 4, Other = 5 };
@@ -61,8 +62,6 @@ private:
     Clock::time_point deadline_;
 };
 
-void writeDataset(Writer& w, const core::Dataset& d);
-core::Dataset readDataset(Reader& r);
 void writeSourceOptions(Writer& w, const SourceOptions& o);
 SourceOptions readSourceOptions(Reader& r);
 void writeFileInfo(Writer& w, const FileInfo& info);

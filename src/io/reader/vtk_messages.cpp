@@ -12,9 +12,9 @@
 #include <vtkOutputWindow.h>
 
 #include <algorithm>
-#include <iterator>
 #include <mutex>
 #include <set>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -22,55 +22,29 @@ namespace flowsurf::io::detail {
 
 namespace {
 
-// Traps with an Active scope on this thread; the last one collects. A stack rather
-// than a pointer, so scopes of different traps may end in any order.
-thread_local std::vector<VtkMessageTrap*> tActive;
+// The innermost Active scope's trap, and the thread it was opened on.
+VtkMessageTrap* gTrap = nullptr;
+std::thread::id gTrapThread;
 
-VtkMessageTrap* currentTrap() { return tActive.empty() ? nullptr : tActive.back(); }
+VtkMessageTrap* trapHere() { return gTrap && std::this_thread::get_id() == gTrapThread ? gTrap : nullptr; }
 
-// Messages from objects nobody observes (parsers and helpers created inside VTK
-// readers) go to the global output window: route them to this thread's trap, and
-// forward anything from threads without a trap to the window we replaced.
+// Messages from objects nobody observes (parsers and helpers created inside VTK readers)
+// go to the global output window: to the current trap, or nowhere.
 class CapturingOutputWindow : public vtkOutputWindow {
 public:
     static CapturingOutputWindow* New();
     vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
-
-    void DisplayText(const char* text) override { forward(text, &vtkOutputWindow::DisplayText); }
+    void DisplayText(const char*) override {}
+    void DisplayDebugText(const char*) override {}
     void DisplayErrorText(const char* text) override {
-        if (VtkMessageTrap* trap = currentTrap()) trap->addError(text);
-        else forward(text, &vtkOutputWindow::DisplayErrorText);
+        if (VtkMessageTrap* trap = trapHere()) trap->addError(text);
     }
     void DisplayWarningText(const char* text) override {
-        if (VtkMessageTrap* trap = currentTrap()) trap->addWarning(text);
-        else forward(text, &vtkOutputWindow::DisplayWarningText);
+        if (VtkMessageTrap* trap = trapHere()) trap->addWarning(text);
     }
-    void DisplayGenericWarningText(const char* text) override {
-        if (VtkMessageTrap* trap = currentTrap()) trap->addWarning(text);
-        else forward(text, &vtkOutputWindow::DisplayGenericWarningText);
-    }
-    void DisplayDebugText(const char* text) override {
-        forward(text, &vtkOutputWindow::DisplayDebugText);
-    }
-
-    vtkSmartPointer<vtkOutputWindow> previous;
-
-private:
-    void forward(const char* text, void (vtkOutputWindow::*display)(const char*)) {
-        if (!currentTrap() && previous) (previous.Get()->*display)(text);
-    }
+    void DisplayGenericWarningText(const char* text) override { DisplayWarningText(text); }
 };
 vtkStandardNewMacro(CapturingOutputWindow);
-
-// The capturing window is installed while at least one Active scope runs (any thread).
-// VTK also logs every unobserved error through vtkLogger, which prints to stderr on its
-// own; its stderr verbosity is lowered for the same period. vtkLogger has no getter
-// for it: the cutoff over all outputs is restored, capped at the default (INFO) so a
-// verbose log file elsewhere never makes the terminal noisier than before.
-std::mutex gWindowMutex;
-int gActiveScopes = 0;
-vtkSmartPointer<CapturingOutputWindow> gWindow;
-vtkLogger::Verbosity gPreviousStderrVerbosity = vtkLogger::VERBOSITY_INFO;
 
 // The pipeline's "Algorithm X returned failure for request: vtkInformation (...)" only
 // says that something failed; the reader's own message, if any, says what.
@@ -148,30 +122,18 @@ std::string cleanVtkMessage(const char* text) {
     return printable(trim(s));
 }
 
-VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : trap_(&trap) {
-    tActive.push_back(trap_);
-    std::lock_guard<std::mutex> lock(gWindowMutex);
-    if (gActiveScopes++ == 0) {
-        gWindow = vtkSmartPointer<CapturingOutputWindow>::New();
-        gWindow->previous = vtkOutputWindow::GetInstance();
-        vtkOutputWindow::SetInstance(gWindow);
-        gPreviousStderrVerbosity =
-            std::min(vtkLogger::GetCurrentVerbosityCutoff(), vtkLogger::VERBOSITY_INFO);
-        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    }
+VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : previous_(gTrap) {
+    static const bool installed = [] {
+        vtkOutputWindow::SetInstance(vtkSmartPointer<CapturingOutputWindow>::New());
+        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // VTK logs unobserved errors there too
+        return true;
+    }();
+    (void)installed;
+    gTrap = &trap;
+    gTrapThread = std::this_thread::get_id();
 }
 
-VtkMessageTrap::Active::~Active() {
-    // The most recent entry for this trap (scopes of one trap nest on a thread).
-    auto it = std::find(tActive.rbegin(), tActive.rend(), trap_);
-    if (it != tActive.rend()) tActive.erase(std::next(it).base());
-    std::lock_guard<std::mutex> lock(gWindowMutex);
-    if (--gActiveScopes == 0) {
-        vtkOutputWindow::SetInstance(gWindow->previous);
-        gWindow = nullptr;
-        vtkLogger::SetStderrVerbosity(gPreviousStderrVerbosity);
-    }
-}
+VtkMessageTrap::Active::~Active() { gTrap = previous_; }
 
 VtkMessageTrap::VtkMessageTrap() {
     callback_ = vtkSmartPointer<vtkCallbackCommand>::New();

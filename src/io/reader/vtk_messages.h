@@ -1,12 +1,12 @@
 // flowsurf — turning VTK's error reports into exceptions (private to src/io).
 // VTK readers never throw: they report through vtkErrorMacro and return partial or
 // empty output. A VtkMessageTrap collects those reports — from observers on the
-// objects we create, and, while a VtkMessageTrap::Active scope runs on a thread, from
-// a capturing output window for objects created inside VTK — so nothing reaches the
-// terminal and the first error becomes a FormatError naming the file.
-// A trap may live long (a lazily read series keeps one per file) and be used from a
-// worker thread: VTK output is captured only during the Active scopes, on the thread
-// that runs them, and scopes may end in any order.
+// objects we create, and, while a VtkMessageTrap::Active scope runs, from the output
+// window for objects created inside VTK — so nothing reaches the terminal and the first
+// error becomes a FormatError naming the file. The reader process reads on one thread:
+// the first scope replaces VTK's output window and silences vtkLogger for the process's
+// life; the window hands a message to the innermost scope's trap when it comes from the
+// thread that opened it, and drops it otherwise (or with no scope open).
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -23,8 +23,8 @@ namespace flowsurf::io::detail {
 
 class VtkMessageTrap {
 public:
-    // Routes VTK's global output (and silences vtkLogger's stderr) to `trap` on this
-    // thread for the scope's lifetime. Wrap every block of VTK calls made for a trap.
+    // Routes VTK's global output to `trap` for the scope's lifetime (scopes nest). Wrap
+    // every block of VTK calls made for a trap.
     class Active {
     public:
         explicit Active(VtkMessageTrap& trap);
@@ -33,7 +33,7 @@ public:
         Active& operator=(const Active&) = delete;
 
     private:
-        VtkMessageTrap* trap_;
+        VtkMessageTrap* previous_;
     };
 
     VtkMessageTrap();

@@ -2,13 +2,10 @@
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
-#include "io/reader/ensight_check.h"
 #include "io/reader/exodus_check.h"
-#include "io/reader/legacy_check.h"
 #include "io/reader/obj_reader.h"
 #include "io/reader/openfoam_source.h"
 #include "io/reader/ply_reader.h"
-#include "io/reader/xml_check.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkExodusIIReader.h>
@@ -178,7 +175,6 @@ vtkSmartPointer<Reader> readerFor(const std::string& path) {
 }
 
 std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& trap) {
-    checkLegacyFile(path);  // old-layout cell lists crash VTK's reader when corrupt
     auto r = readerFor<vtkGenericDataObjectReader>(path);
     trap.watch(r);
     r->UpdateInformation();
@@ -192,7 +188,7 @@ std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& 
 }
 
 std::unique_ptr<StepSource> openExodus(const std::string& path, VtkMessageTrap& trap) {
-    checkExodusFile(path);  // what the Exodus library would print, crash on or miss
+    checkExodusFile(path);  // a truncated file reads as zeros
     auto r = readerFor<vtkExodusIIReader>(path);
     return makeSource(r, path, "Exodus II", trap, [&] {
         // The reader loads no result variables unless asked.
@@ -315,9 +311,7 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
         vtkSmartPointer<vtkAlgorithm> reader;
         if (ext == ".vtp") reader = readerFor<vtkXMLPolyDataReader>(path);
         else reader = readerFor<vtkXMLUnstructuredGridReader>(path);
-        auto source = makeSource(reader, path, name, trap);
-        checkXmlCompressionHeaders(path);
-        return source;
+        return makeSource(reader, path, name, trap);
     }
     if (ext == ".vtk") return openLegacy(path, trap);
     if (ext == ".ply") return std::make_unique<ReadySource>(readPly(path), name);
@@ -328,7 +322,6 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     }
     if (ext == ".foam") return openOpenFoam(path, trap, options);
     if (ext == ".case") {
-        checkEnSightCase(path);  // counts beyond the file keep VTK's reader busy for minutes
         auto r = vtkSmartPointer<vtkGenericEnSightReader>::New();
         r->SetCaseFileName(path.c_str());
         return makeSource(r, path, name, trap);

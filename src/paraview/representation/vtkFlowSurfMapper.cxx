@@ -16,6 +16,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
+#include "vtkInformation.h"
 #include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -52,6 +53,7 @@ struct vtkFlowSurfMapper::Internals
   fs::session::RenderOptions options;
   std::string vectors;
   double viewTime = 0.0;
+  std::optional<double> pieceTime;  // the data time of this piece (SetPieceTime)
 
   vtkMTimeType dataTime = 0;
   std::string dataVectors;
@@ -162,6 +164,11 @@ std::string vtkFlowSurfMapper::SetOption(const std::string& name, const std::str
 void vtkFlowSurfMapper::SetViewTime(double time)
 {
   this->Impl->viewTime = time;
+}
+
+void vtkFlowSurfMapper::SetPieceTime(bool has, double time)
+{
+  this->Impl->pieceTime = has ? std::optional<double>(time) : std::nullopt;
 }
 
 void vtkFlowSurfMapper::ReleaseGraphicsResources(vtkWindow* win)
@@ -313,6 +320,10 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
       error = e.what();
     }
     error = agreed(error);
+    if (group && error.empty())  // the same on every process: a collective step for all
+    {
+      error = group->sameValue(input && pieceTime, pieceTime.value_or(0.0), "the pieces' data times");
+    }
     if (!error.empty())
     {
       playback.reset();
@@ -332,7 +343,14 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
 
   // (2) the frame loop: new renderers when options, the colour array or the view size
   // change (the table's effects), a new upload when only the data changed at a new view time
-  const bool timeChanged = lastTime && *lastTime != viewTime;
+  // (decided for the group: each frame is collective)
+  bool timeChanged = lastTime && *lastTime != viewTime;
+  bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
+  if (group)
+  {
+    timeChanged = group->any(timeChanged);
+    cameraChanged = group->any(cameraChanged);
+  }
   const fs::session::RenderOptions o = playbackOptions({ w, h });
   bool warmup = false;
   std::string error;
@@ -368,7 +386,6 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   // (3) advection frames: a still render of something new converges (the warm-up, then
   // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
   // otherwise the last image. The clock is the command line's (session/playback.h).
-  const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
   const bool frames = warmup || timeChanged || cameraChanged;
   if (stats && frames)
   {

@@ -526,6 +526,36 @@ OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b) {
     return e;
 }
 
+bool isRendererOption(const OptionSpec& s) {
+    // What is read (Reload) belongs to the surface, what is written (Output) to the caller.
+    return s.effect != OptionEffect::Reload && s.effect != OptionEffect::Output;
+}
+
+bool isReadOption(const OptionSpec& s) {
+    return s.effect == OptionEffect::Reload && s.name != "input" && s.name != "field";
+}
+
+bool inViewerPanel(const OptionSpec& s) {
+    // Method and overlay sections, the dye section, the camera read-out.
+    if (s.group == "Method" || s.group == "Overlay" || s.group == "Dye") return true;
+    return s.name == "eye" || s.name == "target" || s.name == "up" || s.name == "fov" || s.name == "ortho";
+}
+
+std::string paraviewProperty(const OptionSpec& s) {
+    // The method's options, the dye (sources as --dye's text) and the warm-up that the
+    // mapper's frame loop runs; colour map, lighting and background are ParaView's own.
+    if (s.group != "Method" && s.group != "Overlay" && s.group != "Dye" && s.name != "warmup") return "";
+    if (s.name == "colormap" || s.name == "lighting" || s.name == "background") return "";
+    std::string out = "FlowSurf";
+    bool up = true;
+    for (char c : s.name) {
+        if (c == '-') { up = true; continue; }
+        out += up ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+        up = false;
+    }
+    return out;
+}
+
 void validateRenderOptions(const RenderOptions& o) {
     if (o.input.empty()) throw ConfigError("render: an input file or builtin:NAME is required");
     outputKind(o.output);

@@ -1,0 +1,54 @@
+// flowsurf — what contains flowsurf-reader beyond its own process (private to src/io):
+// resource limits, a Landlock rule set (read-only below the input's folder, where the
+// kernel has Landlock) and a seccomp allow-list (libseccomp). A system call outside the
+// list stops the process with SIGSYS after writing what it tried ("tried to open a
+// network socket (socket)") to the reasons pipe, which the library reads when it reaps
+// the child. User-facing description: doc/reader_sandbox.md.
+#pragma once
+
+#include <string>
+
+namespace flowsurf::io::sandbox {
+
+// The child's inherited descriptors: the request socket and the reasons pipe (write end).
+constexpr int kSocketFd = 3;
+constexpr int kReasonFd = 4;
+
+// An AddressSanitizer build: no address-space limit (its shadow memory needs the room),
+// and the filter answers what its error reports do (a symbolizer) with EPERM.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+constexpr bool kSanitized = __has_feature(address_sanitizer);
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// The command line the library starts the child with: --memory-mb N --root DIR.
+struct ChildArgs {
+    unsigned long long memoryHardMb = 0;  // the address space's hard limit; 0: none
+    std::string root;                     // the folder the child may read below
+};
+ChildArgs parseArgs(int argc, char** argv);
+
+// The whole setup, in order: limitProcess, then (unless FLOWSURF_READER_SANDBOX=off)
+// enter. Call once the readers' libraries are loaded and initialised. Throws
+// std::runtime_error if the filter cannot be installed.
+void start(const ChildArgs& args);
+
+// No core dumps, no file written (RLIMIT_FSIZE 0), few descriptors, and the address
+// space's hard limit (0: none, as under AddressSanitizer, whose shadow memory needs it).
+void limitProcess(unsigned long long memoryHardMb);
+// Per request: the soft address-space limit (clamped to the hard one; 0 leaves it) and
+// `cpuSeconds` more CPU time than used so far (RLIMIT_CPU counts the process's life).
+void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds);
+// The soft address-space limit in MiB, for messages (0: none).
+unsigned long long memoryLimitMb();
+
+// Landlock below `root` (skipped where the kernel lacks it), then the system-call filter.
+void enter(const std::string& root);
+
+// FLOWSURF_READER_SANDBOX=off: limits only, no Landlock, no filter (for debugging).
+bool disabledByEnvironment();
+
+}  // namespace flowsurf::io::sandbox
