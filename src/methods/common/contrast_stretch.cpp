@@ -39,7 +39,7 @@ const gl::Texture2D& ContrastStretch::stretch(const gl::Texture2D& flow, const g
     stretch_.use();
     glUniform2f(stretch_.uniform("uRange"), r.x, r.y);
     glUniform2i(stretch_.uniform("uEnd"), viewport_.width, viewport_.height);
-    glBindImageTexture(0, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(kContrastImageUnit, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchPerPixel(viewport_.width, viewport_.height);
     return stretched_;
 }
