@@ -188,6 +188,20 @@ PYBIND11_MODULE(_flowsurf, m) {
                                  py::arg("choices") = o.choices, py::arg("default") = o.defaultValue));
         return rows;
     }, "The render options described (name, group, help, kind, min, max, choices, default), in --help order");
+    py::class_<VideoWriter>(m, "_VideoWriter")
+        .def(py::init<const std::string&, int, int, int, int>(), py::arg("path"), py::arg("width"), py::arg("height"),
+             py::arg("fps") = 30, py::arg("crf") = 18)
+        .def("add_frame",
+             [](VideoWriter& w, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {
+                 if (rgb.ndim() != 3 || rgb.shape(2) != 3 || rgb.shape(0) != w.height() || rgb.shape(1) != w.width())
+                     throw py::value_error("frame must have shape (" + std::to_string(w.height()) + ", " +
+                                           std::to_string(w.width()) + ", 3), got " +
+                                           std::string(py::str(rgb.attr("shape"))));
+                 const uint8_t* data = rgb.data();
+                 py::gil_scoped_release release;
+                 w.addFrame(data);
+             })
+        .def("finish", &VideoWriter::finish, py::call_guard<py::gil_scoped_release>());
     m.def("_write_png", [](const std::string& path, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {
         if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("image must have shape (h, w, 3)");
         writePng(path, int(rgb.shape(1)), int(rgb.shape(0)), rgb.data());

@@ -7,7 +7,8 @@
 # 2. generates the option reference (tools/docs/option_reference.cpp, from the option table)
 #    and the C++ and Python API pages (tools/docs/api_reference.py);
 # 3. runs every runnable example of README.md and the manual (tools/docs/run_blocks.py),
-#    which also makes the gallery's images from the commands shown beneath them;
+#    which also makes the gallery's images from the commands shown beneath them, and
+#    executes the example notebook (tools/docs/run_notebook.py) into the manual;
 # 4. mkdocs build --strict: a broken link, a missing image or page fails.
 # ctest `docs` runs this. Needs mkdocs + mkdocs-material (scripts/install-deps.sh).
 set -euo pipefail
@@ -60,6 +61,10 @@ done
 python3 tools/docs/api_reference.py cpp include/flowsurf > "$STAGE/api-cpp.md"
 PYTHON=/usr/bin/python3; [ -x "$PYTHON" ] || PYTHON=python3
 PYTHONPATH="$BUILD/python" "$PYTHON" tools/docs/api_reference.py python > "$STAGE/api-python.md"
+
+# The example notebook, executed headless into the manual (checked: no error, its pictures).
+PYTHONPATH="$BUILD/python" "$PYTHON" tools/docs/run_notebook.py docs/notebooks/flowsurf.ipynb \
+  "$STAGE/notebooks/flowsurf.html" 2>&1 | grep -v -e "frozen modules" -e "^0.0"
 
 # 3. Every runnable example; the gallery's images.
 export FLOWSURF_BIN=$BUILD/apps FLOWSURF_PYTHONPATH=$BUILD/python FLOWSURF_PYTHON=$PYTHON

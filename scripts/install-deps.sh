@@ -22,5 +22,6 @@ PACKAGES=(
   clang                                         # fuzz targets (libFuzzer, scripts/fuzz.sh)
   patchelf                                      # the portable tree's $ORIGIN RUNPATHs (test install_portable_tree)
   mkdocs mkdocs-material python3-pymdownx       # the manual (scripts/docs.sh, ctest docs)
+  python3-ipywidgets python3-ipykernel jupyter-nbconvert python3-notebook   # Jupyter: the player, the notebook the manual runs
 )
 exec "$(dirname "$0")/apt-install.sh" "${PACKAGES[@]}"

@@ -13,6 +13,8 @@ Ertl 2004), rendered on the GPU (or Mesa's llvmpipe) into numpy arrays::
     r.add_dye((0, 1, 0), radius=0.05, color="#00ff00")
     for frame in r.frames(s, n=120, orbit=1.0): ...
     r.stage_ms
+    flowsurf.animate(s, frames=60, method="hybrid")            # plays inline in a notebook
+    flowsurf.Player(s)                                         # play, seek, steer (ipywidgets)
 
 Keywords are the command-line option names with ``_`` for ``-`` (``step_px``,
 ``filter_length``, ``on_camera_move``, ``time_per_frame``...), with the same defaults and
@@ -26,11 +28,11 @@ import zlib as _zlib
 
 import numpy as _np
 
-from ._flowsurf import FieldError, FormatError, GlError, Surface, option_names, read_option_names
+from ._flowsurf import FieldError, FormatError, GlError, Surface, option_info, option_names, read_option_names
 from ._flowsurf import _Renderer, _read
 
-__all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "FormatError", "FieldError",
-           "GlError", "option_names", "read_option_names"]
+__all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "Animation", "animate", "Player",
+           "FormatError", "FieldError", "GlError", "option_names", "option_info", "read_option_names"]
 
 # The keywords, from the C++ option table: a Renderer's (what the frame loop applies) and
 # read()'s (how the input is read).
@@ -165,7 +167,12 @@ def _as_surface(mesh, field=None):
 
 
 class Renderer:
-    """A renderer with one method and its options; keeps its texture between frames."""
+    """A renderer with one method and its options; keeps its texture between frames.
+
+    r = flowsurf.Renderer(method="hybrid", size=(800, 600), filter_length=41)
+    img = r.render(surface)                        # (H, W, 3) uint8 after `frames` frames
+    for img in r.frames(surface, n=120, orbit=1.0): ...   # an animation, frame by frame
+    r.set(alpha=0.1); r.get("alpha"); r.stage_ms; r.camera; r.quality()"""
 
     def __init__(self, **options):
         self._r = _Renderer()
@@ -283,3 +290,31 @@ class Image:
     def save(self, path):
         with open(path, "wb") as f:
             f.write(to_png(self.array))
+
+
+def _options_doc():
+    """The render options as a docstring section, from the option table (option_info())."""
+    lines = ["Options (keywords of Renderer, Renderer.set, Renderer.frames, render and animate;",
+             "the command line's names with _ for -, the same ranges and defaults):"]
+    group = None
+    for o in option_info():
+        if o["group"] != group:
+            group = o["group"]
+            lines += ["", "  %s" % group]
+        if o["kind"] in ("int", "float"):
+            hi = "inf" if o["max"] >= 1e29 else "%g" % o["max"]
+            value = "%s %g..%s" % (o["kind"], o["min"], hi)
+        elif o["kind"] == "choice":
+            value = "|".join(c for c in o["choices"] if c)
+        else:
+            value = o["kind"]
+        default = " (default %s)" % o["default"] if o["default"] else ""
+        lines.append("    %s: %s%s" % (o["name"].replace("-", "_"), value, default))
+        lines.append("        %s" % o["help"])
+    return "\n".join(lines)
+
+
+Renderer.__doc__ = (Renderer.__doc__ or "") + "\n\n" + _options_doc()
+render.__doc__ = (render.__doc__ or "") + "\n\nKeywords: the options of Renderer (help(flowsurf.Renderer))."
+
+from .jupyter import Animation, Player, animate  # noqa: E402  (needs Renderer above)

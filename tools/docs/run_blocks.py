@@ -16,7 +16,8 @@ A block is runnable when the line before its opening fence is the HTML comment
 blocks of one page run in order in one fresh folder, with `flowsurf` on PATH and the
 module on PYTHONPATH (FLOWSURF_BIN, FLOWSURF_PYTHONPATH). A block fails when it exits
 non-zero or when a file it names as output (``-o F``, ``--output F``, ``--flow-texture F``,
-``--quality F``, ``.save("F")``; a ``%04d`` pattern: its first frame) is missing or empty
+``--quality F``, ``.save("F")``, a viewer event log's ``screenshot F``; a ``%04d``
+pattern: its first frame) is missing or empty
 afterwards, unless the block itself checks that F is not made (``test ! -e F``). The page's images (``![...](PATH)``) made by its blocks are copied into
 ``--stage DIR`` beside the staged page, so the gallery shows what its commands made.
 Relative links and images of each page must exist (in the stage or beside the file).
@@ -34,7 +35,8 @@ import time
 MARK = re.compile(r"^<!--\s*run\s*-->\s*$")
 FENCE = re.compile(r"^```\s*([A-Za-z0-9_+-]*)")
 OUTPUTS = [re.compile(p) for p in (r"(?:^|\s)-o\s+(\S+)", r"--output[ =](\S+)", r"--flow-texture[ =](\S+)",
-                                    r"--quality[ =](\S+)", r"\.save\(\s*f?[\"']([^\"']+)[\"']")]
+                                    r"--quality[ =](\S+)", r"\.save\(\s*f?[\"']([^\"']+)[\"']",
+                                    r"\bat \d+ (?:screenshot|window-screenshot|flow-texture|save-config) (\S+)")]
 ALT = r"\[(?:[^\[\]]|\[[^\]]*\])*\]"  # link text, one level of [brackets] inside
 IMAGE = re.compile(r"!" + ALT + r"\(([^)\s]+)")
 LINK = re.compile(r"(?<!!)" + ALT + r"\(([^)\s]+)\)")

@@ -71,7 +71,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
             for (int j = 0; j < levels_.count(); ++j)
                 layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
         }
-        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
+        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
     }
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;

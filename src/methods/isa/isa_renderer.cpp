@@ -71,7 +71,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         }
         const SurfaceGBuffer& v = velocityImage_[vi_];
         const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
-        tiles_->distribute(*in.group, v.depth(), layers, guardPx());
+        tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
         depthMadeWith_[vi_] = tiles_->tiles();
     };
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
