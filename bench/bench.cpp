@@ -31,6 +31,7 @@ const std::vector<Column> kColumns = {
     {"advect", {"texture advection", "particle tracing"}},  // IBFVS: includes the mesh projection; ISA, IBFVS: and the noise blend
     {"noise", {"noise blend", "solid noise"}},
     {"overlay", {"overlay", "edge mask"}},
+    {"contrast", {"contrast (texture)", "contrast (colour)"}},  // --enhance-contrast
 };
 
 double columnMs(const BenchRow& r, const Column& c) {
@@ -148,10 +149,12 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                 if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
                 for (const auto& [param, variantParams] : variants(name, o))
                     for (methods::GlPath path : resolvedGlPaths(o.glPaths))
-                    for (methods::SurfaceRaster raster : resolvedRasters(o.surfaceRasters, size_t(triangles), vp)) {
+                    for (methods::SurfaceRaster raster : resolvedRasters(o.surfaceRasters, size_t(triangles), vp))
+                    for (methods::EnhanceContrast enhance : o.enhanceContrast) {
                         methods::MethodParams params = variantParams;
                         params.common.glPath = path;
                         params.common.surfaceRaster = raster;
+                        params.common.enhanceContrast = enhance;
                         session::RenderOptions options;
                         options.method = methods::methodFromName(name);
                         options.params = params;
@@ -165,6 +168,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                             r.triangles = triangles;
                             r.image = vp;
                             r.param = param;
+                            if (enhance != methods::EnhanceContrast::Off)
+                                r.param += "+" + std::string(methods::nameOf(methods::kEnhanceContrastNames, enhance));
                             r.glPath = glPathName(path);
                             r.raster = raster == methods::SurfaceRaster::Compute ? "compute" : "gl";
                             std::fputs(formatRow(r).c_str(), stdout);

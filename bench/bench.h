@@ -6,7 +6,6 @@
 
 #include "core/camera.h"
 #include "methods/common/params.h"
-#include "methods/common/params.h"
 
 #include <string>
 #include <vector>
@@ -29,6 +28,9 @@ struct BenchOptions {
     // Who rasterises the surface passes: each asked for; one that resolves (auto: by
     // renderer, triangles and pixels) to one already run for the row is not run again.
     std::vector<methods::SurfaceRaster> surfaceRasters{methods::SurfaceRaster::Auto};
+    // Contrast enhancement [issue 28]: each variant asked for; a row's param gains
+    // "+texture" etc. for the ones that are not off (the contrast column: its stages).
+    std::vector<methods::EnhanceContrast> enhanceContrast{methods::EnhanceContrast::Off};
     // Proof that the speed check fails (scripts/bench-check.sh): every frame of the method
     // named here is rendered `slowdownFactor` times, as if it had become that much slower.
     std::string slowdownMethod;

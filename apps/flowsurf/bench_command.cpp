@@ -65,6 +65,14 @@ int runBench(const BenchOptions& o) {
             throw ConfigError("--surface-rasters: unknown raster '" + r + "'");
         b.surfaceRasters.push_back(value);
     }
+    b.enhanceContrast.clear();
+    for (const auto& e : o.enhanceContrast) {
+        methods::EnhanceContrast value{};
+        if (!methods::valueOf(methods::kEnhanceContrastNames, e, &value))
+            throw ConfigError("--enhance-contrast: '" + e + "' is not one of " +
+                              methods::nameList(methods::kEnhanceContrastNames));
+        b.enhanceContrast.push_back(value);
+    }
     b.stageTimes = !o.noStageTimes;
     b.calibration = o.calibration;
     if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);

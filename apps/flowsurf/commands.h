@@ -40,6 +40,7 @@ struct BenchOptions {
     std::string camera = "fit";
     std::vector<std::string> glPaths{"auto"};
     std::vector<std::string> surfaceRasters{"auto"};
+    std::vector<std::string> enhanceContrast{"off"};  // --enhance-contrast: each variant a row
     bool noStageTimes = false;
     bool calibration = false;
     std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails

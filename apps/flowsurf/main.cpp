@@ -139,6 +139,9 @@ int main(int argc, char** argv) {
                                                                        "one raster column (auto: by renderer and triangles per pixel)")
             ->delimiter(',')->capture_default_str()->check(CLI::IsMember(rasters));
     }
+    benchCmd->add_option("--enhance-contrast", bench.enhanceContrast,
+                         "Contrast enhancement variants to time, each a row (off, texture, color, both)")
+        ->delimiter(',')->capture_default_str()->check(CLI::IsMember(methods::names(methods::kEnhanceContrastNames)));
     benchCmd->add_flag("--no-stage-times", bench.noStageTimes,
                        "Time whole frames only (skips the second, synchronised pass per stage)");
     benchCmd->add_flag("--calibration", bench.calibration, "Also time a fixed GL frame no flowsurf change touches "
@@ -186,6 +189,9 @@ int main(int argc, char** argv) {
         if (*viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
             if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");
+            const core::Viewport standard = app::RenderOptions{}.size;
+            viewOpts.sizeGiven = viewCmd->count("--size") > 0 || view.size.width != standard.width ||
+                                 view.size.height != standard.height;
             return app::view::runView(view, viewOpts);
 #else
             throw ConfigError("view: this flowsurf was built without the viewer (FLOWSURF_BUILD_VIEWER=OFF)");

@@ -3,7 +3,7 @@
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = CONTRAST_FLOW_UNIT) uniform sampler2D uFlow;    // F_a or I, channel r
 layout(binding = CONTRAST_DEPTH_UNIT) uniform sampler2D uDepth;  // window depth, 1 = background
-layout(binding = 0, r32f) writeonly uniform image2D uStretched;
+layout(binding = CONTRAST_IMAGE_UNIT, r32f) writeonly uniform image2D uStretched;
 uniform vec2 uRange;  // lo < hi
 uniform ivec2 uEnd;
 

@@ -6,14 +6,15 @@
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(std430, binding = HISTOGRAM_BINDING) buffer Histogram { uint bins[HISTOGRAM_BINS]; };
 shared uint blockBins[HISTOGRAM_BINS];
-uniform ivec2 uEnd;  // the pixels counted: [0, uEnd)
+uniform ivec2 uOrigin;  // the pixels counted: [uOrigin, uEnd)
+uniform ivec2 uEnd;
 
 void main() {
     const uint invocations = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
     for (uint b = gl_LocalInvocationIndex; b < HISTOGRAM_BINS; b += invocations) blockBins[b] = 0u;
     barrier();
     const int per = HISTOGRAM_TILE / PIXEL_GROUP;
-    ivec2 block = ivec2(gl_WorkGroupID.xy) * HISTOGRAM_TILE + ivec2(gl_LocalInvocationID.xy);
+    ivec2 block = uOrigin + ivec2(gl_WorkGroupID.xy) * HISTOGRAM_TILE + ivec2(gl_LocalInvocationID.xy);
     for (int j = 0; j < per; ++j) {
         for (int i = 0; i < per; ++i) {
             ivec2 px = block + ivec2(i, j) * PIXEL_GROUP;

@@ -21,6 +21,8 @@ uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 uniform vec3 uBackground;
 #if WITH_COLOR_STRETCH
 uniform vec2 uLightRange;     // contrast enhancement [issue 28]: lightness at the stretch's ends
+// ... which become these: short of black and white, where a colour map's hue is lost.
+const vec2 kLightTarget = vec2(0.08, 0.92);
 #endif
 #if WITH_DYE
 #include "common/dye_sample.glsl"
@@ -100,7 +102,8 @@ vec3 overlayColor(ivec2 px) {
                               : surfaceColor(px);
 #if WITH_COLOR_STRETCH
     if (depth < 1.0)
-        color = withLightness(color, clamp((lightness(color) - uLightRange.x) / (uLightRange.y - uLightRange.x), 0.0, 1.0));
+        color = withLightness(color, mix(kLightTarget.x, kLightTarget.y,
+                                         clamp((lightness(color) - uLightRange.x) / (uLightRange.y - uLightRange.x), 0.0, 1.0)));
 #endif
 #if WITH_DYE
     if (depth < 1.0) color = clamp(withDye(color, px, depth), 0.0, 1.0);

@@ -230,9 +230,10 @@ INSTANTIATE_TEST_SUITE_P(Methods, ParallelMerge, ::testing::Values("isa", "ibfvs
 
 // Contrast enhancement [issue 28] needs the whole image's percentiles: in the replicate
 // mode every process holds the merged image and stretches it as one process does (2
-// pieces, the same bounds as above); the tiles mode, which divides the image, refuses with
-// a message naming the option and the way out.
-TEST(ParallelContrast, ReplicateEqualsOneProcessTilesRefuse) {
+// pieces, the same bounds as above); the tiles mode's colour stretch, which would need the
+// whole image's colours, refuses with a message naming the option and the way out (the
+// texture's stretch in the tiles mode: TiledParallel.ContrastStretchEqualsTheOneProcessImage).
+TEST(ParallelContrast, ReplicateEqualsOneProcessTilesColorRefused) {
     const core::Dataset data = core::makeBuiltin("builtin:sphere");
     const core::SurfaceMesh& mesh = data.steps.front().mesh;
     const core::Viewport vp{160, 160};
@@ -352,6 +353,38 @@ TEST_P(TiledParallel, CompositeEqualsTheOneProcessImage) {
         auto [mean, tile] = difference(one, all, vp);
         std::printf("%s tiles, %d processes (%d empty): mean %.3f, worst tile %.3f gray levels\n", GetParam().c_str(),
                     parts + empty, empty, mean, tile);
+        EXPECT_EQ(mean, 0.0) << parts + empty << " processes";
+        EXPECT_EQ(tile, 0.0) << parts + empty << " processes";
+    }
+}
+
+// The texture's contrast stretch in the tiles mode [issue 28]: the processes' tile
+// histograms summed over the group give every process the one-process range, so the
+// composite is again exactly the one-process image (2 and 4 processes, one of them empty),
+// the camera still and then orbiting.
+TEST_P(TiledParallel, ContrastStretchEqualsTheOneProcessImage) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere");
+    const core::SurfaceMesh& mesh = data.steps.front().mesh;
+    const core::Viewport vp{200, 160};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    const auto orbit = [cam](int k) {
+        core::Camera c = cam;
+        const float angle = glm::radians(3.0f * float(std::max(0, k - 8)));
+        const glm::vec3 d = c.eye - c.target;
+        c.eye = c.target + glm::vec3(std::cos(angle) * d.x - std::sin(angle) * d.y,
+                                     std::sin(angle) * d.x + std::cos(angle) * d.y, d.z);
+        return c;
+    };
+    methods::MethodParams params = test::testParams();
+    params.common.parallel = methods::ParallelMode::Tiles;
+    params.common.colormap = methods::Colormap::None;  // as above
+    params.common.enhanceContrast = methods::EnhanceContrast::Texture;
+    const Images one = renderWith(GetParam(), mesh, orbit, vp, 16, nullptr, params);
+    for (auto [parts, empty] : {std::pair{2, 0}, {3, 1}}) {
+        const Images all = renderInParallel(GetParam(), sectors(mesh, parts, empty), orbit, vp, 16, params);
+        auto [mean, tile] = difference(one, all, vp);
+        std::printf("%s tiles, contrast stretch, %d processes (%d empty): mean %.3f, worst tile %.3f gray levels\n",
+                    GetParam().c_str(), parts + empty, empty, mean, tile);
         EXPECT_EQ(mean, 0.0) << parts + empty << " processes";
         EXPECT_EQ(tile, 0.0) << parts + empty << " processes";
     }

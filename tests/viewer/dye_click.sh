@@ -8,7 +8,9 @@ PID=$!
 WID=$(timeout 20 xdotool search --sync --name "flowsurf view" | head -1)
 [ -n "$WID" ] || { kill $PID; echo "no viewer window"; exit 1; }
 sleep 3
-xdotool mousemove --window "$WID" 420 220; sleep 0.3
+# The view is the window's right 640 pixels (the panel is beside it): 100 px right of its centre.
+W=$(xdotool getwindowgeometry --shell "$WID" | sed -n 's/^WIDTH=//p')
+xdotool mousemove --window "$WID" $((W - 220)) 220; sleep 0.3
 xdotool keydown ctrl; sleep 0.2
 xdotool click 1; sleep 0.2
 xdotool keyup ctrl; sleep 2

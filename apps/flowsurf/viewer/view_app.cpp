@@ -70,11 +70,17 @@ public:
             context_ = std::make_unique<gl::HeadlessContext>(o.verbose);
             renderer_ = context_->renderer();
         } else {
-            window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view");
+            // The views beside the panel: --size each, or what suits the screen [issue 28].
+            window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view", !v.sizeGiven);
             renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
         }
         info_.renderer = renderer_;
         state_.setWindowSize(o.size.width * n, o.size.height);
+        if (window_) {
+            int w = 0, h = 0;
+            window_->framebufferSize(&w, &h);  // the render area the window manager gave
+            if (w > 0 && h > 0) state_.setWindowSize(w, h);
+        }
         // The initial data: headless, an error ends the run; in a window it is shown.
         try {
             loadData(state_.options);
@@ -91,7 +97,8 @@ public:
             const bool idle = !lastRendered_ && next_ >= replay_.size();
             std::vector<Event> input = window_ ? window_->poll(frame, idle) : std::vector<Event>{};
             while (next_ < replay_.size() && replay_[next_].frame <= frame) input.push_back(replay_[next_++]);
-            for (const Event& e : input) {
+            for (Event& e : input) {
+                if (!resolveVisibleRange(e)) continue;
                 state_.handle(e);
                 if (!view_.recordEvents.empty()) {
                     recorded_.push_back(e);
@@ -126,6 +133,21 @@ public:
 private:
     static double msSince(Clock::time_point t0) {
         return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    }
+
+    // `set color-range visible` (the panel's rescale button, or a log): the range of the
+    // colour values the view shows now, set and recorded as MIN:MAX [issue 28]. False
+    // (the event dropped, the error shown) when the view shows no such range.
+    bool resolveVisibleRange(Event& e) {
+        if (e.type != EventType::Set || e.name != "color-range" || e.value != "visible") return true;
+        const std::optional<glm::vec2> r =
+            pipeline_.ready() ? pipeline_.visibleColorRange(state_.time) : std::optional<glm::vec2>{};
+        if (!r) {
+            state_.error = "color-range visible: the view shows no surface with a range of colour values";
+            return false;
+        }
+        e.value = formatFloat(r->x) + ":" + formatFloat(r->y);
+        return true;
     }
 
     void report(const std::string& message) {

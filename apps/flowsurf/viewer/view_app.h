@@ -15,6 +15,8 @@ struct ViewOptions {
     std::string stats;         // --stats FILE.json: per-frame times
     std::string compare;       // --compare isa,ibfvs,hybrid: views side by side
     bool headless = false;     // --headless: EGL, no window (needs --play)
+    // --size given (command line or config): the views' size; else the window suits the screen.
+    bool sizeGiven = false;
 };
 
 // Runs the viewer until quit; throws what loading the initial input throws when headless

@@ -24,7 +24,7 @@ std::string upper(std::string s) {
 
 }  // namespace
 
-void Window::optionWidget(const OptionSpec& spec, const ViewerState& state) {
+void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool visibleRange) {
     const std::string current = spec.get(state.options);
     const char* label = spec.name.c_str();
     switch (spec.kind) {
@@ -79,13 +79,20 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state) {
         ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue);
         if (ImGui::IsItemDeactivatedAfterEdit()) emitSet(spec.name, text);
         if (!ImGui::IsItemActive()) edits_.erase(spec.name);
-        // Range options [issue 28]: one click rescales to the data's whole or robust range.
+        // Range options [issue 28]: one click rescales to the data's whole or robust range,
+        // or (colour) to the values the view shows, set as MIN:MAX so that a log replays it.
         if (spec.name == "color-range" || spec.name == "mask-range") {
             ImGui::PushID(label);
             ImGui::TextUnformatted("  rescale:");
             for (const char* to : {"robust", "data"}) {
                 ImGui::SameLine();
                 if (ImGui::SmallButton(to)) emitSet(spec.name, to);
+            }
+            if (spec.name == "color-range" && visibleRange) {
+                ImGui::SameLine();
+                if (ImGui::SmallButton("visible")) emitSet(spec.name, "visible");  // resolved by the session
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("The range of the colour values over the surface's visible pixels");
             }
             ImGui::PopID();
         }
@@ -124,16 +131,29 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     if (pipeline.ready() && pipeline.viewCount() > 1) {
         ImDrawList* draw = ImGui::GetForegroundDrawList();
         for (size_t i = 0; i < pipeline.viewCount(); ++i)
-            draw->AddText(ImVec2(float(i * size_t(pipeline.viewSize().width)) + 8.0f, 6.0f), IM_COL32(255, 255, 255, 230),
+            draw->AddText(ImVec2(float(panelWidth() + int(i) * pipeline.viewSize().width) + 8.0f, 6.0f),
+                          IM_COL32(255, 255, 255, 230),
                           upper(pipeline.methodName(i)).c_str());
     }
+    panelShown_ = state.showPanel;
     if (!state.showPanel) return;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    // At most the window's height: the panel scrolls rather than running off the bottom.
-    const float maxHeight = ImGui::GetIO().DisplaySize.y - 16.0f;
-    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(1e6f, std::max(maxHeight, 100.0f)));
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("flowsurf", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_AlwaysVerticalScrollbar);
+    // A column at the window's left, beside the views (never over the data); it scrolls
+    // rather than running off the bottom. Collapsed (its title bar's arrow), it gives its
+    // width back to the views: the render area changes with the next frame.
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    const float width = state.panelCollapsed ? 110.0f : float(kPanelWidth);  // collapsed: the title bar only
+    ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetIO().DisplaySize.y), ImGuiCond_Always);
+    ImGui::SetNextWindowCollapsed(state.panelCollapsed, ImGuiCond_Always);
+    const bool open = ImGui::Begin("flowsurf", nullptr,
+                                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                       ImGuiWindowFlags_AlwaysVerticalScrollbar | ImGuiWindowFlags_NoSavedSettings);
+    // A click on the title bar's arrow becomes an event (recorded, replayed in a window).
+    panelCollapsed_ = ImGui::IsWindowCollapsed();
+    if (panelCollapsed_ != state.panelCollapsed) emitSet("panel-collapsed", panelCollapsed_ ? "true" : "false");
+    if (!open) {
+        ImGui::End();
+        return;
+    }
     ImGui::PushItemWidth(170);
 
     if (!state.error.empty()) {
@@ -207,7 +227,7 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     for (const char* group : {"Method", "Overlay"})
         if (ImGui::CollapsingHeader(group == std::string("Method") ? "Method parameters" : "Overlay"))
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.group == group && spec.name != "method") optionWidget(spec, state);
+                if (spec.group == group && spec.name != "method") optionWidget(spec, state, pipeline.ready());
 
     if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
 

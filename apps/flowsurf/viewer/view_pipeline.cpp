@@ -2,11 +2,14 @@
 #include "io/series_reader.h"
 
 #include "core/errors.h"
+#include "gl/readback.h"
 #include "session/scene_setup.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace flowsurf::app::view {
 
@@ -90,6 +93,27 @@ void ViewPipeline::render(const session::Playback::LiveFrame& f, bool advance) {
     if (!playback_) return;
     playback_->render(f, advance);
     triangles_ = playback_->surface().atTime(f.time).triangleCount();
+}
+
+std::optional<glm::vec2> ViewPipeline::visibleColorRange(double time) {
+    if (!playback_ || viewCount() == 0) return std::nullopt;
+    const methods::FlowMethod& m = method(0);
+    const std::vector<float> value = gl::readChannel(m.surfaceShade(), 3), depth = gl::readDepth(m.surfaceDepth());
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (size_t i = 0; i < value.size() && i < depth.size(); ++i)
+        if (depth[i] < 1.0f && std::isfinite(value[i])) lo = std::min(lo, value[i]), hi = std::max(hi, value[i]);
+    if (!(lo < hi)) return std::nullopt;
+    // Back through the range and scale the shade's value 0..1 was made with (SurfaceGpu).
+    const glm::vec2 r = playback_->surface().atTime(time).colorRange();
+    const bool log = playback_->options().params.common.colorScale == methods::ColorScale::Log && r.x > 0.0f;
+    auto value01 = [&](float t) {
+        if (!log) return r.x + t * (r.y - r.x);
+        const double a = std::log10(double(r.x)), b = std::log10(double(r.y));
+        return float(std::pow(10.0, a + double(t) * (b - a)));
+    };
+    const glm::vec2 out(value01(lo), value01(hi));
+    if (!(out.x < out.y)) return std::nullopt;
+    return out;
 }
 
 }  // namespace flowsurf::app::view

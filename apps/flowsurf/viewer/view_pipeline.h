@@ -8,6 +8,7 @@
 #include "session/playback.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ public:
 
     // Every view's stage list for one frame (see session::Playback::render).
     void render(const session::Playback::LiveFrame& f, bool advance);
+    // The range of the colour values over the surface's pixels that view 0 shows (its
+    // shade's colour value mapped back through the range and scale it was drawn with, at
+    // data time `time`), or none when the view shows fewer than two distinct values.
+    std::optional<glm::vec2> visibleColorRange(double time);
     // The views side by side as one RGB8 image, rows top to bottom (screenshots, video).
     std::vector<uint8_t> readImage(int* width, int* height) const { return playback_->readImage(width, height); }
 

@@ -56,7 +56,21 @@ ViewerState::ViewerState(RenderOptions o) : options(std::move(o)), window_(optio
 }
 
 void ViewerState::setWindowSize(int width, int height) {
+    const core::Viewport before = window_;
     window_ = {std::max(width, 16), std::max(height, 16)};
+    // A camera the viewer fitted (not one the user moved) fits the new area: the panel
+    // collapsed or shown again, the window resized [issue 28 item 4].
+    if (fitted_ && haveData_ && (window_.width != before.width || window_.height != before.height)) fit();
+}
+
+void ViewerState::fit() {
+    RenderOptions o = options;
+    o.eye.reset();
+    o.target.reset();
+    o.up = turntableUp_;
+    o.size = viewSize();
+    setCamera(makeCamera(o, bounds_));
+    fitted_ = true;
 }
 
 std::vector<methods::Method> ViewerState::shownMethods() const {
@@ -72,10 +86,14 @@ void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<doubl
                              const core::TimeMapping& mapping) {
     bounds_ = bounds;
     haveData_ = true;
+    // Fitted: no camera given (a reload keeps the fitted camera's eye, and its fit).
+    const bool fitted = fitted_ || (!options.eye && !options.target);
+    fitted_ = false;
     if (options.orbit == 0.0f && options.cameraPath.empty()) {
         RenderOptions fit = options;
         fit.size = viewSize();
         setCamera(makeCamera(fit, bounds_));
+        fitted_ = fitted;
     }
     setTimes(times, mapping);
 }
@@ -107,6 +125,7 @@ void ViewerState::setCamera(const core::Camera& c) {
 }
 
 void ViewerState::takeOverCamera() {
+    fitted_ = false;  // the user's camera from now on
     if (!haveData_) return;
     if (options.orbit != 0.0f || !options.cameraPath.empty()) {
         core::Camera c = camera();
@@ -213,13 +232,7 @@ void ViewerState::scroll(float steps) {
 void ViewerState::resetView() {
     if (!haveData_) return;
     takeOverCamera();
-    RenderOptions fit = options;
-    fit.eye.reset();
-    fit.target.reset();
-    fit.up = turntableUp_;
-    fit.ortho = options.ortho;
-    fit.size = viewSize();
-    setCamera(makeCamera(fit, bounds_));
+    fit();
 }
 
 void ViewerState::viewAlong(const glm::vec3& dir) {
@@ -311,6 +324,7 @@ void ViewerState::set(const std::string& name, const std::string& value) {
     if (name == "time-playing") { timePlaying = parseBool(name, value); return; }
     if (name == "loop") { loop = parseBool(name, value); return; }
     if (name == "panel") { showPanel = parseBool(name, value); return; }
+    if (name == "panel-collapsed") { panelCollapsed = parseBool(name, value); return; }
     if (name == "quality") {  // every N frames, or off
         char* end = nullptr;
         const long n = value == "off" ? 0 : std::strtol(value.c_str(), &end, 10);

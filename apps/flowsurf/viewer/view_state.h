@@ -55,6 +55,9 @@ public:
     bool paused = false;               // no advection frames (the view still follows the camera)
     bool stepOnce = false;             // advance one frame while paused
     bool showPanel = true;
+    // The panel folded to its title bar (its arrow, or `set panel-collapsed`): the views take
+    // the window's whole width. A window-only setting: a headless replay has no panel.
+    bool panelCollapsed = false;
     int qualityEvery = 0;              // measure the texture every N frames (0: off; doc/algorithms.md §9)
     bool recording = false;            // an MP4 is being written (set by the window side)
     // Time playback of a series (data time per frame: timePerFrame; held or looped at the end).
@@ -69,7 +72,9 @@ public:
     // The steps' times and the options' frame -> time mapping (after a load, or a rebuild
     // that changed them): time playback starts over at the mapping's start.
     void setTimes(const std::vector<double>& times, const core::TimeMapping& mapping);
-    // Window pixel size of the whole render area (split into views side by side).
+    // Window pixel size of the whole render area (split into views side by side): the
+    // window less what the panel takes beside it. A camera the viewer fitted and the user
+    // has not moved is fitted again to the new size.
     void setWindowSize(int width, int height);
     core::Viewport windowSize() const { return window_; }
     // One view's size and the methods shown, left to right.
@@ -110,6 +115,8 @@ private:
     void setCamera(const core::Camera& c);
     void viewAlong(const glm::vec3& fromDirection);
     void resetView();
+    // The default view of the bounds (makeCamera without eye and target) in the render area.
+    void fit();
     // Which view (side by side) the window pixel x falls into, and its NDC.
     glm::vec2 cursorNdc(float x, float y) const;
 
@@ -121,6 +128,7 @@ private:
     glm::vec2 mouse_{0, 0};
     std::string dragButton_;  // "" when no button is down
     bool dragPan_ = false;
+    bool fitted_ = false;  // the camera is fit()'s (or the first load's), not moved since
     Requests requests_;
 };
 

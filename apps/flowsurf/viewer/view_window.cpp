@@ -30,7 +30,7 @@ struct WindowCallbacks {
         glfwGetWindowSize(w, &ww, &wh);
         glfwGetFramebufferSize(w, &fw, &fh);
         Event e{s.frame_, EventType::MouseMove};
-        e.x = float(x * fw / std::max(ww, 1));
+        e.x = float(x * fw / std::max(ww, 1)) - float(s.panelWidth());  // render-area pixels
         e.y = float(y * fh / std::max(wh, 1));
         s.queue_.push_back(e);
     }
@@ -49,7 +49,7 @@ struct WindowCallbacks {
             glfwGetCursorPos(w, &cx, &cy);
             glfwGetWindowSize(w, &ww, &wh);
             glfwGetFramebufferSize(w, &fw, &fh);
-            s.dyeClick_ = glm::vec2(float(cx * fw / std::max(ww, 1)), float(cy * fh / std::max(wh, 1)));
+            s.dyeClick_ = glm::vec2(float(cx * fw / std::max(ww, 1)) - float(s.panelWidth()), float(cy * fh / std::max(wh, 1)));
             s.swallowRelease_ = true;
             return;
         }
@@ -100,11 +100,22 @@ struct WindowCallbacks {
     }
 };
 
-Window::Window(int width, int height, const std::string& title) {
+Window::Window(int width, int height, const std::string& title, bool fitScreen) {
     glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "flowsurf: GLFW %d: %s\n", code, text); });
     if (!glfwInit())
         throw GlError("cannot open a window: GLFW found no display (run under X11 or xvfb-run, or use --headless "
                       "--play FILE)");
+    width += kPanelWidth;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor(); fitScreen && monitor) {
+        // 90 % of the work area (the screen less task bars), never smaller than the panel
+        // beside a 320 x 240 view.
+        int x = 0, y = 0, w = 0, h = 0;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+        if (w > 0 && h > 0) {
+            width = std::max(kPanelWidth + 320, w * 9 / 10);
+            height = std::max(240, h * 9 / 10);
+        }
+    }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -150,9 +161,12 @@ std::vector<Event> Window::poll(long frame, bool idle) {
 
 bool Window::closeRequested() const { return glfwWindowShouldClose(window_); }
 
-void Window::framebufferSize(int* width, int* height) const { glfwGetFramebufferSize(window_, width, height); }
+void Window::framebufferSize(int* width, int* height) const {
+    glfwGetFramebufferSize(window_, width, height);
+    *width = std::max(0, *width - panelWidth());
+}
 
-void Window::resize(int width, int height) { glfwSetWindowSize(window_, width, height); }
+void Window::resize(int width, int height) { glfwSetWindowSize(window_, width + panelWidth(), height); }
 
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
@@ -189,7 +203,8 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
 void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
     if (dyeClick_) dropDye(state, pipeline);
     int fw = 0, fh = 0;
-    framebufferSize(&fw, &fh);
+    glfwGetFramebufferSize(window_, &fw, &fh);  // the whole window: panel and views
+    const int left = panelWidth();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fw, fh);
     glDisable(GL_SCISSOR_TEST);
@@ -197,10 +212,10 @@ void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     if (pipeline.ready()) {
-        // Each view's composite, left to right, into the window.
+        // Each view's composite, left to right, into the window right of the panel.
         const core::Viewport v = pipeline.viewSize();
         for (size_t i = 0; i < pipeline.viewCount(); ++i) {
-            const int x0 = int(i) * v.width;
+            const int x0 = left + int(i) * v.width;
             glBlitNamedFramebuffer(pipeline.compositeReadFbo(i), 0, 0, 0, v.width, v.height, x0, fh - v.height,
                                    x0 + v.width, fh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         }

@@ -23,8 +23,13 @@ struct FrameInfo {
 
 class Window {
 public:
-    // Opens the window; throws GlError when no display or no 4.5 core context.
-    Window(int width, int height, const std::string& title);
+    // The panel's width in pixels: it sits at the window's left, beside the views, so it
+    // never covers the data [issue 28 item 4]; collapsed or hidden, the views take it.
+    static constexpr int kPanelWidth = 380;
+    // Opens the window with a render area of width x height beside the panel, or, with
+    // `fitScreen`, at a size that suits the screen (the primary monitor's work area, less
+    // a margin); throws GlError when no display or no 4.5 core context.
+    Window(int width, int height, const std::string& title, bool fitScreen = false);
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
@@ -33,8 +38,11 @@ public:
     // nothing animates, so wait up to 50 ms for input instead of spinning.
     std::vector<Event> poll(long frame, bool idle = false);
     bool closeRequested() const;
-    // Render area size in pixels.
+    // Render area size in pixels: the framebuffer less the panel's width.
     void framebufferSize(int* width, int* height) const;
+    // Pixels at the window's left that the panel takes (0: hidden or collapsed).
+    int panelWidth() const { return panelShown_ && !panelCollapsed_ ? kPanelWidth : 0; }
+    // Resizes the window to a render area of width x height beside the panel.
     void resize(int width, int height);
     void setTitle(const std::string& title);
     // Blits the views, draws the panel (if shown; its edits come back from the next
@@ -45,7 +53,8 @@ public:
 
 private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
-    void optionWidget(const struct OptionSpec& spec, const ViewerState& state);
+    // `visibleRange`: the colour range gets a "visible" button (`set color-range visible`).
+    void optionWidget(const struct OptionSpec& spec, const ViewerState& state, bool visibleRange = false);
     void emitSet(const std::string& name, const std::string& value);
     // The panel's Quality section (doc/algorithms.md §9): off until turned on.
     void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
@@ -64,6 +73,7 @@ private:
     std::string openPath_, windowShot_;
     std::optional<glm::vec2> dyeClick_;  // framebuffer pixels of a ctrl + click, origin top-left
     bool swallowRelease_ = false;        // the release of that click is not a drag's end
+    bool panelShown_ = true, panelCollapsed_ = false;  // as of the last present()
 
     friend struct WindowCallbacks;
 };

@@ -15,30 +15,41 @@ ContrastStretch::ContrastStretch(const CommonParams& params, const core::Viewpor
     stretched_ = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
 }
 
-const gl::Texture2D& ContrastStretch::apply(const gl::Texture2D& flow, const gl::Texture2D& depth) {
+void ContrastStretch::measure(const gl::Texture2D& flow, const gl::Texture2D& depth,
+                              const std::optional<PixelRect>& pixels, ProcessGroup* group) {
+    if (!enabled_) return;
+    const PixelRect r = pixels.value_or(PixelRect{0, 0, viewport_.width, viewport_.height});
+    range_.bindCleared();
+    if (!r.empty()) {
+        glBindTextureUnit(kContrastFlowUnit, flow.id());
+        glBindTextureUnit(kContrastDepthUnit, depth.id());
+        histogram_.use();
+        glUniform2i(histogram_.uniform("uOrigin"), r.x0, r.y0);
+        glUniform2i(histogram_.uniform("uEnd"), r.x1, r.y1);
+        PercentileRange::dispatchHistogram(r.width(), r.height());
+    }
+    range_.update(group);
+}
+
+const gl::Texture2D& ContrastStretch::stretch(const gl::Texture2D& flow, const gl::Texture2D& depth) {
     if (!enabled_) return flow;
+    const glm::vec2 r = range_.range();
     glBindTextureUnit(kContrastFlowUnit, flow.id());
     glBindTextureUnit(kContrastDepthUnit, depth.id());
-    // (a) the histogram over the surface and its smoothed percentiles
-    histogram_.use();
-    glUniform2i(histogram_.uniform("uEnd"), viewport_.width, viewport_.height);
-    range_.bindCleared();
-    PercentileRange::dispatchHistogram(viewport_.width, viewport_.height);
-    const glm::vec2 r = range_.update();
-    // (b) the stretch
     stretch_.use();
     glUniform2f(stretch_.uniform("uRange"), r.x, r.y);
     glUniform2i(stretch_.uniform("uEnd"), viewport_.width, viewport_.height);
-    glBindImageTexture(0, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(kContrastImageUnit, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchPerPixel(viewport_.width, viewport_.height);
     return stretched_;
 }
 
 void checkContrastParallel(const FrameInput& in, const CommonParams& params) {
-    if (params.enhanceContrast != EnhanceContrast::Off && tiledParallel(in, params))
+    if (enhancesColor(params.enhanceContrast) && tiledParallel(in, params))
         throw ConfigError("enhance-contrast " + std::string(nameOf(kEnhanceContrastNames, params.enhanceContrast)) +
-                          ": the stretch needs the whole image's percentiles, which the tiles mode divides over "
-                          "the processes; set parallel to replicate (FlowSurfParallel) or enhance-contrast to off");
+                          ": the colour's stretch needs the whole image's colours, which the tiles mode divides "
+                          "over the processes; set parallel to replicate (FlowSurfParallel) or enhance-contrast to "
+                          "texture");
 }
 
 }  // namespace flowsurf::methods

@@ -7,14 +7,19 @@
 // Inputs: F_a or I (R32F), window depth (DEPTH32F, the surface mask) -> the stretched
 // texture (R32F). Cost per frame: a histogram pass (one read per pixel, shared-memory
 // counts), a 2 KiB read-back that waits for it, a stretch pass (one read, one write per
-// pixel); nothing when off. Several processes: the range is the whole image's in the
-// replicate mode (every process holds the merged image); the tiles mode is refused.
+// pixel); nothing when off. Several processes: the range is the whole image's, in the
+// replicate mode from the merged image every process holds, in the tiles mode from the
+// histograms of the processes' tiles summed over the group (2 KiB each).
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
 #include "methods/common/percentile_range.h"
+#include "methods/common/process_group.h"
+#include "methods/common/screen_split.h"
+
+#include <optional>
 
 namespace flowsurf::methods {
 
@@ -24,9 +29,21 @@ class ContrastStretch {
 public:
     ContrastStretch(const CommonParams& params, const core::Viewport& viewport);
     bool enabled() const { return enabled_; }
-    // The texture the overlay shows: `flow` itself when the texture is not enhanced, else
-    // its stretch (valid until the next apply).
-    const gl::Texture2D& apply(const gl::Texture2D& flow, const gl::Texture2D& depth);
+    // (a) The histogram of `flow` over the surface's pixels (`depth` < 1) in `pixels` (every
+    // pixel when none), summed over `group` when given, and the smoothed range from it.
+    // With a group it is collective: each process of a tiled render counts its own tile
+    // (maybe empty), `depth` the whole surface's there. Nothing when not enhanced.
+    void measure(const gl::Texture2D& flow, const gl::Texture2D& depth,
+                 const std::optional<PixelRect>& pixels = std::nullopt, ProcessGroup* group = nullptr);
+    // (b) The texture the overlay shows: `flow` itself when the texture is not enhanced, else
+    // `flow` stretched over the measured range at the surface's pixels (valid until the next
+    // stretch).
+    const gl::Texture2D& stretch(const gl::Texture2D& flow, const gl::Texture2D& depth);
+    // (a) over the whole image of this process, then (b).
+    const gl::Texture2D& apply(const gl::Texture2D& flow, const gl::Texture2D& depth) {
+        measure(flow, depth);
+        return stretch(flow, depth);
+    }
     // The smoothed range the last frame was stretched over.
     glm::vec2 range() const { return range_.range(); }
 
@@ -38,8 +55,8 @@ private:
     gl::Texture2D stretched_;
 };
 
-// Throws ConfigError when `params` enhance contrast in a tiled parallel render: the
-// percentiles must be the whole image's, which no process of the tiles mode holds.
+// Throws ConfigError when `params` enhance the colour's contrast in a tiled parallel render:
+// its percentiles need the whole image's colours, made from each process's own shade.
 void checkContrastParallel(const FrameInput& in, const CommonParams& params);
 
 }  // namespace flowsurf::methods

@@ -121,8 +121,7 @@ void Overlay::bindInputs(const gl::Program& prog, const gl::Texture2D& flow, con
 void Overlay::measureLightness(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                                const gl::Texture2D& mask) const {
     if (!lightnessProgram_) return;
-    bindInputs(lightnessProgram_, flow, depth, shade, mask);
-    glBindTextureUnit(5, colormap_.id());  // the legend image, compiled out
+    bindInputs(lightnessProgram_, flow, depth, shade, mask);  // the legend image is compiled out
     glUniform2i(lightnessProgram_.uniform("uEnd"), flow.width(), flow.height());
     lightness_.bindCleared();
     PercentileRange::dispatchHistogram(flow.width(), flow.height());

@@ -1,8 +1,8 @@
 // flowsurf — overlay, [L] eq. 10, with texture clipping ([L] Fig. 10), the texture mask
-// (velocity or any scalar) and the colour legend. Inputs: F_a (R32F), depth, shade
-// (RGBA16F: eye normal, colour value), mask (R16F). Output: RGBA8. Applied after
-// advection every frame and never fed back. A full-screen fragment pass or a compute pass
-// (CommonParams::glPath): the same image.
+// (velocity or any scalar), the colour legend and contrast enhancement's lightness stretch
+// [issue 28]. Inputs: F_a or its stretch (R32F), depth, shade (RGBA16F: eye normal, colour
+// value), mask (R16F). Output: RGBA8. Applied after advection every frame and never fed
+// back. A full-screen fragment pass or a compute pass (CommonParams::glPath): the same image.
 #pragma once
 
 #include "gl/objects.h"

@@ -1,5 +1,6 @@
 #include "methods/common/percentile_range.h"
 
+#include "methods/common/process_group.h"
 #include "methods/common/shader_interface.h"
 
 #include <algorithm>
@@ -51,9 +52,15 @@ void PercentileRange::dispatchHistogram(int width, int height) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-glm::vec2 PercentileRange::update() {
+glm::vec2 PercentileRange::update(ProcessGroup* group) {
     std::vector<uint32_t> bins(static_cast<size_t>(kBins));
     glGetNamedBufferSubData(histogram_.id(), 0, GLsizeiptr(bins.size() * sizeof(uint32_t)), bins.data());
+    if (group) {
+        // Counts as floats: exact below 2^24 per bin (a 4096^2 image has 2^24 pixels).
+        std::vector<float> sum(bins.begin(), bins.end());
+        group->sumInPlace(sum);
+        for (size_t b = 0; b < bins.size(); ++b) bins[b] = uint32_t(sum[b]);
+    }
     glm::vec2 now = histogramPercentiles(bins, percent_);
     if (now.x > now.y) return range_;  // nothing counted: keep the range
     if (now.y - now.x < kMinSpan) {

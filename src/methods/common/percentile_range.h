@@ -17,6 +17,8 @@
 
 namespace flowsurf::methods {
 
+class ProcessGroup;
+
 // The values at the `percent`-th and (100 - percent)-th percentiles of a histogram of
 // kBins-style bins over [0, 1] (bin b holds [b, b + 1) / bins.size()), interpolated
 // linearly inside the bin; lo > hi when the histogram is empty.
@@ -39,9 +41,11 @@ public:
     void bindCleared() const;
     // Runs the bound program (a histogram variant) over width x height pixels.
     static void dispatchHistogram(int width, int height);
-    // Reads the histogram back and moves the smoothed range towards its percentiles; an
-    // empty histogram (no surface in view) keeps the range. Returns the range.
-    glm::vec2 update();
+    // Reads the histogram back, sums it over `group` when given (collective: a tiled
+    // parallel render, each process counting its own tile), and moves the smoothed range
+    // towards its percentiles; an empty histogram (no surface in view) keeps the range.
+    // Returns the range.
+    glm::vec2 update(ProcessGroup* group = nullptr);
     // The smoothed range (lo < hi; [0, 1] before the first update).
     glm::vec2 range() const { return range_; }
 

@@ -53,6 +53,7 @@ const std::string& shaderInterface() {
         s += "#define HISTOGRAM_TILE " + std::to_string(PercentileRange::kTilePx) + "\n";
         s += "#define CONTRAST_FLOW_UNIT " + std::to_string(kContrastFlowUnit) + "\n";
         s += "#define CONTRAST_DEPTH_UNIT " + std::to_string(kContrastDepthUnit) + "\n";
+        s += "#define CONTRAST_IMAGE_UNIT " + std::to_string(kContrastImageUnit) + "\n";
         s += "#define EDGE_MASK_DEPTH_UNIT " + std::to_string(kEdgeMaskDepthUnit) + "\n";
         s += "#define EDGE_CAPTURE_BINDING " + std::to_string(kEdgeCaptureBinding) + "\n";
         s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";

@@ -20,10 +20,11 @@ const std::string& shaderInterface();
 inline constexpr int kPixelGroup = 8;
 
 // Contrast enhancement [issue 28]: the histogram's storage buffer binding and the texture
-// units of the stretch pass (HISTOGRAM_BINDING, CONTRAST_FLOW_UNIT, CONTRAST_DEPTH_UNIT).
+// and image units of the stretch pass (HISTOGRAM_BINDING, CONTRAST_FLOW_UNIT, ...).
 inline constexpr int kHistogramBinding = 8;  // SSBO, apart from the dye and visibility ones
 inline constexpr int kContrastFlowUnit = 0;
 inline constexpr int kContrastDepthUnit = 1;
+inline constexpr int kContrastImageUnit = 0;  // the stretched texture, an image store
 // IBFVS edge mask (ibfvs/edge_mask.h): the surface depth it tests against, and the SSBO its
 // geometry shader writes the outline quads to when they are shared between processes.
 inline constexpr int kEdgeMaskDepthUnit = 0;

@@ -62,6 +62,10 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         if (!tileVelocity_)
             tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
         std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
+        if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
+            if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+            layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
+        }
         if (unsteady) {
             if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
             for (int j = 0; j < levels_.count(); ++j)
@@ -102,13 +106,19 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         // to the processes whose fragments cover each pixel of the tile.
         glFinish();
         tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
+        // (3b, tiles) the contrast histogram of this tile, summed over the processes
+        if (contrast_.enabled()) {
+            timer_.begin("contrast (texture)");
+            contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
+        }
         timer_.begin("tile return");
         tiles_->returnValues(*in.group, lic_.texture());
     }
 
     // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
     if (contrast_.enabled()) timer_.begin("contrast (texture)");
-    shown_ = &contrast_.apply(lic_.texture(), seeds_.depth());
+    if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
+    shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
     if (overlay_.stretchesColor()) {
         timer_.begin("contrast (colour)");
         overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());

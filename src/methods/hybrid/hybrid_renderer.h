@@ -55,6 +55,7 @@ private:
     // merged over it plus the streaks' reach (guardPx); made on the first parallel frame.
     std::unique_ptr<ScreenTiles> tiles_;
     gl::Texture2D tileVelocity_;
+    gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
     VelocityLevels::Volume tileLevels_;  // unsteady: the time levels merged over the tile
     int guardPx() const;
 };

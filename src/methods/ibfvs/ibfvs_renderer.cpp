@@ -66,9 +66,18 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
         // Each tile's F_a merged by depth; the owners keep it for the next frame's pulls.
         timer_.begin("tile exchange");
         const gl::Texture2D& fa = flow_.texture(target);
-        const TileLayer layers[] = {TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
+        std::vector<TileLayer> layers{TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
+        if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
+            if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+            layers.push_back(TileLayer::of(depth_, tileDepth_));
+        }
         tiles_->distribute(*in.group, depth_, layers, 0, {0, 0, viewport_.width, viewport_.height});
         madeWith_[target] = tiles_->tiles();
+        // (3b, tiles) the contrast histogram of this tile, summed over the processes
+        if (contrast_.enabled()) {
+            timer_.begin("contrast (texture)");
+            contrast_.measure(fa, tileDepth_, tiles_->tile(), in.group);
+        }
     } else if (in.group) {
         mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
     }
@@ -76,7 +85,8 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // (3b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself
     if (contrast_.enabled()) timer_.begin("contrast (texture)");
-    shown_ = &contrast_.apply(flow_.texture(current_), depth_);
+    if (!tiled) contrast_.measure(flow_.texture(current_), depth_);
+    shown_ = &contrast_.stretch(flow_.texture(current_), depth_);
     if (overlay_.stretchesColor()) {
         timer_.begin("contrast (colour)");
         overlay_.measureLightness(*shown_, depth_, shade_, mask_);

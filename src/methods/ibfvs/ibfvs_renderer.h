@@ -50,6 +50,7 @@ private:
     // owners, from whom a process pulls what its fragments read of it.
     std::unique_ptr<ScreenTiles> tiles_;
     std::vector<PixelRect> madeWith_[2];
+    gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
 };
 
 }  // namespace flowsurf::methods::ibfvs

@@ -141,6 +141,11 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         tiles_->reportCost(*in.group,
                            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
         madeWith_[target] = tiles_->tiles();
+        // (4b, tiles) the contrast histogram of this tile, summed over the processes
+        if (contrast_.enabled()) {
+            timer_.begin("contrast (texture)");
+            contrast_.measure(flow_.texture(target), depthOf(vi_), tiles_->tile(), in.group);
+        }
         // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
         timer_.begin("tile return");
         tiles_->returnValues(*in.group, flow_.texture(target));
@@ -149,7 +154,8 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself
     if (contrast_.enabled()) timer_.begin("contrast (texture)");
-    shown_ = &contrast_.apply(flow_.texture(current_), vel.depth());
+    if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());
+    shown_ = &contrast_.stretch(flow_.texture(current_), vel.depth());
     if (overlay_.stretchesColor()) {
         timer_.begin("contrast (colour)");
         overlay_.measureLightness(*shown_, vel.depth(), vel.shade(), vel.mask());
