@@ -82,3 +82,27 @@ TEST(IoIsolation, SeriesReadsEveryFileThroughOneReader) {
     EXPECT_EQ(series->load(0).triangleCount(), 1u);
     EXPECT_EQ(series->load(2).triangleCount(), 1u);
 }
+
+// A series whose middle step makes VTK's reader crash: that step is an error naming the
+// collection, and the next one is read by a fresh child that re-opened the collection.
+TEST(IoIsolation, StepAfterOneThatEndedTheReaderIsReadByAFreshOne) {
+    ScratchDir dir;
+    for (const char* name : {"a.ply", "c.ply"}) std::filesystem::rename(validPly(dir), dir.file(name));
+    // An old-layout cell list with a token that is not a number: VTK 9.1 reads past it.
+    writeText(dir.file("b.vtk"), "# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                                 "0 0 0 1 0 0 1 1 0 0 1 0\nPOLYGONS 1 5\n4 0 x 2 3\n");
+    writeText(dir.file("s.pvd"), "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\" file=\"a.ply\"/>"
+                                 "<DataSet timestep=\"1\" file=\"b.vtk\"/><DataSet timestep=\"2\" file=\"c.ply\"/>"
+                                 "</Collection></VTKFile>");
+    auto series = io::openSeries(dir.file("s.pvd"));
+    ASSERT_EQ(series->count(), 3u);
+    EXPECT_EQ(series->load(0).triangleCount(), 1u);
+    try {
+        series->load(1);
+        ADD_FAILURE() << "step 2 read";
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find(dir.file("s.pvd")), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(": the reader "), std::string::npos) << e.what();  // it ended
+    }
+    EXPECT_EQ(series->load(2).triangleCount(), 1u);
+}

@@ -36,6 +36,7 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
         case w::Op::Open: {
             std::string path = in.str();
             io::SourceOptions options = w::readSourceOptions(in);
+            open.reset();  // one source at a time: the previous one's data goes first
             auto s = std::make_unique<OpenSource>();
             s->path = path;
             s->source = io::detail::openSource(path, s->trap, options);

@@ -285,6 +285,7 @@ ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const Sou
 ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
+    lastOpen_.clear();  // the child drops its source before opening another
     SourceInfo info = call(
         path, openBudget_,
         [&](wire::Writer& w) {
@@ -310,7 +311,11 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
 }
 
 core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
-    if (pid_ <= 0 && !lastOpen_.empty()) openLocked(lastOpen_, lastOptions_);  // the child died: restore its source
+    if (pid_ <= 0 && !lastOpen_.empty()) {  // the child died: restore its source
+        const std::string path = lastOpen_;
+        const SourceOptions options = lastOptions_;
+        openLocked(path, options);
+    }
     ensureChild(root_);
     return call(
         label, openBudget_,
