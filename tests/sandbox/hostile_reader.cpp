@@ -58,7 +58,8 @@ int main(int argc, char** argv) {
     const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
     in.u8();  // the op: Open (path, source options)
     const std::string path = in.str();
-    wire::readSourceOptions(in);
+    flowsurf::io::SourceOptions options;
+    wire::record(in, options);
     sandbox::limitRequest(memoryMb, cpuSeconds);
     const char* what = std::getenv("FLOWSURF_TEST_HOSTILE");
     wire::Writer out(sandbox::kSocketFd);

@@ -291,13 +291,12 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Open));
             w.str(path);
-            wire::writeSourceOptions(w, options);
+            wire::record(w, options);
         },
         [](wire::Reader& r) {
             SourceInfo s;
             s.format = r.str();
-            s.times.resize(size_t(r.count(1 << 24)));
-            for (double& t : s.times) t = r.f64();
+            r.field(s.times);
             return s;
         });
     lastOpen_ = path;
@@ -323,7 +322,11 @@ core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string&
             w.u8(uint8_t(wire::Op::Step));
             w.u64(index);
         },
-        [](wire::Reader& r) { return r.mesh(); });
+        [](wire::Reader& r) {
+            core::SurfaceMesh m;
+            wire::record(r, m);
+            return m;
+        });
 }
 
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
@@ -334,9 +337,13 @@ FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& op
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Inspect));
             w.str(path);
-            wire::writeSourceOptions(w, options);
+            wire::record(w, options);
         },
-        [](wire::Reader& r) { return wire::readFileInfo(r); });
+        [](wire::Reader& r) {
+            FileInfo info;
+            wire::record(r, info);
+            return info;
+        });
 }
 
 }  // namespace flowsurf::io::detail
