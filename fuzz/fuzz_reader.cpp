@@ -4,8 +4,9 @@
 // child (fuzz_reader_child: flowsurf-reader built with ASan + UBSan). Whatever the child
 // does (an error, a crash, a loop or allocation stopped by its limits), the caller gets a
 // surface or a flowsurf::Error naming the file, never a sandbox refusal (reading needs
-// no forbidden system call); libFuzzer's -timeout catches a refusal slower than that. Crashes inside the child are contained by design, so memory errors in
-// our own parsers are the business of fuzz_ply and fuzz_obj.
+// no forbidden system call); libFuzzer's -timeout catches a refusal slower than that.
+// Crashes inside the child are contained by design, so memory errors in our own parsers
+// are the business of fuzz_ply and fuzz_obj.
 #include "core/errors.h"
 #include "io/reader/reader_process.h"
 

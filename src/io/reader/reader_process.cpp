@@ -57,18 +57,23 @@ ReaderBudget budgetFor(const std::string& path) {
 
 // Which variable sets another value, for messages.
 std::string overrideHint(bool fixed, const char* variable) {
-    return fixed ? std::string(variable) : std::string("its limit for this input's size; ") + variable + " sets another";
+    return fixed ? std::string(variable)
+                 : std::string("its limit for this input's size; ") + variable + " sets another";
 }
 
 // Why the child ended, from its exit status and what it wrote to the reasons pipe.
 std::string deathText(int status, const std::string& reason, const ReaderBudget& budget) {
     if (WIFSIGNALED(status)) {
         switch (const int sig = WTERMSIG(status)) {
-            case SIGSYS: return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
+            case SIGSYS:
+                return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
             case SIGXCPU:
                 return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
                        overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
-            case SIGSEGV: case SIGBUS: case SIGFPE: case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
+            case SIGSEGV:
+            case SIGBUS:
+            case SIGFPE:
+            case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
             case SIGABRT: return "aborted (SIGABRT)";
             default: return "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
         }

@@ -55,8 +55,9 @@ void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds) {
     if (cpuSeconds > 0 && getrlimit(RLIMIT_CPU, &r) == 0) {
         rusage u{};
         getrusage(RUSAGE_SELF, &u);
-        const long usedUs = (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1000000L + u.ru_utime.tv_usec + u.ru_stime.tv_usec;
-        r.rlim_cur = rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds);  // used, rounded up, and the budget
+        const long usedUs =
+            (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1000000L + u.ru_utime.tv_usec + u.ru_stime.tv_usec;
+        r.rlim_cur = rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds);  // used, rounded up, + budget
         if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
         setrlimit(RLIMIT_CPU, &r);
     }
