@@ -71,6 +71,30 @@ TEST(IoSandbox, ReaderSeesNothingOutsideTheInputsFolder) {
     EXPECT_NE(what.find("outside was not stopped: Permission denied"), std::string::npos) << what;
 }
 
+// The real reader: a collection naming a file outside its folder cannot read it, and says why.
+TEST(IoSandbox, CollectionNamingAFileOutsideItsFolderSaysWhyItCannotBeRead) {
+    if (syscall(__NR_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION) < 1)
+        GTEST_SKIP() << "no Landlock in this kernel";
+    ScratchDir dir;
+    writeText(dir.file("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    fs::create_directories(dir.path() / "sub");
+    const std::string pvd = (dir.path() / "sub" / "s.pvd").string();
+    writeText(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\" file=\"../tri.obj\"/>"
+                   "</Collection></VTKFile>");
+    try {
+        io::readDataset(pvd);
+        ADD_FAILURE() << "read";
+    } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find(pvd + ": "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Permission denied; the reader may read only below " +
+                                             fs::weakly_canonical(dir.path() / "sub").string()),
+                  std::string::npos)
+            << e.what();
+    }
+    ScopedEnv off("FLOWSURF_READER_SANDBOX", "off");
+    EXPECT_EQ(io::readDataset(pvd).steps.at(0).mesh.triangleCount(), 1u);
+}
+
 TEST(IoSandbox, SpinningReaderIsStoppedByItsCpuLimitWithinSeconds) {
     ScratchDir dir;
     std::string what;

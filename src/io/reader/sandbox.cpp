@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <initializer_list>
 #include <stdexcept>
 
@@ -127,6 +128,8 @@ void onSigsys(int, siginfo_t* info, void*) {
 }
 
 // --- Landlock ----------------------------------------------------------------------------
+std::string gReadableRoot;
+
 // Read-only below `root`; every other file-system right is handled and so refused. The
 // descriptors already open (libraries, the socket) are not affected.
 void landlock(const std::string& root) {
@@ -153,7 +156,7 @@ void landlock(const std::string& root) {
         ::close(dir);
     }
     prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);
-    syscall(__NR_landlock_restrict_self, ruleset, 0);
+    if (syscall(__NR_landlock_restrict_self, ruleset, 0) == 0) gReadableRoot = root.empty() ? "/" : root;
     ::close(ruleset);
 #else
     (void)root;
@@ -226,6 +229,15 @@ void installFilter() {
 void enter(const std::string& root) {
     landlock(root);
     installFilter();
+}
+
+const std::string& readableRoot() { return gReadableRoot; }
+
+bool isOutsideReadableRoot(const std::string& path) {
+    if (gReadableRoot.empty()) return false;
+    std::error_code ec;
+    const std::filesystem::path rel = std::filesystem::weakly_canonical(path, ec).lexically_relative(gReadableRoot);
+    return ec || rel.empty() || *rel.begin() == "..";
 }
 
 bool disabledByEnvironment() {
