@@ -1,8 +1,9 @@
 // Hostile files, each the reason one of the former format pre-parsers existed (EnSight
-// counts beyond the file, old-layout legacy cell lists, XML compression headers, Exodus
-// connectivity and missing variables): fed to the reader process as they are, each is
-// refused within 5 s with a typed error naming the file, whatever VTK's reader does with
-// it (an error, a crash, a runaway allocation or loop stopped by the child's limits).
+// counts beyond the file, XML compression headers, Exodus connectivity and missing
+// variables): fed to the reader process as they are, each is refused within 5 s with a
+// typed error naming the file, whatever VTK's reader does with it (an error, a crash, a
+// runaway allocation or loop stopped by the child's limits). Old-layout legacy cell lists
+// are still checked before VTK (legacy_check.h says why) and refused the same way.
 // "Within 5 s" is asserted on the reader's CPU time, which a loaded machine does not
 // stretch; the wall clock only has to stay under the library's deadline (30 s).
 #include "core/errors.h"

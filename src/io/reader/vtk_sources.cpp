@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "io/reader/exodus_check.h"
+#include "io/reader/legacy_check.h"
 #include "io/reader/obj_reader.h"
 #include "io/reader/openfoam_source.h"
 #include "io/reader/ply_reader.h"
@@ -182,6 +183,7 @@ vtkSmartPointer<Reader> readerFor(const std::string& path) {
 }
 
 std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& trap) {
+    checkLegacyFile(path);  // old-layout cell lists VTK would read past their end
     auto r = readerFor<vtkGenericDataObjectReader>(path);
     trap.watch(r);
     r->UpdateInformation();
