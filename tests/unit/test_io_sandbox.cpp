@@ -63,6 +63,12 @@ TEST(IoSandbox, ReaderStartingAProgramOrProcessIsStopped) {
     EXPECT_NE(what.find("tried to start a process (clone)"), std::string::npos) << what;
 }
 
+TEST(IoSandbox, ReaderSignallingItsParentIsStopped) {
+    ScratchDir dir;
+    const std::string what = refusal(dir, "signal");
+    EXPECT_NE(what.find("tried to reach another process (kill)"), std::string::npos) << what;
+}
+
 TEST(IoSandbox, ReaderSeesNothingOutsideTheInputsFolder) {
     if (syscall(__NR_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION) < 1)
         GTEST_SKIP() << "no Landlock in this kernel";

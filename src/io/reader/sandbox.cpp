@@ -80,7 +80,7 @@ enum Kind : unsigned char { kOther, kNetwork, kProgram, kProcess, kWriteFile, kC
 const char* const kKindText[] = {
     "made a system call its sandbox forbids", "tried to open a network socket", "tried to run a program",
     "tried to start a process",               "tried to open a file for writing", "tried to change a file",
-    "tried to inspect another process"};
+    "tried to reach another process"};
 std::array<Kind, kMaxSyscall> gKinds{};
 std::array<std::array<char, 32>, kMaxSyscall> gNames{};
 
@@ -104,7 +104,8 @@ void fillReasons() {
     classify(kChangeFile, {"unlink", "unlinkat", "rename", "renameat", "renameat2", "mkdir", "mkdirat", "rmdir",
                            "truncate", "ftruncate", "chmod", "fchmod", "fchmodat", "link", "linkat", "symlink",
                            "symlinkat", "mknod", "mknodat"});
-    classify(kTrace, {"ptrace", "process_vm_readv", "process_vm_writev", "kcmp", "pidfd_open", "pidfd_getfd"});
+    classify(kTrace, {"ptrace", "process_vm_readv", "process_vm_writev", "kcmp", "pidfd_open", "pidfd_getfd",
+                      "kill", "tkill", "tgkill", "prlimit64"});
 }
 
 void append(char* buf, size_t& n, size_t cap, const char* text) {
@@ -180,9 +181,9 @@ const char* const kAllowed[] = {
     "sched_getparam", "sched_getscheduler", "getpriority", "clock_gettime", "clock_getres", "clock_nanosleep",
     "nanosleep", "gettimeofday", "time", "getpid", "gettid", "getppid", "getuid", "geteuid", "getgid",
     "getegid", "arch_prctl", "sysinfo", "uname", "getrandom",
-    // limits, signals, exit
-    "getrusage", "getrlimit", "setrlimit", "prlimit64", "rt_sigaction", "rt_sigprocmask", "rt_sigreturn",
-    "sigaltstack", "tgkill", "exit", "exit_group",
+    // limits, signals, exit (prlimit64 and tgkill: on this process only, below)
+    "getrusage", "getrlimit", "setrlimit", "rt_sigaction", "rt_sigprocmask", "rt_sigreturn", "sigaltstack",
+    "exit", "exit_group",
     // the request socket
     "sendto", "recvfrom", "sendmsg", "recvmsg", "poll", "ppoll"};
 
@@ -211,6 +212,8 @@ void installFilter() {
     addRule(ctx, SCMP_ACT_ALLOW, "openat", {SCMP_A2(SCMP_CMP_MASKED_EQ, writing, 0)});
     addRule(ctx, SCMP_ACT_ALLOW, "open", {SCMP_A1(SCMP_CMP_MASKED_EQ, writing, 0)});
     addRule(ctx, SCMP_ACT_ALLOW, "clone", {SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, CLONE_THREAD)});
+    addRule(ctx, SCMP_ACT_ALLOW, "prlimit64", {SCMP_A0(SCMP_CMP_EQ, 0)});  // glibc's own: pid 0, this process
+    addRule(ctx, SCMP_ACT_ALLOW, "tgkill", {SCMP_A0(SCMP_CMP_EQ, scmp_datum_t(getpid()))});  // raise(), abort()
     addRule(ctx, SCMP_ACT_ERRNO(ENOSYS), "clone3");  // flags out of reach: glibc falls back to clone
     addRule(ctx, SCMP_ACT_ERRNO(ENOSYS), "openat2");  // flags out of reach: callers fall back to openat
     addRule(ctx, SCMP_ACT_ERRNO(ENOTTY), "ioctl");    // isatty() and friends: "not a terminal"
