@@ -15,6 +15,6 @@ bench_machine() {
 bench_commit() {
     local c
     c=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-    git diff --quiet HEAD -- . ':!doc/bench' ':!README.md' ':!bench/baseline' 2>/dev/null || c="$c (with uncommitted changes)"
+    git diff --quiet HEAD -- . ':!doc/bench' ':!README.md' ':!docs/performance.md' ':!bench/baseline' 2>/dev/null || c="$c (with uncommitted changes)"
     echo "$c"
 }

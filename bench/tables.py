@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Tables for scripts/bench-tables.sh.
 
-    tables.py isa-ibfvs CSV              the README's ISA/IBFVS table (Markdown) of a
+    tables.py isa-ibfvs CSV              the manual's ISA/IBFVS table (Markdown) of a
                                          `flowsurf bench --methods isa,ibfvs --csv` file
     tables.py paraview-summary MD        one sentence on a bench/paraview/compare.sh table
     tables.py replace README NAME FILE   puts FILE between README's markers

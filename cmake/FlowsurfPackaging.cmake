@@ -14,6 +14,8 @@ set(CPACK_PACKAGE_DESCRIPTION "Texture-based flow visualization on surfaces, ren
 (EGL, headless or in a window): the command-line program and interactive viewer, the C++
 library with its CMake and pkg-config files, and the Python module.")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+# BSD 3-Clause (LICENSE), installed as /usr/share/doc/flowsurf/copyright and LICENSE.
+set(CPACK_RESOURCE_FILE_LICENSE ${CMAKE_CURRENT_SOURCE_DIR}/LICENSE)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)

@@ -180,6 +180,14 @@ PYBIND11_MODULE(_flowsurf, m) {
         });
 
     m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
+    m.def("option_info", [] {
+        py::list rows;
+        for (const OptionInfo& o : Renderer::optionInfo())
+            rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
+                                 py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
+                                 py::arg("choices") = o.choices, py::arg("default") = o.defaultValue));
+        return rows;
+    }, "The render options described (name, group, help, kind, min, max, choices, default), in --help order");
     m.def("_write_png", [](const std::string& path, py::array_t<uint8_t, py::array::c_style | py::array::forcecast> rgb) {
         if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("image must have shape (h, w, 3)");
         writePng(path, int(rgb.shape(1)), int(rgb.shape(0)), rgb.data());

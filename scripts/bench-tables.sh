@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # Regenerates the published benchmark tables, each with the machine (CPU model, cores, GL
 # renderer) and commit it was measured on: the files in doc/bench/ and, on llvmpipe, the
-# README's blocks between <!-- bench-tables NAME --> and <!-- /bench-tables NAME -->.
+# manual's blocks (docs/performance.md) between <!-- bench-tables NAME --> and <!-- /bench-tables NAME -->.
 #
 #   scripts/bench-tables.sh [TABLE ...]      default: all of them, in this order
 #
-#   isa_ibfvs  doc/bench/isa_ibfvs_R.txt + README block   flowsurf bench, ISA and IBFVS grid   ~8 min
+#   isa_ibfvs  doc/bench/isa_ibfvs_R.txt + docs block     flowsurf bench, ISA and IBFVS grid   ~8 min
 #   hybrid     doc/bench/hybrid_R.txt                      hybrid, ParaView's framing, dynamic   ~2 min
 #   gl_paths   doc/bench/gl_paths_R.txt                    fragment vs compute per stage         ~3 min
 #   surface_raster doc/bench/surface_raster_R.txt          GL vs compute rasteriser, dynamic     ~4 min
-#   paraview   doc/bench/hybrid_vs_paraview_R.md + README  bench/paraview/compare.sh             ~25 min
+#   paraview   doc/bench/hybrid_vs_paraview_R.md + docs    bench/paraview/compare.sh             ~25 min
 #   viewer     doc/bench/viewer_R.txt                      bench/viewer/run.sh                   ~4 min
 #
 # R is the renderer: "llvmpipe", or a name made from GL_RENDERER elsewhere (a GPU's tables
-# go beside llvmpipe's, and only llvmpipe's go into the README). Times are those of the
+# go beside llvmpipe's, and only llvmpipe's go into docs/performance.md). Times are those of the
 # 2-core llvmpipe machine. Needs build/apps/flowsurf (scripts/build.sh; FLOWSURF overrides).
 # paraview is skipped, with a message, when ParaView is not installed (bench/paraview/setup.sh);
 # viewer when the wind-around-buildings surface (VIEWER_INPUT, default
@@ -52,7 +52,7 @@ header() {
     echo "# machine: $MACHINE"
     echo "# commit: $COMMIT, $(date -u +%Y-%m-%d), load average at the start: $(load)"
 }
-# The line above a README table.
+# The line above a table of docs/performance.md.
 note() {
     echo "*Measured by \`scripts/bench-tables.sh $1\` on $MACHINE; commit $COMMIT, $(date -u +%Y-%m-%d);" \
          "load average $(load) at the end (other jobs on the same cores slow every row).*"
@@ -64,7 +64,7 @@ publish() {
     echo "bench-tables: wrote $1"
 }
 readme_block() {  # NAME FILE
-    if [ "$R" = llvmpipe ]; then python3 bench/tables.py replace README.md "$1" "$2"; echo "bench-tables: README block $1"; fi
+    if [ "$R" = llvmpipe ]; then python3 bench/tables.py replace docs/performance.md "$1" "$2"; echo "bench-tables: docs/performance.md block $1"; fi
 }
 bench_table() {  # NAME ARGS...: doc/bench/NAME_R.txt from one `flowsurf bench` run
     local name=$1

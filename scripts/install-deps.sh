@@ -21,5 +21,6 @@ PACKAGES=(
   python3-pytest python3-vedo                   # Python tests (vedo: a real client mesh library)
   clang                                         # fuzz targets (libFuzzer, scripts/fuzz.sh)
   patchelf                                      # the portable tree's $ORIGIN RUNPATHs (test install_portable_tree)
+  mkdocs mkdocs-material python3-pymdownx       # the manual (scripts/docs.sh, ctest docs)
 )
 exec "$(dirname "$0")/apt-install.sh" "${PACKAGES[@]}"

@@ -103,11 +103,10 @@ int main(int argc, char** argv) {
     CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, "
                                                    "bounds, OpenFOAM patches with their fields");
     infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
-    // How info reads the file: the table's options of reading an input (effect Reload),
-    // but the input itself and the field.
+    // How info reads the file: the table's options of reading an input.
     session::RenderOptions infoRead;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.effect == session::OptionEffect::Reload && spec.name != "input" && spec.name != "field")
+        if (session::isReadOption(spec))
             infoCmd->add_option_function<std::string>(
                 "--" + spec.name, [&infoRead, s = &spec](const std::string& v) { s->set(infoRead, v); }, spec.help);
 

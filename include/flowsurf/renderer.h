@@ -59,6 +59,17 @@ struct Quality {
     QualityMetrics worst;    // worst frame per metric (highest error, lowest correlation...)
 };
 
+// One option as `flowsurf render --help` describes it: a row of the option table.
+struct OptionInfo {
+    std::string name;          // set()'s name, the command line's without dashes
+    std::string group;         // Output, Data, Method, Overlay, Dye, Camera
+    std::string help;          // one line
+    std::string kind;          // flag, int, float, text, choice, size, vec3, color, path
+    double min = 0.0, max = 0.0;       // inclusive range of int and float options
+    std::vector<std::string> choices;  // the values a choice takes
+    std::string defaultValue;  // as text; empty when it has none (e.g. the fitted camera)
+};
+
 class Renderer {
 public:
     // Throws GlError when no OpenGL 4.5 core context can be made (ContextMode::Own).
@@ -78,6 +89,8 @@ public:
     std::string get(const std::string& option) const;
     // The names set() takes, in `--help` order.
     static std::vector<std::string> optionNames();
+    // Those options described: group, help, kind, range, choices, default.
+    static std::vector<OptionInfo> optionInfo();
 
     // Dye [issue 20]: adds a source of ink at the surface point nearest `point` (object
     // space), `radius` in object units (0: a few pixels at the first frame's view), `color`

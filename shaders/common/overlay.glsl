@@ -19,11 +19,29 @@ uniform float uContrast;      // display gain of the texture about its mean
 uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 #endif
 uniform vec3 uBackground;
+#if WITH_COLOR_STRETCH
+uniform vec2 uLightRange;     // contrast enhancement [issue 28]: lightness at the stretch's ends
+#endif
 #if WITH_DYE
 #include "common/dye_sample.glsl"
 uniform int uDyeSlot;         // first value of the current dye
 uniform mat4 uInvViewProj;    // window coordinates -> object space, this frame's camera
 #endif
+
+// HSL lightness: the mean of the largest and smallest channel.
+float lightness(vec3 c) { return 0.5 * (max(c.r, max(c.g, c.b)) + min(c.r, min(c.g, c.b))); }
+
+// `c` with HSL lightness `l`, its hue and saturation kept: every channel is the lightness
+// plus the chroma times a pattern of the hue, and the chroma of a saturation scales with
+// 1 - |2 l - 1|.
+vec3 withLightness(vec3 c, float l) {
+    float hi = max(c.r, max(c.g, c.b)), lo = min(c.r, min(c.g, c.b));
+    float l0 = 0.5 * (hi + lo), chroma = hi - lo;
+    if (chroma <= 1e-6) return vec3(l);
+    float saturation = chroma / (1.0 - abs(hi + lo - 1.0));
+    float chromaNew = (1.0 - abs(2.0 * l - 1.0)) * saturation;
+    return clamp(vec3(l) + (c - vec3(l0)) * (chromaNew / chroma), 0.0, 1.0);
+}
 
 // Diffuse key light above-left of the eye, two-sided (open CFD surfaces).
 const vec3 kLight = vec3(-0.35, 0.5, 0.8);
@@ -80,6 +98,10 @@ vec3 overlayColor(ivec2 px) {
     float depth = texelFetch(uDepth, px, 0).r;
     vec3 color = depth >= 1.0 ? uBackground  // texture clipping
                               : surfaceColor(px);
+#if WITH_COLOR_STRETCH
+    if (depth < 1.0)
+        color = withLightness(color, clamp((lightness(color) - uLightRange.x) / (uLightRange.y - uLightRange.x), 0.0, 1.0));
+#endif
 #if WITH_DYE
     if (depth < 1.0) color = clamp(withDye(color, px, depth), 0.0, 1.0);
 #endif

@@ -146,9 +146,19 @@ std::string Renderer::get(const std::string& option) const {
 std::vector<std::string> Renderer::optionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.effect != session::OptionEffect::Reload && spec.effect != session::OptionEffect::Output)
-            names.push_back(spec.name);
+        if (session::isRendererOption(spec)) names.push_back(spec.name);
     return names;
+}
+
+std::vector<OptionInfo> Renderer::optionInfo() {
+    static constexpr const char* kKinds[] = {"flag", "int", "float", "text", "choice", "size", "vec3", "color", "path"};
+    static_assert(std::size(kKinds) == size_t(session::OptionKind::Path) + 1, "one name per OptionKind");
+    std::vector<OptionInfo> out;
+    for (const auto& spec : session::renderOptionTable())
+        if (session::isRendererOption(spec))
+            out.push_back({spec.name, spec.group, spec.help, kKinds[int(spec.kind)], spec.min, spec.max,
+                           spec.choices, session::defaultText(spec)});
+    return out;
 }
 
 void Renderer::setCamera(const CameraView& v) {

@@ -105,8 +105,7 @@ Surface Surface::fromArrays(const float* points, size_t pointCount, const uint32
 std::vector<std::string> Surface::readOptionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.effect == session::OptionEffect::Reload && spec.name != "input" && spec.name != "field")
-            names.push_back(spec.name);
+        if (session::isReadOption(spec)) names.push_back(spec.name);
     return names;
 }
 

@@ -168,6 +168,7 @@ private:
     // One dye step at this frame's camera and data time (nothing without sources).
     void stepDye(const core::Camera& camera, double time, double perFrame);
     void resetDye();                     // the dye empty, at frame 0 (a restart)
+    bool sameGeometryEverywhere(bool mine) const;  // `mine` and'ed over the process group
     std::vector<methods::DyeEmitter> dyeEmitters(const core::Camera& camera, const core::SurfaceMesh& mesh);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked

@@ -25,6 +25,13 @@ float pixelsPerUnitAt(const core::Camera& camera, const core::Viewport& viewport
 bool sameSource(const methods::DyeSource& a, const methods::DyeSource& b) { return a == b; }
 }  // namespace
 
+bool Playback::sameGeometryEverywhere(bool mine) const {
+    if (!group_ || group_->size() < 2) return mine;
+    int32_t same = mine ? 1 : 0;
+    group_->minInPlace(std::span<int32_t>(&same, 1));
+    return same != 0;
+}
+
 void Playback::resetDye() {
     if (dye_) dye_->clear();
     placedDye_.clear();
@@ -47,7 +54,7 @@ std::vector<methods::DyeEmitter> Playback::dyeEmitters(const core::Camera& camer
         PlacedDye p;
         p.source = s;
         p.start = dyeFrame_;
-        p.posObj = methods::closestOnSurface(mesh, s.point);
+        p.posObj = methods::closestOnWholeSurface(group_, mesh, s.point);
         p.radius = s.radius > 0.0f ? s.radius : methods::kDyeRadiusPx / pixelsPerUnitAt(camera, options_.size, p.posObj);
         placed.push_back(p);
     }
@@ -66,20 +73,19 @@ std::vector<methods::DyeEmitter> Playback::dyeEmitters(const core::Camera& camer
 
 void Playback::stepDye(const core::Camera& camera, double time, double perFrame) {
     if (!dye_ && options_.dye.empty() && options_.dyeFileSources.empty()) return;
-    // Split over processes (ParaView under MPI) each would hold the band of its own piece and
-    // lose the ink that crosses into another: no dye there.
-    if (group_ && group_->size() > 1) return;
     const double t = surface_->unsteady() ? time : 0.0;
     const core::SurfaceMesh& mesh = surface_->meshAtTime(t);
     // The band: made at the first step, again when the geometry changes (the dye with it).
-    if (dye_ && !dye_->sameGeometry(mesh)) {
+    // Split over processes (ParaView under MPI) each holds a piece and every one the whole
+    // band (methods/common/dye_shared.h): made again when any piece changed.
+    if (dye_ && !sameGeometryEverywhere(dye_->sameGeometry(mesh))) {
         dye_.reset();
         resetDye();
     }
     if (!dye_) {
         const methods::SurfaceGpu& s = surface_->atTime(t);
         const float h = kDyeVoxelPx / core::maxPixelsPerUnit(camera, options_.size, s.bounds());
-        dye_ = std::make_unique<methods::DyeField>(mesh, surface_->field(), h);
+        dye_ = std::make_unique<methods::DyeField>(mesh, surface_->field(), s.bounds(), h, group_);
         dyeVelocityTime_ = t;
         if (surface_->unsteady()) {
             dyeDt_ = perFrame;

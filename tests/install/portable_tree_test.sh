@@ -31,6 +31,8 @@ runpath=$(readelf -dW "$TREE/bin/flowsurf" | sed -n 's/.*(RUNPATH).*\[\(.*\)\]/\
 grep -q "^libvtkCommonCore-9.1.so.1	libvtk9.1	" "$TREE/share/doc/flowsurf/bundled.txt" \
   && [ -s "$TREE/share/doc/flowsurf/licenses/libvtk9.1.copyright" ] && ok "bundled.txt and licences" \
   || bad "bundled.txt or licences"
+grep -q "BSD 3-Clause License" "$TREE/share/doc/flowsurf/LICENSE" && cmp -s "$SRC/LICENSE" "$TREE/share/doc/flowsurf/copyright" \
+  && ok "flowsurf's own licence beside them" || bad "share/doc/flowsurf/LICENSE or copyright missing"
 if ls "$TREE"/lib | grep -Eq '^(libc\.so|libstdc\+\+|libEGL|libGL|libOpenGL)'; then bad "system or driver library bundled"
 else ok "no C library, libstdc++ or GL loader in lib/"; fi
 

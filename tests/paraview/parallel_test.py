@@ -11,6 +11,9 @@ tests/paraview/run_parallel_test.sh under mpiexec).
       plugin loaded on both sides), screenshots saved by the client.
   mpiexec ... pvbatch parallel_test.py PLUGIN OUTDIR glerror
       FlowSurf where one rank's OpenGL is too old: the same error on every rank, no hang.
+  mpiexec -np 2 pvbatch parallel_test.py PLUGIN OUTDIR errors
+      inputs that differ between the ranks (the vector array missing on one, pieces of
+      different data times): the same error on every rank, no hang, rendering goes on.
   pvbatch parallel_test.py PLUGIN OUTDIR compare REF TAG...
       compares each TAG's images with REF's: the mean absolute gray difference over the
       surface must be <= 1 and every 16x16 tile's mean <= 3 (issue 11); prints the numbers
@@ -94,6 +97,8 @@ def render(TAG, PARTITIONS, server=None):
     rep.FlowSurfVectors = ['POINTS', 'V']
     print('FLOWSURF_STARTED', flush=True)  # ParaView rendered; from here a hang is ours
     rep.SetRepresentationType('FlowSurf')
+    # Dye released on the front: every rank holds the whole band (methods/common/dye_shared.h).
+    rep.FlowSurfDye = '0,-0.8,0.6:0.06:red;0.6,-0.8,0.1:0.06:yellow'
     camera = view.GetActiveCamera()
     for mode in MODES:
         rep.FlowSurfParallel = mode
@@ -166,10 +171,52 @@ def gl_error():
     print('SURVIVED', flush=True)
 
 
+# A filter that changes its piece on one process only (Python run on each process).
+RANK_ONE_SCRIPT = '''
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkCommonDataModel import vtkDataObject
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+out.GetInformation().Set(vtkDataObject.DATA_TIME_STEP(), 2.5)
+if rank == 1:
+    %s
+'''
+
+
+def errors():
+    """Inputs that differ between the processes: the vector array missing on one, pieces of
+    different data times. Every process reports the same error (naming the process), none
+    waits in a collective step, and ParaView renders on once the input is whole again."""
+    LoadPlugin(PLUGIN, ns=globals())
+    sphere = Sphere(Radius=1.0, ThetaResolution=64, PhiResolution=32)
+    spin = Calculator(Input=sphere, ResultArrayName='V', Function='-coordsY*iHat+coordsX*jHat')
+    pieces = ExtractSurface(Input=RedistributeDataSet(Input=spin))
+    odd = ProgrammableFilter(Input=pieces)
+    odd.CopyArrays = 0
+    view = CreateRenderView()
+    view.ViewSize = [200, 200]
+    rep = Show(odd, view)
+    Render(view)
+    print('FLOWSURF_STARTED', flush=True)
+    rep.SetRepresentationType('FlowSurf')
+    rep.FlowSurfVectors = ['POINTS', 'V']
+    for case, change in (('array', "out.GetPointData().RemoveArray('V')"),  # all at time 2.5 but
+                         ('time', 'out.GetInformation().Set(vtkDataObject.DATA_TIME_STEP(), 7.5)')):
+        print('CASE', case, flush=True)
+        odd.Script = RANK_ONE_SCRIPT % change
+        Render(view)
+        odd.Script = RANK_ONE_SCRIPT % 'pass'
+        Render(view)
+        print('SURVIVED', case, flush=True)
+
+
 if MODE == 'render':
     render(sys.argv[4], int(sys.argv[5]))
 elif MODE == 'glerror':
     gl_error()
+elif MODE == 'errors':
+    errors()
 elif MODE == 'client':
     render(sys.argv[4], int(sys.argv[5]), int(sys.argv[6]))
 else:

@@ -64,6 +64,18 @@ errors=$(grep -c "FlowSurf needs OpenGL 4.5; ParaView's context is 3.3.* (on pro
 echo "glerror: exit $rc, the error reported $errors time(s)"
 [ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/glerror.log" ||
   { echo "glerror: expected rank 1's error on both ranks and a render after it"; cat "$OUT/glerror.log"; exit 1; }
+# Inputs that differ between the ranks (the vector array missing on rank 1; rank 1's piece
+# of another data time): both ranks report the same error naming rank 1, neither hangs,
+# and FlowSurf renders again once the input is whole.
+echo "== errors: inputs that differ between 2 ranks"
+xrun "$OUT/errors.log" "${MPI[@]}" -np 2 pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" errors
+rc=$?
+missing=$(grep -c "no 3-component point array 'V'.* (on process 1 of 2)" "$OUT/errors.log")
+times=$(grep -c "the pieces' data times differ between the processes: 2.5 on process 0, 7.5 on process 1 of 2" "$OUT/errors.log")
+echo "errors: exit $rc, missing array reported $missing time(s), differing data times $times time(s)"
+[ $rc -eq 0 ] && [ "$missing" -ge 2 ] && [ "$times" -ge 2 ] && grep -q "^SURVIVED array" "$OUT/errors.log" &&
+  grep -q "^SURVIVED time" "$OUT/errors.log" ||
+  { echo "errors: expected each error on both ranks and a render after each"; cat "$OUT/errors.log"; exit 1; }
 # Client-server: pvserver on 2 ranks, a Python client that connects, loads the plugin on
 # both sides and saves the screenshots (compared with 1-rank pvbatch below).
 # A display taken by another xvfb-run starting at the same moment ("bad X server

@@ -237,3 +237,23 @@ TEST(CliOptions, NameListsComeFromTheTables) {
     EXPECT_EQ(methods::nameOf(methods::kMethodNames, methods::Method::Ibfvs), "ibfvs");
     EXPECT_EQ(parse({"x", "-m", "ibfvs"}).method, methods::Method::Ibfvs);
 }
+
+// The front ends take their options by these rules, and the manual's option reference
+// lists them by the same (tools/docs/option_reference.cpp).
+TEST(CliOptions, FrontEndsOfEachOption) {
+    auto spec = [](const char* name) { return *findOption(name); };
+    EXPECT_EQ(paraviewProperty(spec("filter-length")), "FlowSurfFilterLength");
+    EXPECT_EQ(paraviewProperty(spec("warmup")), "FlowSurfWarmup");
+    EXPECT_EQ(paraviewProperty(spec("colormap")), "");   // ParaView's own colouring
+    EXPECT_EQ(paraviewProperty(spec("size")), "");       // the view's size
+    EXPECT_TRUE(isRendererOption(spec("alpha")));
+    EXPECT_FALSE(isRendererOption(spec("output")));      // the caller writes its files
+    EXPECT_FALSE(isRendererOption(spec("patches")));     // read with the surface
+    EXPECT_TRUE(isReadOption(spec("patches")));
+    EXPECT_FALSE(isReadOption(spec("field")));            // read()'s own argument
+    EXPECT_TRUE(inViewerPanel(spec("alpha")));
+    EXPECT_TRUE(inViewerPanel(spec("eye")));
+    EXPECT_FALSE(inViewerPanel(spec("orbit")));
+    for (const OptionSpec& s : renderOptionTable())
+        EXPECT_FALSE(isRendererOption(s) && isReadOption(s)) << s.name << " belongs to one of Renderer and read";
+}

@@ -199,7 +199,8 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     if (ImGui::CollapsingHeader("Camera")) {
         int mode = state.rotateMode == RotateMode::Turntable ? 0 : 1;
         if (ImGui::Combo("rotate", &mode, "turntable\0trackball\0")) emitSet("rotate", mode == 0 ? "turntable" : "trackball");
-        for (const char* name : {"eye", "target", "up", "fov", "ortho"}) optionWidget(*findOption(name), state);
+        for (const OptionSpec& spec : renderOptionTable())
+            if (spec.group == "Camera" && inViewerPanel(spec)) optionWidget(spec, state);
         if (ImGui::Button("reset view")) queue_.push_back({frame_, EventType::Key, "r"});
     }
 

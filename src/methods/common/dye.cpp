@@ -9,8 +9,11 @@
 
 namespace flowsurf::methods {
 
-DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, float h)
-    : band_(buildDyeBand(mesh, makeDyeGrid(mesh.bounds(), h))),
+DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, const core::Bounds& bounds, float h,
+                   ProcessGroup* group)
+    : shared_(group && group->size() > 1 ? std::make_unique<SharedDyeBand>(*group, mesh, makeDyeGrid(bounds, h))
+                                         : nullptr),
+      band_(shared_ ? shared_->takeBand() : buildDyeBand(mesh, makeDyeGrid(bounds, h))),
       positions_(mesh.positions),
       triangles_(mesh.triangles),
       program_(program({{GL_COMPUTE_SHADER, "common/dye_advect.comp"}})) {
@@ -45,7 +48,7 @@ bool DyeField::sameGeometry(const core::SurfaceMesh& mesh) const {
 }
 
 void DyeField::setVelocity(const core::SurfaceMesh& mesh, const std::string& field) {
-    const std::vector<glm::vec3> vel = bandVelocity(band_, mesh, field);
+    const std::vector<glm::vec3> vel = shared_ ? shared_->velocity(mesh, field) : bandVelocity(band_, mesh, field);
     std::vector<glm::vec4> data(std::max<size_t>(band_.size(), 1) * 2, glm::vec4(0.0f));
     maxSpeed_ = 0.0f;
     for (size_t i = 0; i < band_.size(); ++i) {

@@ -13,7 +13,9 @@
 #include "core/mesh.h"
 #include "gl/objects.h"
 #include "methods/common/dye_band.h"
+#include "methods/common/dye_shared.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,9 +49,13 @@ struct DyeView {
 
 class DyeField {
 public:
-    // The band of `mesh` with voxel size `h` (object units) and the velocity of `field`.
+    // The band of `mesh` on a grid over `bounds` (the whole surface's) with voxel size `h`
+    // (object units), and the velocity of `field`. With a group of several processes `mesh`
+    // is this process's piece and the band the whole surface's (dye_shared.h; collective,
+    // as are setVelocity and the construction's sameGeometry decision in session::Playback).
     // Needs a current GL context.
-    DyeField(const core::SurfaceMesh& mesh, const std::string& field, float h);
+    DyeField(const core::SurfaceMesh& mesh, const std::string& field, const core::Bounds& bounds, float h,
+             ProcessGroup* group = nullptr);
 
     // True if `mesh` has the triangles the band was built from and its positions within a
     // tenth of a voxel (a new time step of the same geometry: only the velocity changes).
@@ -72,6 +78,7 @@ private:
     // step, and those the emitters cover. The rest hold no dye and stay as they are.
     size_t listActive(float dt, const std::vector<DyeEmitter>& emitters);
 
+    std::unique_ptr<SharedDyeBand> shared_;  // in a parallel render
     DyeBand band_;
     std::vector<glm::vec3> positions_;
     std::vector<glm::uvec3> triangles_;

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -47,16 +48,31 @@ glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::v
     return qca;
 }
 
-glm::vec3 closestOnSurface(const core::SurfaceMesh& mesh, const glm::vec3& p) {
-    glm::vec3 best = p;
-    float bestD2 = std::numeric_limits<float>::max();
-    for (const glm::uvec3& t : mesh.triangles) {
-        const glm::vec3 q = closestOnTriangle(p, mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]);
-        const float d2 = glm::dot(q - p, q - p);
-        if (d2 < bestD2) {
-            bestD2 = d2;
-            best = q;
+uint32_t triangleKey(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    // FNV-1a over the bits of the three positions in lexicographic order.
+    const auto less = [](const glm::vec3& u, const glm::vec3& v) {
+        return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.z < v.z;
+    };
+    glm::vec3 v[3] = {a, b, c};
+    std::sort(v, v + 3, less);
+    uint32_t h = 2166136261u;
+    for (const glm::vec3& p : v)
+        for (int i = 0; i < 3; ++i) {
+            const uint32_t bits = std::bit_cast<uint32_t>(p[i]);
+            for (int k = 0; k < 4; ++k) h = (h ^ ((bits >> (8 * k)) & 0xffu)) * 16777619u;
         }
+    return h;
+}
+
+SurfacePoint closestOnSurface(const core::SurfaceMesh& mesh, const glm::vec3& p) {
+    SurfacePoint best;
+    best.position = p;
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+        const glm::vec3 q = closestOnTriangle(p, a, b, c);
+        const float d2 = glm::dot(q - p, q - p);
+        const uint32_t key = triangleKey(a, b, c);
+        if (!best.found || nearer(d2, key, best.distance2, best.key)) best = {q, d2, key, true};
     }
     return best;
 }
@@ -80,11 +96,11 @@ DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid) {
     band.grid = grid;
     band.index.assign(grid.voxelCount(), -1);
     const float radius = kDyeBandVoxels * grid.h;
-    std::vector<float> dist2;  // per band voxel, while the nearest triangle is searched
     auto cell = [&](int x, int y, int z) { return (size_t(z) * size_t(grid.dims.y) + size_t(y)) * size_t(grid.dims.x) + size_t(x); };
     for (uint32_t ti = 0; ti < uint32_t(mesh.triangles.size()); ++ti) {
         const glm::uvec3 t = mesh.triangles[ti];
         const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+        const uint32_t key = triangleKey(a, b, c);
         const glm::vec3 lo = glm::min(a, glm::min(b, c)) - glm::vec3(radius), hi = glm::max(a, glm::max(b, c)) + glm::vec3(radius);
         // Voxels whose centres lie in [lo, hi].
         const glm::ivec3 i0 = glm::max(glm::ivec3(glm::ceil((lo - grid.origin) / grid.h - 0.5f)), glm::ivec3(0));
@@ -103,19 +119,28 @@ DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid) {
                         band.closest.push_back(q);
                         band.triangle.push_back(ti);
                         band.barycentric.push_back(bc);
-                        dist2.push_back(d2);
-                    } else if (d2 < dist2[size_t(idx)]) {
+                        band.distance2.push_back(d2);
+                        band.tieKey.push_back(key);
+                    } else if (nearer(d2, key, band.distance2[size_t(idx)], band.tieKey[size_t(idx)])) {
                         band.closest[size_t(idx)] = q;
                         band.triangle[size_t(idx)] = ti;
                         band.barycentric[size_t(idx)] = bc;
-                        dist2[size_t(idx)] = d2;
+                        band.distance2[size_t(idx)] = d2;
+                        band.tieKey[size_t(idx)] = key;
                     }
                 }
     }
     if (band.closest.size() > size_t(std::numeric_limits<int32_t>::max()))
         throw ConfigError("dye: the surface's narrow band is too large");
 
-    // Brick by brick (a counting sort on the brick of each voxel's cell).
+    orderByBrick(band);
+    return band;
+}
+
+std::vector<uint32_t> orderByBrick(DyeBand& band) {
+    // A counting sort on the brick of each voxel's cell.
+    const DyeGrid& grid = band.grid;
+    auto cell = [&](int x, int y, int z) { return (size_t(z) * size_t(grid.dims.y) + size_t(y)) * size_t(grid.dims.x) + size_t(x); };
     band.brickDims = (grid.dims + kDyeBrick - 1) / kDyeBrick;
     const size_t bricks = size_t(band.brickDims.x) * size_t(band.brickDims.y) * size_t(band.brickDims.z);
     band.brick.assign(band.closest.size(), 0);
@@ -135,6 +160,7 @@ DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid) {
     std::vector<uint32_t> order(band.closest.size());  // new index of each old one
     for (size_t i = 0; i < order.size(); ++i) order[i] = fill[band.brick[i]]++;
     auto permute = [&](auto& v) {
+        if (v.empty()) return;
         auto out = v;
         for (size_t i = 0; i < order.size(); ++i) out[order[i]] = v[i];
         v = std::move(out);
@@ -143,9 +169,11 @@ DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid) {
     permute(band.triangle);
     permute(band.barycentric);
     permute(band.brick);
+    permute(band.distance2);
+    permute(band.tieKey);
     for (int32_t& idx : band.index)
         if (idx >= 0) idx = int32_t(order[size_t(idx)]);
-    return band;
+    return order;
 }
 
 std::vector<glm::vec3> bandVelocity(const DyeBand& band, const core::SurfaceMesh& mesh, const std::string& field) {

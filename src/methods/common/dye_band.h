@@ -46,11 +46,26 @@ struct DyeBand {
     std::vector<uint32_t> triangle;     // per band voxel: triangle holding cp(x)
     std::vector<glm::vec3> barycentric; // per band voxel: cp(x) in that triangle
     std::vector<uint32_t> brick;        // per band voxel: its brick
+    std::vector<float> distance2;       // per band voxel: squared distance to cp(x)
+    std::vector<uint32_t> tieKey;       // per band voxel: triangleKey of the triangle holding cp(x)
     size_t size() const { return closest.size(); }
 };
 
+// A key of a triangle made of its vertex positions only (not of its place in a mesh): of two
+// candidates at the same distance the smaller key wins, so a mesh and its pieces, whatever
+// their triangle order, pick the same closest point (methods/common/dye_shared.h).
+uint32_t triangleKey(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+// Candidate (d2, key) nearer than (bestD2, bestKey): by distance, on a tie by key.
+inline bool nearer(float d2, uint32_t key, float bestD2, uint32_t bestKey) {
+    return d2 < bestD2 || (d2 == bestD2 && key < bestKey);
+}
+
 // Band voxels within kDyeBandVoxels * h of the surface, ordered by brick.
 DyeBand buildDyeBand(const core::SurfaceMesh& mesh, const DyeGrid& grid);
+// Sets brickDims, brick and brickStart from `index` and orders the per-voxel arrays (those
+// not empty) brick by brick, keeping the order within a brick; `index` follows. Returns
+// the new place of each voxel (for arrays the caller keeps beside the band).
+std::vector<uint32_t> orderByBrick(DyeBand& band);
 
 // Tangential velocity at each band voxel's closest point: barycentric blend of the vertex
 // vectors of `field`, projected onto the triangle's plane (object units per data time).
@@ -59,7 +74,15 @@ std::vector<glm::vec3> bandVelocity(const DyeBand& band, const core::SurfaceMesh
 // Closest point on triangle (a, b, c) to p, with its barycentric coordinates.
 glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                             glm::vec3* bary = nullptr);
-// Closest point of the whole surface to p (every triangle: for the few dye sources).
-glm::vec3 closestOnSurface(const core::SurfaceMesh& mesh, const glm::vec3& p);
+// Closest point of the whole surface to p (every triangle: for the few dye sources), with
+// its squared distance and triangle key (ties broken as in the band). No triangles: `found`
+// false.
+struct SurfacePoint {
+    glm::vec3 position{0.0f};
+    float distance2 = 0.0f;
+    uint32_t key = 0;
+    bool found = false;
+};
+SurfacePoint closestOnSurface(const core::SurfaceMesh& mesh, const glm::vec3& p);
 
 }  // namespace flowsurf::methods

@@ -15,13 +15,17 @@ namespace flowsurf::methods {
 
 namespace {
 // The variant for these parameters (SCHEME, WITH_* in overlay.glsl).
-gl::Program makeProgram(GlPath path, const CommonParams& params, bool withDye) {
+// The lightness histogram of contrast enhancement [issue 28] measures the colour before
+// its stretch, without dye or legend: `lightness` makes that variant.
+gl::Program makeProgram(GlPath path, const CommonParams& params, bool withDye, bool lightness = false) {
     auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
     const std::string defines = "#define SCHEME " + std::to_string(int(params.overlay)) + "\n" +
-                                flag("WITH_LEGEND", params.legend) + flag("WITH_DYE", withDye) +
+                                flag("WITH_LEGEND", params.legend && !lightness) + flag("WITH_DYE", withDye) +
                                 flag("WITH_COLORMAP", params.colormap != Colormap::None || !params.colormapTable.empty()) +
                                 flag("WITH_LIGHTING", params.lighting) +
-                                flag("WITH_MASK", params.velocityMask || !params.maskBy.empty());
+                                flag("WITH_MASK", params.velocityMask || !params.maskBy.empty()) +
+                                flag("WITH_COLOR_STRETCH", enhancesColor(params.enhanceContrast) && !lightness);
+    if (lightness) return program({{GL_COMPUTE_SHADER, "common/lightness_histogram.comp"}}, defines);
     if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "common/overlay.comp"}}, defines);
     return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/overlay.frag"}},
                    defines);
@@ -33,7 +37,12 @@ Overlay::Overlay(const CommonParams& params)
       path_(resolveGlPath(params.glPath)),
       program_(makeProgram(path_, params, false)),
       colormap_(makeColormapTexture(params)),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+    if (enhancesColor(params.enhanceContrast)) {
+        lightnessProgram_ = makeProgram(path_, params, false, true);
+        lightness_ = PercentileRange(params.enhancePercentile, params.enhanceSmoothing);
+    }
+}
 
 namespace {
 // The legend's sizes, as fractions of the image height it is laid out for: the first that
@@ -94,6 +103,32 @@ void Overlay::updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth
     legendOrigin_ = {std::max(0, width - s.x - 8), std::max(0, (height - s.y) / 2)};
 }
 
+void Overlay::bindInputs(const gl::Program& prog, const gl::Texture2D& flow, const gl::Texture2D& depth,
+                         const gl::Texture2D& shade, const gl::Texture2D& mask) const {
+    prog.use();
+    // Per variant, some of these are compiled out (location -1: GL ignores the call). A
+    // stretched texture [issue 28] has its range already: no display gain on top.
+    glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
+    glUniform1f(prog.uniformIfActive("uContrast"), enhancesTexture(params_.enhanceContrast) ? 1.0f : params_.contrast);
+    glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);
+    glBindTextureUnit(0, flow.id());
+    glBindTextureUnit(1, depth.id());
+    glBindTextureUnit(2, shade.id());
+    glBindTextureUnit(3, colormap_.id());
+    glBindTextureUnit(4, mask.id());
+}
+
+void Overlay::measureLightness(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
+                               const gl::Texture2D& mask) const {
+    if (!lightnessProgram_) return;
+    bindInputs(lightnessProgram_, flow, depth, shade, mask);
+    glBindTextureUnit(5, colormap_.id());  // the legend image, compiled out
+    glUniform2i(lightnessProgram_.uniform("uEnd"), flow.width(), flow.height());
+    lightness_.bindCleared();
+    PercentileRange::dispatchHistogram(flow.width(), flow.height());
+    lightness_.update();
+}
+
 void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                     const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
                     const DyeView* dye, const std::optional<PixelRect>& pixels) const {
@@ -102,17 +137,12 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
     if (r.empty()) return;
     if (dye && !dyeProgram_) dyeProgram_ = makeProgram(path_, params_, true);
     const gl::Program& prog = dye ? dyeProgram_ : program_;
-    prog.use();
-    // Per variant, some of these are compiled out (location -1: GL ignores the call).
-    glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
-    glUniform1f(prog.uniformIfActive("uContrast"), params_.contrast);
-    glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);
+    bindInputs(prog, flow, depth, shade, mask);
     if (params_.legend) glUniform2i(prog.uniform("uLegendOrigin"), legendOrigin_.x, legendOrigin_.y);
-    glBindTextureUnit(0, flow.id());
-    glBindTextureUnit(1, depth.id());
-    glBindTextureUnit(2, shade.id());
-    glBindTextureUnit(3, colormap_.id());
-    glBindTextureUnit(4, mask.id());
+    if (lightnessProgram_) {
+        const glm::vec2 l = lightness_.range();
+        glUniform2f(prog.uniform("uLightRange"), l.x, l.y);
+    }
     glBindTextureUnit(5, params_.legend ? legendSizes_[legendShown_].texture.id() : colormap_.id());
     if (dye) {
         glBindTextureUnit(kDyeIndexUnit, dye->index);

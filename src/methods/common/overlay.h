@@ -9,6 +9,7 @@
 #include "methods/common/dye.h"
 #include "methods/common/legend.h"
 #include "methods/common/params.h"
+#include "methods/common/percentile_range.h"
 #include "methods/common/screen_tiles.h"
 #include "methods/common/surface_gpu.h"
 
@@ -28,8 +29,18 @@ public:
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
                const DyeView* dye = nullptr, const std::optional<PixelRect>& pixels = std::nullopt) const;
+    // Contrast enhancement of the colour [issue 28]: the histogram of the surface colour's
+    // lightness with these inputs (apply's), whose smoothed percentiles the next apply
+    // stretches to [0, 1]. Nothing unless CommonParams::enhanceContrast includes colour.
+    // Cost: a pass as the overlay's without writing the image, a 2 KiB read-back.
+    void measureLightness(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
+                          const gl::Texture2D& mask) const;
+    bool stretchesColor() const { return bool(lightnessProgram_); }
 
 private:
+    void bindInputs(const gl::Program& prog, const gl::Texture2D& flow, const gl::Texture2D& depth,
+                    const gl::Texture2D& shade, const gl::Texture2D& mask) const;
+
     // Re-rasterises the legend when its range or title changed (auto ranges move), and
     // places it where it covers no surface pixel of `depth`, smaller if it must be.
     void updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth) const;
@@ -38,6 +49,8 @@ private:
     GlPath path_;
     gl::Program program_;               // without dye
     mutable gl::Program dyeProgram_;    // with dye, made when a frame first has some
+    gl::Program lightnessProgram_;      // contrast enhancement of the colour: its histogram
+    mutable PercentileRange lightness_;
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
     // The legend at each size tried (full, then smaller), rasterised when first needed.

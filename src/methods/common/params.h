@@ -70,6 +70,12 @@ enum class RangeMode { Robust, Data };
 // How colour values map onto the colour map: linearly, or by their log10 (positive ranges).
 enum class ColorScale { Linear, Log };
 
+// Contrast enhancement [issue 28 item 2], as ParaView's Surface LIC offers it: which images
+// are stretched between robust percentiles of the surface's pixels each frame
+// (methods/common/contrast_stretch.h). Texture: the flow texture's intensity (F_a or I)
+// before the overlay; Color: the lightness of the surface's colour after it; Both.
+enum class EnhanceContrast { Off, Texture, Color, Both };
+
 // Eq. 9 and 10, shared by every method.
 struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
@@ -85,7 +91,14 @@ struct CommonParams {
     // ParaView's Surface LIC: CFD wall fields span decades of magnitude.
     bool normalize = true;
     core::NoiseParams noise;     // scale s (px), period, profile, seed
-    float contrast = 2.5f;       // display gain of F_a about the noise mean (overlay only)
+    float contrast = 2.5f;       // display gain of F_a about the noise mean (overlay only; 1 when the texture is enhanced)
+    // Contrast enhancement [issue 28]: what is stretched, the percent of surface pixels
+    // clamped at each end of a stretch (0..25; ParaView's factors 0 / 0.99 ~ 0 and 1), and
+    // the frames over which the percentiles are smoothed (exponential, time constant
+    // 1..1000 frames; 1: each frame's own), so that an animation does not pulse.
+    EnhanceContrast enhanceContrast = EnhanceContrast::Off;
+    float enhancePercentile = 1.0f;
+    float enhanceSmoothing = 8.0f;
     OverlayScheme overlay = OverlayScheme::Blend;
     Colormap colormap = Colormap::Viridis;  // colour map of speed in F_s
     bool lighting = true;        // diffuse head light in F_s
@@ -165,6 +178,10 @@ struct HybridParams {
     float depthTolerance = 0.03f;     // particle vs visible layer, fraction of depth range
 };
 
+// Whether `e` stretches the flow texture / the colour's lightness.
+constexpr bool enhancesTexture(EnhanceContrast e) { return e == EnhanceContrast::Texture || e == EnhanceContrast::Both; }
+constexpr bool enhancesColor(EnhanceContrast e) { return e == EnhanceContrast::Color || e == EnhanceContrast::Both; }
+
 struct MethodParams {
     CommonParams common;
     IsaParams isa;
@@ -185,6 +202,10 @@ inline constexpr EnumNames<Colormap, 7> kColormapNames{{{Colormap::Viridis, "vir
                                                         {Colormap::Plasma, "plasma"},
                                                         {Colormap::None, "none"}}};
 inline constexpr EnumNames<ColorScale, 2> kColorScaleNames{{{ColorScale::Linear, "linear"}, {ColorScale::Log, "log"}}};
+inline constexpr EnumNames<EnhanceContrast, 4> kEnhanceContrastNames{{{EnhanceContrast::Off, "off"},
+                                                                        {EnhanceContrast::Texture, "texture"},
+                                                                        {EnhanceContrast::Color, "color"},
+                                                                        {EnhanceContrast::Both, "both"}}};
 inline constexpr EnumNames<OverlayScheme, 5> kOverlayNames{{{OverlayScheme::Blend, "blend"},
                                                             {OverlayScheme::Gray, "gray"},
                                                             {OverlayScheme::GrayLit, "gray-lit"},

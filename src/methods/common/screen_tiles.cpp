@@ -83,7 +83,7 @@ TileLayer TileLayer::ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z
 ScreenTiles::ScreenTiles(const core::Viewport& viewport) : viewport_(viewport) {}
 
 void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers,
-                             int guardPx) {
+                             int guardPx, const PixelRect& footprint) {
     const int n = group.size(), me = group.rank();
     const int w = viewport_.width, h = viewport_.height;
     rank_ = me;
@@ -96,13 +96,21 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
 
     // This piece's depth and its covered rectangle; the coverage per cell, summed.
     const PixelRect full{0, 0, w, h};
-    depth_.resize(full.area());
-    readRect(depth, full, pixelFormatOf(GL_DEPTH_COMPONENT32F), depth_.data());
+    const PixelRect fp = footprint.intersect(full);
+    depth_.assign(full.area(), 1.0f);
+    if (!fp.empty()) {  // read into the full-size array: rows of w pixels
+        const size_t at = size_t(fp.y0) * size_t(w) + size_t(fp.x0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glPixelStorei(GL_PACK_ROW_LENGTH, w);
+        glGetTextureSubImage(depth.id(), 0, fp.x0, fp.y0, 0, fp.width(), fp.height(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             GLsizei((depth_.size() - at) * sizeof(float)), &depth_[at]);
+        glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    }
     const int cellsX = (w + kCellPx - 1) / kCellPx, cellsY = (h + kCellPx - 1) / kCellPx;
     std::vector<float> weight(size_t(cellsX) * size_t(cellsY), 0.0f);
     PixelRect covered{w, h, 0, 0};
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
+    for (int y = fp.y0; y < fp.y1; ++y)
+        for (int x = fp.x0; x < fp.x1; ++x)
             if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) {
                 weight[size_t(y / kCellPx) * size_t(cellsX) + size_t(x / kCellPx)] += 1.0f;
                 covered = {std::min(covered.x0, x), std::min(covered.y0, y), std::max(covered.x1, x + 1),

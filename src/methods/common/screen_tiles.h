@@ -73,8 +73,10 @@ public:
     // (DEPTH32F) and the layers' `local` textures: splits the screen and fills every
     // layer's `tile` over this process's tile plus `guardPx` (region()) with the whole
     // surface's buffers there, merged by depth (zero off the surface). The depth layer, if
-    // one is wanted merged, is a layer like the others (its background 1).
-    void distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers, int guardPx);
+    // one is wanted merged, is a layer like the others (its background 1). `footprint`: where
+    // this piece can have drawn (SurfaceGBuffer::footprint); `depth` is 1 outside it.
+    void distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers, int guardPx,
+                    const PixelRect& footprint);
 
     // Collective, every frame after the image stage: `values` (R32F, full size) holds the
     // stage's result over this process's tile; afterwards it holds at every pixel that this

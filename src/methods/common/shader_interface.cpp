@@ -3,6 +3,7 @@
 #include "core/noise.h"
 #include "methods/common/dye.h"
 #include "methods/common/params.h"
+#include "methods/common/percentile_range.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/visibility_buffer.h"
 #include "methods/common/time_levels.h"
@@ -47,6 +48,11 @@ const std::string& shaderInterface() {
                                           {"VIS_RASTER_GROUP", kVisRasterGroup}})
             s += std::string("#define ") + name + " " + std::to_string(value) + "\n";
         s += "#define PIXEL_GROUP " + std::to_string(kPixelGroup) + "\n";
+        s += "#define HISTOGRAM_BINDING " + std::to_string(kHistogramBinding) + "\n";
+        s += "#define HISTOGRAM_BINS " + std::to_string(PercentileRange::kBins) + "\n";
+        s += "#define HISTOGRAM_TILE " + std::to_string(PercentileRange::kTilePx) + "\n";
+        s += "#define CONTRAST_FLOW_UNIT " + std::to_string(kContrastFlowUnit) + "\n";
+        s += "#define CONTRAST_DEPTH_UNIT " + std::to_string(kContrastDepthUnit) + "\n";
         s += "#define DYE_GROUP " + std::to_string(kDyeGroup) + "\n";
         s += "#define DYE_INDEX_UNIT " + std::to_string(kDyeIndexUnit) + "\n";
         s += "#define DYE_VALUE_BINDING " + std::to_string(kDyeValueBinding) + "\n";

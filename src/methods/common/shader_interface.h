@@ -19,6 +19,12 @@ const std::string& shaderInterface();
 // Work-group side of the per-pixel compute passes (PIXEL_GROUP in GLSL).
 inline constexpr int kPixelGroup = 8;
 
+// Contrast enhancement [issue 28]: the histogram's storage buffer binding and the texture
+// units of the stretch pass (HISTOGRAM_BINDING, CONTRAST_FLOW_UNIT, CONTRAST_DEPTH_UNIT).
+inline constexpr int kHistogramBinding = 8;  // SSBO, apart from the dye and visibility ones
+inline constexpr int kContrastFlowUnit = 0;
+inline constexpr int kContrastDepthUnit = 1;
+
 // A per-pixel compute pass over a width x height image with the bound program, then the
 // barrier that makes its image stores visible to what reads them next: textures, read-backs,
 // framebuffer draws.

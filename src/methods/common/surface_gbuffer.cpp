@@ -38,6 +38,7 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
     }
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     fbo_.finish(targets_);
+    lastFootprint_ = {0, 0, viewport.width, viewport.height};
 }
 
 glm::vec4 layerDepthRow(const core::Camera& camera) {
@@ -49,14 +50,29 @@ glm::vec4 layerDepthRow(const core::Camera& camera) {
     return row;
 }
 
-void SurfaceGBuffer::bindAndClear() {
+PixelRect SurfaceGBuffer::beginFootprint(const SurfaceGpu& surface, const glm::mat4& viewProj) {
+    footprint_ = projectedRect(surface.pieceBounds(), viewProj, viewport_.width, viewport_.height);
+    PixelRect clear = lastFootprint_;
+    if (clear.empty()) clear = footprint_;
+    else if (!footprint_.empty())
+        clear = {std::min(clear.x0, footprint_.x0), std::min(clear.y0, footprint_.y0), std::max(clear.x1, footprint_.x1),
+                 std::max(clear.y1, footprint_.y1)};
+    lastFootprint_ = footprint_;
+    return clear;
+}
+
+void SurfaceGBuffer::bindAndClear(const PixelRect& rect) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
+    if (rect.empty()) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x0, rect.y0, rect.width(), rect.height());
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
     if (clearBackground_)
         for (int i : {0, 3})  // velocity, position (surface_gbuffer.h)
             if (i < targets_) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
@@ -65,7 +81,7 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
         renderVisibility(surface, camera);
         return;
     }
-    bindAndClear();
+    bindAndClear(beginFootprint(surface, camera.projection(viewport_.aspect()) * camera.view()));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -96,8 +112,12 @@ void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Cam
         emptyVao_ = gl::VertexArray::create();
     }
     const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
-    visibility_->rasterize(surface, viewProj, cullBackFaces_);
-    bindAndClear();
+    const PixelRect clear = beginFootprint(surface, viewProj);
+    visibility_->rasterize(surface, viewProj, cullBackFaces_, clear);
+    bindAndClear(clear);
+    if (footprint_.empty()) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(footprint_.x0, footprint_.y0, footprint_.width(), footprint_.height());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDisable(GL_BLEND);
@@ -111,9 +131,11 @@ void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Cam
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void SurfaceGBuffer::merge(ProcessGroup& group) {
+    footprint_ = lastFootprint_ = PixelRect{0, 0, viewport_.width, viewport_.height};  // every pixel may hold a fragment now
     if (position_) mergeByDepth(group, depth_, {&velocity_, &shade_, &mask_, &position_});
     else mergeByDepth(group, depth_, {&velocity_, &shade_, &mask_});
 }

@@ -3,12 +3,15 @@
 // Outputs: velocity RGBA32F (P-space, w = 1 on the surface; linear filtering, the D-space
 // velocity texture of [W eq. 3]), shade RGBA16F (eye normal, colour value), mask R16F
 // (texture mask value), depth DEPTH32F,
-// and with `withPosition` the P-space position RGBA32F. Cost grows with the triangles N.
+// and with `withPosition` the P-space position RGBA32F. Cost grows with the triangles N;
+// the per-pixel work (clears, the visibility buffer's resolve) covers the surface's
+// projected rectangle only (footprint), and the last frame's, for what it left there.
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/common/process_group.h"
+#include "methods/common/screen_split.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/common/visibility_buffer.h"
 
@@ -38,6 +41,9 @@ public:
     void render(const SurfaceGpu& surface, const core::Camera& camera);
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
+    // The pixels the last render can have drawn (its surface's projected bounds); outside
+    // it every buffer holds the background (depth 1). The whole image after a merge.
+    const PixelRect& footprint() const { return footprint_; }
 
     const gl::Texture2D& velocity() const { return velocity_; }
     const gl::Texture2D& shade() const { return shade_; }
@@ -47,7 +53,10 @@ public:
 
 private:
     void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera);
-    void bindAndClear();  // binds the framebuffer; clears depth and what `clearBackground` says
+    // Binds the framebuffer; clears depth and what `clearBackground` says over `rect`.
+    void bindAndClear(const PixelRect& rect);
+    // This render's footprint, and what must be cleared: it and the last one's.
+    PixelRect beginFootprint(const SurfaceGpu& surface, const glm::mat4& viewProj);
 
     core::Viewport viewport_;
     gl::Texture2D velocity_, shade_, mask_, depth_, position_;
@@ -61,6 +70,7 @@ private:
     int targets_;
     bool cullBackFaces_;
     bool clearBackground_;
+    PixelRect footprint_, lastFootprint_;  // lastFootprint_: the whole image until the first render
 };
 
 }  // namespace flowsurf::methods

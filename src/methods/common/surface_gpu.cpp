@@ -28,8 +28,9 @@ std::string selectField(const core::SurfaceMesh& mesh, const std::string& reques
 }
 
 namespace {
-// Per edge: (v0, v1, opposite in the triangle with v0->v1, opposite in the other one).
-std::vector<uint32_t> edgeAdjacency(const std::vector<glm::uvec3>& triangles) {
+// Per edge: (v0, v1, opposite in the triangle with v0->v1, opposite in the other one);
+// the one-sided edges listed in `seams` (sorted) left out.
+std::vector<uint32_t> edgeAdjacency(const std::vector<glm::uvec3>& triangles, const std::vector<uint64_t>& seams) {
     std::unordered_map<uint64_t, size_t> slot;  // undirected edge -> index into out/4
     slot.reserve(triangles.size() * 2);
     std::vector<uint32_t> out;
@@ -42,7 +43,15 @@ std::vector<uint32_t> edgeAdjacency(const std::vector<glm::uvec3>& triangles) {
             if (fresh) out.insert(out.end(), {a, b, c, c});  // boundary until a second side shows up
             else out[it->second * 4 + 3] = c;               // manifold: the other side
         }
-    return out;
+    if (seams.empty()) return out;
+    std::vector<uint32_t> kept;
+    kept.reserve(out.size());
+    for (size_t e = 0; e < out.size(); e += 4) {
+        const uint64_t key = (uint64_t(std::min(out[e], out[e + 1])) << 32) | std::max(out[e], out[e + 1]);
+        if (out[e + 2] == out[e + 3] && std::binary_search(seams.begin(), seams.end(), key)) continue;
+        kept.insert(kept.end(), out.begin() + long(e), out.begin() + long(e) + 4);
+    }
+    return kept;
 }
 
 // The p-th percentile (0..100) of the non-zero values; 0 if none.
@@ -278,7 +287,7 @@ bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string
 }
 
 SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params,
-                       bool withEdges, const SurfaceStatistics* whole) {
+                       bool withEdges, const SurfaceStatistics* whole, const PieceSeams* seams) {
     std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
     triangles_ = mesh.triangleCount();
     wholeTriangles_ = whole && whole->triangles ? whole->triangles : triangles_;
@@ -306,7 +315,7 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
         glVertexArrayAttribBinding(vao, a, 0);
     }
     if (withEdges) {
-        std::vector<uint32_t> edges = edgeAdjacency(mesh.triangles);
+        std::vector<uint32_t> edges = edgeAdjacency(mesh.triangles, seams ? seams->edges : std::vector<uint64_t>{});
         edgeCount_ = edges.size() / 4;
         edgeIndices_ = gl::Buffer(GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), 0);
         edgeVao_ = gl::VertexArray::create();
@@ -315,14 +324,28 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
         glEnableVertexArrayAttrib(edgeVao_.id(), 0);
         glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(edgeVao_.id(), 0, 0);
+        if (seams && !seams->drawn.empty()) {
+            seamCount_ = seams->drawn.size();
+            seamPositions_ = gl::Buffer(GLsizeiptr(seamCount_ * sizeof(AdjacentEdge)), seams->drawn.data(), 0);
+            seamVao_ = gl::VertexArray::create();
+            glVertexArrayVertexBuffer(seamVao_.id(), 0, seamPositions_.id(), 0, sizeof(glm::vec3));
+            glEnableVertexArrayAttrib(seamVao_.id(), 0);
+            glVertexArrayAttribFormat(seamVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+            glVertexArrayAttribBinding(seamVao_.id(), 0, 0);
+        }
     }
     generation_ = nextGeneration++;
 }
 
 void SurfaceGpu::drawEdgesAdjacency() const {
-    if (!edgeCount_) return;
-    glBindVertexArray(edgeVao_.id());
-    glDrawElements(GL_LINES_ADJACENCY, GLsizei(edgeCount_ * 4), GL_UNSIGNED_INT, nullptr);
+    if (edgeCount_) {
+        glBindVertexArray(edgeVao_.id());
+        glDrawElements(GL_LINES_ADJACENCY, GLsizei(edgeCount_ * 4), GL_UNSIGNED_INT, nullptr);
+    }
+    if (seamCount_) {  // a piece's seams, the other side's vertex beside it (piece_seams.h)
+        glBindVertexArray(seamVao_.id());
+        glDrawArrays(GL_LINES_ADJACENCY, 0, GLsizei(seamCount_ * 4));
+    }
 }
 
 void SurfaceGpu::draw() const {

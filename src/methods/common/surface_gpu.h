@@ -6,6 +6,7 @@
 #include "core/value_range.h"
 #include "gl/objects.h"
 #include "methods/common/params.h"
+#include "methods/common/piece_seams.h"
 #include "methods/common/process_group.h"
 
 #include <string>
@@ -76,9 +77,10 @@ public:
     // Uploads `mesh` with the vector field `fieldName` made tangential, scaled for
     // advection as `params` say (speedPercentile, normalize). Throws FieldError.
     // `withEdges`: also build the edge adjacency the IBFVS edge mask draws. `whole`: the
-    // statistics to scale by when `mesh` is one piece of a larger surface (null: its own).
+    // statistics to scale by when `mesh` is one piece of a larger surface (null: its own);
+    // `seams`: then its seams (piece_seams.h), drawn as interior edges, not as boundaries.
     SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params = {},
-               bool withEdges = false, const SurfaceStatistics* whole = nullptr);
+               bool withEdges = false, const SurfaceStatistics* whole = nullptr, const PieceSeams* seams = nullptr);
 
     // A new time step of the same topology (interpolated positions and vectors): rewrites
     // the vertex buffer in place, keeping triangles and edge adjacency. False (nothing
@@ -94,7 +96,7 @@ public:
     // Draws every edge as GL_LINES_ADJACENCY (v0, v1, opposite vertex of the triangle
     // on each side; boundary edges repeat the one opposite vertex). Needs withEdges.
     void drawEdgesAdjacency() const;
-    bool hasEdges() const { return edgeCount_ > 0; }
+    bool hasEdges() const { return edgeCount_ + seamCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
     // The interleaved vertices (kVertexFloats floats: position, normal, velocity, colour
     // value and mask value, both mapped to 0..1 by their ranges, NaN where undefined, and
@@ -145,9 +147,9 @@ private:
 
     gl::Buffer vertices_, indices_;
     gl::BufferTexture vertexTexture_, triangleTexture_;
-    gl::VertexArray vao_, edgeVao_;
-    gl::Buffer edgeIndices_;
-    size_t edgeCount_ = 0;
+    gl::VertexArray vao_, edgeVao_, seamVao_;
+    gl::Buffer edgeIndices_, seamPositions_;
+    size_t edgeCount_ = 0, seamCount_ = 0;
     size_t triangles_ = 0;
     size_t wholeTriangles_ = 0;
     float maxSpeed_ = 0.0f;

@@ -74,14 +74,19 @@ void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIdBinding, ids_.id());
 }
 
-void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces) {
+void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces,
+                                 const PixelRect& clear) {
     const size_t triangles = surface.triangleCount();
     ensureCapacity(triangles);
     // The second pass over the covering triangles only, when every triangle's id fits.
     const bool compacted = triangles <= coveringCapacity_;
     const uint32_t none = kNone;
-    glClearNamedBufferData(depth_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-    glClearNamedBufferData(ids_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    if (!clear.empty()) {  // pixels row by row from the bottom: the clear's rows are one range
+        const GLintptr from = GLintptr(clear.y0) * viewport_.width * GLintptr(sizeof(uint32_t));
+        const GLsizeiptr bytes = GLsizeiptr(clear.height()) * viewport_.width * GLsizeiptr(sizeof(uint32_t));
+        glClearNamedBufferSubData(depth_.id(), GL_R32UI, from, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+        glClearNamedBufferSubData(ids_.id(), GL_R32UI, from, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    }
     const std::array<uint32_t, kIndirectWords> command{0, 1, 0, 0, 0, 0, 0, 0, 0, 1};  // see kIndirectWords
     glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
     bind(surface);

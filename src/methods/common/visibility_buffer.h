@@ -15,6 +15,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/screen_split.h"
 #include "methods/common/surface_gpu.h"
 
 #include <glm/mat4x4.hpp>
@@ -44,7 +45,9 @@ public:
     explicit VisibilityBuffer(const core::Viewport& viewport);
     // Fills the visibility buffer with `surface` seen through `viewProj`; `cullBackFaces`
     // skips triangles that turn clockwise in the window (as GL_CULL_FACE with CCW front).
-    void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces);
+    // `clear`: the pixels whose depth and id are reset first (where the last and this
+    // surface can be; elsewhere they hold none already). Its rows are cleared whole.
+    void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces, const PixelRect& clear);
     // Binds the vertex and triangle textures and the depth and id buffers for a resolve pass.
     void bind(const SurfaceGpu& surface) const;
 

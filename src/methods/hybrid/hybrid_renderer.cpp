@@ -17,6 +17,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       noise_(params.hybrid.noiseSize),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
       overlay_(params.common),
+      contrast_(params.common, viewport),
       lic_(GL_R32F, viewport),
       composite_(GL_RGBA8, viewport) {}
 
@@ -30,6 +31,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
     const bool tiled = tiledParallel(in, c);
+    checkContrastParallel(in, c);
     if (unsteady && in.group && !tiled)
         throw ConfigError("the hybrid method's unsteady time levels are merged over processes in the tiled mode only: "
                           "set parallel to tiles (FlowSurfParallel), or render each time step as steady");
@@ -65,7 +67,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
             for (int j = 0; j < levels_.count(); ++j)
                 layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
         }
-        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx());
+        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
     }
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
@@ -104,9 +106,17 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         tiles_->returnValues(*in.group, lic_.texture());
     }
 
+    // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
+    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    shown_ = &contrast_.apply(lic_.texture(), seeds_.depth());
+    if (overlay_.stretchesColor()) {
+        timer_.begin("contrast (colour)");
+        overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
+    }
+
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(lic_.texture(), seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
+    overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
 }

@@ -4,6 +4,7 @@
 // camera moves and has no inflow at silhouettes.
 #pragma once
 
+#include "methods/common/contrast_stretch.h"
 #include "methods/common/frame.h"
 #include "methods/common/overlay.h"
 #include "methods/common/render_targets.h"
@@ -22,7 +23,7 @@ public:
     HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return nameOf(kMethodNames, Method::Hybrid).data(); }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return lic_.texture(); }
+    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : lic_.texture(); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
@@ -41,7 +42,9 @@ private:
     SolidNoise noise_;
     ParticleTracing tracing_;
     Overlay overlay_;
+    ContrastStretch contrast_;
     ColorTarget lic_;              // I, R32F
+    const gl::Texture2D* shown_ = nullptr;  // I, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     bool haveSeeds_ = false, lastDynamic_ = false;
     uint64_t seedGeneration_ = 0;

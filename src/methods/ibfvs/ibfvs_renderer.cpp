@@ -13,6 +13,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       polygonAdvection_(viewport, params.common,
                         {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       overlay_(params.common),
+      contrast_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport, {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
@@ -22,6 +23,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     timer_.beginFrame();
     if (tiledParallel(in, params_.common) && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (tiles_) tiles_->beginFrame();
+    checkContrastParallel(in, c);
     // Static and dynamic cases run the same stages [L Table II: IBFVS cost ~ N in both].
     lastDynamic_ = in.surface->generation() != lastGeneration_ || !core::sameCamera(in.camera, lastCamera_);
     lastGeneration_ = in.surface->generation();
@@ -65,15 +67,24 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
         timer_.begin("tile exchange");
         const gl::Texture2D& fa = flow_.texture(target);
         const TileLayer layers[] = {TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
-        tiles_->distribute(*in.group, depth_, layers, 0);
+        tiles_->distribute(*in.group, depth_, layers, 0, {0, 0, viewport_.width, viewport_.height});
         madeWith_[target] = tiles_->tiles();
     } else if (in.group) {
         mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
     }
 
+    // (3b) contrast enhancement, display only: F_a stretched between its robust
+    // percentiles [issue 28]; the advection goes on from F_a itself
+    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    shown_ = &contrast_.apply(flow_.texture(current_), depth_);
+    if (overlay_.stretchesColor()) {
+        timer_.begin("contrast (colour)");
+        overlay_.measureLightness(*shown_, depth_, shade_, mask_);
+    }
+
     // (4) overlay [L eq. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
+    overlay_.apply(*shown_, depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]

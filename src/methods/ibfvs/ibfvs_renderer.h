@@ -3,6 +3,7 @@
 #pragma once
 
 #include "methods/common/camera_motion.h"
+#include "methods/common/contrast_stretch.h"
 #include "methods/common/frame.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
@@ -21,7 +22,8 @@ public:
     IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return nameOf(kMethodNames, Method::Ibfvs).data(); }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
+    // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
+    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     const gl::Texture2D& surfaceShade() const override { return shade_; }
@@ -34,9 +36,11 @@ private:
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     PolygonAdvection polygonAdvection_;
     Overlay overlay_;
+    ContrastStretch contrast_;
     EdgeMask edgeMask_;
     CameraMotion motion_;
     FlowPingPong flow_;            // F_a, R32F (+ shade + mask + depth: the advection draw)
+    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     int current_ = 0, source_ = 0;
     uint64_t lastGeneration_ = 0;

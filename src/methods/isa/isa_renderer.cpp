@@ -19,6 +19,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),
       overlay_(params.common),
+      contrast_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport),
       composite_(GL_RGBA8, viewport) {}
@@ -44,6 +45,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);
     const bool tiled = tiledParallel(in, c);
+    checkContrastParallel(in, c);
     // The depth of the whole surface per velocity image: merged (tiles) or this render's.
     const auto depthOf = [&](int v) -> const gl::Texture2D& {
         return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
@@ -69,7 +71,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         }
         const SurfaceGBuffer& v = velocityImage_[vi_];
         const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
-        tiles_->distribute(*in.group, v.depth(), layers, guardPx());
+        tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
         depthMadeWith_[vi_] = tiles_->tiles();
     };
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
@@ -144,9 +146,18 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
         tiles_->returnValues(*in.group, flow_.texture(target));
     }
 
+    // (4b) contrast enhancement, display only: F_a stretched between its robust
+    // percentiles [issue 28]; the advection goes on from F_a itself
+    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    shown_ = &contrast_.apply(flow_.texture(current_), vel.depth());
+    if (overlay_.stretchesColor()) {
+        timer_.begin("contrast (colour)");
+        overlay_.measureLightness(*shown_, vel.depth(), vel.shade(), vel.mask());
+    }
+
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     timer_.begin("overlay");
-    overlay_.apply(flow_.texture(current_), vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
+    overlay_.apply(*shown_, vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
 }

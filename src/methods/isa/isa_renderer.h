@@ -2,6 +2,7 @@
 #pragma once
 
 #include "methods/common/camera_motion.h"
+#include "methods/common/contrast_stretch.h"
 #include "methods/common/frame.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/overlay.h"
@@ -21,7 +22,8 @@ public:
     IsaRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return nameOf(kMethodNames, Method::Isa).data(); }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return flow_.texture(current_); }
+    // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
+    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     const gl::Texture2D& surfaceShade() const override { return velocityImage_[vi_].shade(); }
@@ -42,8 +44,10 @@ private:
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
     Overlay overlay_;
+    ContrastStretch contrast_;
     CameraMotion motion_;
     FlowPingPong flow_;           // F_a, R32F
+    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;       // RGBA8
     int current_ = 0, source_ = 0;
     // What the cached velocity image and advection mesh were made for (static case).

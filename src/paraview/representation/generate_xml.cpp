@@ -1,8 +1,8 @@
 // flowsurf — writes the FlowSurf representation's server-manager XML (ParaView 5.11) to
-// stdout, one property per row of the option table that a ParaView user sets: the Method,
-// Overlay and Dye groups and the warm-up, named "FlowSurf" + the option in CamelCase (--filter-length ->
-// FlowSurfFilterLength). colormap, lighting and background are ParaView's own (Coloring,
-// the light kit, the view's background) and are left out. Run at configure time.
+// stdout, one property per row of the option table that a ParaView user sets
+// (session::paraviewProperty: the Method, Overlay and Dye groups and the warm-up, named
+// "FlowSurf" + the option in CamelCase, --filter-length -> FlowSurfFilterLength; colormap,
+// lighting and background are ParaView's own). Run at configure time.
 #include "session/options/options.h"
 
 #include <climits>
@@ -13,17 +13,6 @@ using flowsurf::session::OptionKind;
 using flowsurf::session::OptionSpec;
 
 namespace {
-
-std::string camel(const std::string& dashed) {
-    std::string out = "FlowSurf";
-    bool up = true;
-    for (char c : dashed) {
-        if (c == '-') { up = true; continue; }
-        out += up ? char(std::toupper(static_cast<unsigned char>(c))) : c;
-        up = false;
-    }
-    return out;
-}
 
 std::string escape(const std::string& s) {
     std::string out;
@@ -37,15 +26,8 @@ std::string escape(const std::string& s) {
     return out;
 }
 
-bool exposed(const OptionSpec& s) {
-    // The method's options, the dye (sources as --dye's text: x,y,z:radius:colour;...), and
-    // the warm-up that the mapper's frame loop runs.
-    if (s.group != "Method" && s.group != "Overlay" && s.group != "Dye" && s.name != "warmup") return false;
-    return s.name != "colormap" && s.name != "lighting" && s.name != "background";
-}
-
 void property(const OptionSpec& s, std::ostream& o) {
-    const std::string name = camel(s.name), def = flowsurf::session::defaultText(s);
+    const std::string name = flowsurf::session::paraviewProperty(s), def = flowsurf::session::defaultText(s);
     const std::string doc = "      <Documentation>" + escape(s.help) + " (--" + s.name + ", default " +
                             escape(def) + ")</Documentation>\n";
     auto head = [&](const char* type, const char* command, const std::string& value) {
@@ -112,9 +94,9 @@ int main() {
       << "        <Documentation>Point array of 3-component vectors to show (--field).</Documentation>\n"
       << "      </StringVectorProperty>\n";
     for (const OptionSpec& s : flowsurf::session::renderOptionTable()) {
-        if (!exposed(s)) continue;
+        if (flowsurf::session::paraviewProperty(s).empty()) continue;
         property(s, o);
-        names += "            <Property name=\"" + camel(s.name) + "\"/>\n";
+        names += "            <Property name=\"" + flowsurf::session::paraviewProperty(s) + "\"/>\n";
     }
     o << "    </RepresentationProxy>\n";
     extension("GeometryRepresentation", names, o);

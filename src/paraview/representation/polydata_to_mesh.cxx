@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCompositeDataIterator.h"
@@ -144,6 +145,24 @@ core::SurfaceMesh toSurfaceMesh(vtkDataObject* data, const std::string& vectors,
     mesh.normals = core::computeVertexNormals(mesh.positions, mesh.triangles);
   }
   return mesh;
+}
+
+core::Camera cameraOf(vtkCamera* c)
+{
+  core::Camera cam;
+  double p[3], f[3], u[3], range[2];
+  c->GetPosition(p);
+  c->GetFocalPoint(f);
+  c->GetViewUp(u);
+  c->GetClippingRange(range);
+  cam.eye = glm::vec3(p[0], p[1], p[2]);
+  cam.target = glm::vec3(f[0], f[1], f[2]);
+  cam.up = glm::vec3(u[0], u[1], u[2]);
+  cam.fovDeg = float(c->GetViewAngle());
+  cam.orthoHeight = c->GetParallelProjection() ? float(2.0 * c->GetParallelScale()) : 0.0f;
+  cam.nearPlane = float(range[0]);
+  cam.farPlane = float(range[1]);
+  return cam;
 }
 
 }  // namespace flowsurf::paraview

@@ -1,10 +1,12 @@
 // Index: Internals (state) · options · render: (0) ParaView's surface pass, unless its look
-// is reproduced (host_look.h) (1) surface (2) the frame loop (session::Playback) (3)
-// advection frames (4) composite into ParaView's framebuffer.
+// is reproduced (host_look.h) (1) surface (updateSurface) (2) the frame loop
+// (session::Playback, updatePlayback) (3) advection frames (4) composite into ParaView's
+// framebuffer (mapper_composite.h).
 #include "vtkFlowSurfMapper.h"
 
 #include "gl_state_guard.h"
 #include "host_look.h"
+#include "mapper_composite.h"
 #include "polydata_to_mesh.h"
 #include "rank_stats.h"
 #include "vtk_process_group.h"
@@ -16,6 +18,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
+#include "vtkInformation.h"
 #include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -23,35 +26,21 @@
 
 #include <epoxy/gl.h>
 
-#include <cmath>
-#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace fs = flowsurf;
 
-namespace {
-
-// ParaView's piece of the surface as the one step session::Playback reads.
-class PieceSteps final : public fs::core::StepProvider
-{
-public:
-  fs::core::SurfaceMesh mesh;
-  size_t count() const override { return 1; }
-  double time(size_t) const override { return 0.0; }
-  fs::core::SurfaceMesh load(size_t) override { return mesh; }
-  std::string label(size_t) const override { return "FlowSurf input"; }
-  fs::core::Bounds bounds() override { return mesh.bounds(); }
-};
-
-}  // namespace
+using flowsurf::paraview::cameraOf;
+using flowsurf::paraview::PieceSteps;
 
 struct vtkFlowSurfMapper::Internals
 {
   fs::session::RenderOptions options;
   std::string vectors;
   double viewTime = 0.0;
+  std::optional<double> pieceTime;  // the data time of this piece (SetPieceTime)
 
   vtkMTimeType dataTime = 0;
   std::string dataVectors;
@@ -68,10 +57,7 @@ struct vtkFlowSurfMapper::Internals
   std::unique_ptr<fs::paraview::VtkProcessGroup> group;
   bool groupChecked = false;
 
-  fs::gl::Program composite, compositeHost;
-  fs::gl::VertexArray emptyVao;
-  fs::gl::Texture2D hostTable;  // the lookup table's 256 colours, RGBA8
-  std::vector<glm::vec3> hostTableColors;  // what hostTable holds: uploaded when it changes
+  fs::paraview::MapperComposite composite;
   bool glChecked = false;
 
   // ParaView's look of the surface when the composite reproduces it (one surface pass per
@@ -83,11 +69,7 @@ struct vtkFlowSurfMapper::Internals
   void releaseGl()
   {
     playback.reset();
-    composite = {};
-    compositeHost = {};
-    emptyVao = {};
-    hostTable = {};
-    hostTableColors.clear();
+    composite.release();
   }
 
   // The options the frame loop runs with: with the blend overlay F_s is ParaView's
@@ -117,10 +99,15 @@ struct vtkFlowSurfMapper::Internals
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
+  void checkGl();  // OpenGL 4.5 on every process (once)
+  // (1) The piece converted when the data, the array or the colour array changed (on any
+  // process); true then. Throws the group's first error.
+  bool updateSurface(vtkDataObject* input);
+  // (2) The frame loop for `size` (new, rebuilt or updated); true when it needs its warm-up.
+  bool updatePlayback(const fs::core::Viewport& size, bool dataChanged, bool timeChanged);
   // `error`, or in parallel the first process's error on every process (collective: every
   // process calls it at the same point, with or without an error of its own).
   std::string agreed(const std::string& error) { return group ? group->agree(error) : error; }
-  void drawComposite(const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h);
 };
 
 vtkStandardNewMacro(vtkFlowSurfMapper);
@@ -162,6 +149,11 @@ std::string vtkFlowSurfMapper::SetOption(const std::string& name, const std::str
 void vtkFlowSurfMapper::SetViewTime(double time)
 {
   this->Impl->viewTime = time;
+}
+
+void vtkFlowSurfMapper::SetPieceTime(bool has, double time)
+{
+  this->Impl->pieceTime = has ? std::optional<double>(time) : std::nullopt;
 }
 
 void vtkFlowSurfMapper::ReleaseGraphicsResources(vtkWindow* win)
@@ -219,63 +211,29 @@ void vtkFlowSurfMapper::Render(vtkRenderer* ren, vtkActor* act)
   }
 }
 
-namespace {
 
-fs::core::Camera cameraOf(vtkCamera* c)
+void vtkFlowSurfMapper::Internals::checkGl()
 {
-  fs::core::Camera cam;
-  double p[3], f[3], u[3], range[2];
-  c->GetPosition(p);
-  c->GetFocalPoint(f);
-  c->GetViewUp(u);
-  c->GetClippingRange(range);
-  cam.eye = glm::vec3(p[0], p[1], p[2]);
-  cam.target = glm::vec3(f[0], f[1], f[2]);
-  cam.up = glm::vec3(u[0], u[1], u[2]);
-  cam.fovDeg = float(c->GetViewAngle());
-  cam.orthoHeight = c->GetParallelProjection() ? float(2.0 * c->GetParallelScale()) : 0.0f;
-  cam.nearPlane = float(range[0]);
-  cam.farPlane = float(range[1]);
-  return cam;
-}
-
-}  // namespace
-
-void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
-{
-  // Every step that can fail on one process alone is followed by an agreement, so that all
-  // report the same error and none is left waiting in a collective step (agreed).
-  if (!glChecked)
-  {
-    std::string error;
-    if (epoxy_gl_version() < 45)
-    {
-      error = "FlowSurf needs OpenGL 4.5; ParaView's context is " +
-        std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-    }
-    error = agreed(error);
-    if (!error.empty())
-    {
-      throw fs::GlError(error);
-    }
-    glChecked = true;
-  }
-  if (!input && !group)
-  {
-    return;  // in parallel an empty piece still takes part
-  }
-  int w = 0, h = 0, x0 = 0, y0 = 0;
-  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
-  if (w < 1 || h < 1)
+  if (glChecked)
   {
     return;
   }
-  const fs::core::Camera camera = cameraOf(ren->GetActiveCamera());
+  std::string error;
+  if (epoxy_gl_version() < 45)
+  {
+    error = "FlowSurf needs OpenGL 4.5; ParaView's context is " +
+      std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+  }
+  error = agreed(error);
+  if (!error.empty())
+  {
+    throw fs::GlError(error);
+  }
+  glChecked = true;
+}
 
-  fs::paraview::GlStateGuard guard(win->GetState());
-
-  // (1) the surface, converted when the data, the array or the colour array change; in
-  // parallel each process holds a piece and scales by the whole surface's statistics
+bool vtkFlowSurfMapper::Internals::updateSurface(vtkDataObject* input)
+{
   std::optional<fs::paraview::ColorSource> color;
   if (host && host->scalars)
   {
@@ -288,52 +246,54 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   {
     dataChanged = group->any(dataChanged);
   }
-  if (dataChanged)
+  if (!dataChanged)
   {
-    std::string error;
-    fs::core::SurfaceMesh mesh;
-    try
-    {
-      mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr) : fs::core::SurfaceMesh{};
-      if (mesh.fields.empty())
-      {
-        mesh.fields.push_back({ vectors, {} });  // an empty piece
-      }
-      if (color && mesh.scalars.empty())
-      {
-        mesh.scalars.push_back({ fs::paraview::kColorScalarName, {} });
-      }
-      if (mesh.triangleCount() > 0)
-      {
-        fs::core::validateMesh(mesh, "FlowSurf input");
-      }
-    }
-    catch (const std::exception& e)
-    {
-      error = e.what();
-    }
-    error = agreed(error);
-    if (!error.empty())
-    {
-      playback.reset();
-      haveMesh = false;
-      throw fs::FieldError(error);
-    }
-    steps.mesh = std::move(mesh);
-    haveMesh = input != nullptr;
-    dataTime = input ? input->GetMTime() : 0;
-    dataVectors = vectors;
-    dataColor = color;
+    return false;
   }
-  if (steps.mesh.triangleCount() == 0 && !group)
+  std::string error;
+  fs::core::SurfaceMesh mesh;
+  try
   {
-    return;
+    mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr) : fs::core::SurfaceMesh{};
+    if (mesh.fields.empty())
+    {
+      mesh.fields.push_back({ vectors, {} });  // an empty piece
+    }
+    if (color && mesh.scalars.empty())
+    {
+      mesh.scalars.push_back({ fs::paraview::kColorScalarName, {} });
+    }
+    if (mesh.triangleCount() > 0)
+    {
+      fs::core::validateMesh(mesh, "FlowSurf input");
+    }
   }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+  }
+  error = agreed(error);
+  if (group && error.empty())  // the same on every process: a collective step for all
+  {
+    error = group->sameValue(input && pieceTime, pieceTime.value_or(0.0), "the pieces' data times");
+  }
+  if (!error.empty())
+  {
+    playback.reset();
+    haveMesh = false;
+    throw fs::FieldError(error);
+  }
+  steps.mesh = std::move(mesh);
+  haveMesh = input != nullptr;
+  dataTime = input ? input->GetMTime() : 0;
+  dataVectors = vectors;
+  dataColor = color;
+  return true;
+}
 
-  // (2) the frame loop: new renderers when options, the colour array or the view size
-  // change (the table's effects), a new upload when only the data changed at a new view time
-  const bool timeChanged = lastTime && *lastTime != viewTime;
-  const fs::session::RenderOptions o = playbackOptions({ w, h });
+bool vtkFlowSurfMapper::Internals::updatePlayback(const fs::core::Viewport& size, bool dataChanged, bool timeChanged)
+{
+  const fs::session::RenderOptions o = playbackOptions(size);
   bool warmup = false;
   std::string error;
   try
@@ -364,11 +324,51 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     playback.reset();
     throw fs::Error(error);
   }
+  return warmup;
+}
+
+void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
+{
+  // Every step that can fail on one process alone is followed by an agreement, so that all
+  // report the same error and none is left waiting in a collective step (agreed).
+  checkGl();
+  if (!input && !group)
+  {
+    return;  // in parallel an empty piece still takes part
+  }
+  int w = 0, h = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  if (w < 1 || h < 1)
+  {
+    return;
+  }
+  const fs::core::Camera camera = cameraOf(ren->GetActiveCamera());
+
+  fs::paraview::GlStateGuard guard(win->GetState());
+
+  // (1) the surface, converted when the data, the array or the colour array change; in
+  // parallel each process holds a piece and scales by the whole surface's statistics
+  const bool dataChanged = updateSurface(input);
+  if (steps.mesh.triangleCount() == 0 && !group)
+  {
+    return;
+  }
+
+  // (2) the frame loop: new renderers when options, the colour array or the view size
+  // change (the table's effects), a new upload when only the data changed at a new view time
+  // (decided for the group: each frame is collective)
+  bool timeChanged = lastTime && *lastTime != viewTime;
+  bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
+  if (group)
+  {
+    timeChanged = group->any(timeChanged);
+    cameraChanged = group->any(cameraChanged);
+  }
+  const bool warmup = updatePlayback({ w, h }, dataChanged, timeChanged);
 
   // (3) advection frames: a still render of something new converges (the warm-up, then
   // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
   // otherwise the last image. The clock is the command line's (session/playback.h).
-  const bool cameraChanged = !fs::core::sameCamera(camera, lastCamera);
   const bool frames = warmup || timeChanged || cameraChanged;
   if (stats && frames)
   {
@@ -390,97 +390,9 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   lastTime = viewTime;
   lastCamera = camera;
 
-  // (4) composite into ParaView's framebuffer by depth
-  drawComposite(guard, x0, y0, w, h);
-}
-
-void vtkFlowSurfMapper::Internals::drawComposite(
-  const fs::paraview::GlStateGuard& guard, int x0, int y0, int w, int h)
-{
-  const bool blend = options.params.common.overlay == fs::methods::OverlayScheme::Blend;
-  if (emptyVao.id() == 0)
-  {
-    emptyVao = fs::gl::VertexArray::create();
-  }
-  fs::gl::Program& program = host ? compositeHost : composite;
-  if (!program)
-  {
-    program = fs::gl::Program(
-      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } },
-      host ? "#define HOST_LOOK 1\n#define MAX_LIGHTS " + std::to_string(fs::paraview::kMaxHostLights) + "\n"
-           : std::string());
-  }
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, guard.drawFramebuffer());
-  glViewport(x0, y0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  // Without ParaView's pass the surface's depth is ours to write, for what is drawn after.
-  glDepthMask(host ? GL_TRUE : GL_FALSE);
-  if (blend && !host)
-  {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_DST_COLOR, GL_ZERO);  // ParaView's colour x the method's image
-  }
-  else
-  {
-    glDisable(GL_BLEND);
-  }
-  // Only where this piece can be: in parallel each process draws its own fragments.
+  // (4) composite into ParaView's framebuffer by depth, only where this piece can be
   const fs::methods::PixelRect piece = fs::methods::projectedRect(
     steps.mesh.bounds(), lastCamera.viewProjection(float(w) / float(h)), w, h);
-  if (piece.empty())
-  {
-    return;
-  }
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(x0 + piece.x0, y0 + piece.y0, piece.width(), piece.height());
-  program.use();
-  glUniform2i(program.uniform("uOrigin"), x0, y0);
-  glUniform1f(program.uniform("uDepthBias"), 2e-5f);
-  const fs::methods::FlowMethod& method = playback->view(0);
-  glBindTextureUnit(0, method.composite().id());
-  glBindTextureUnit(1, method.surfaceDepth().id());
-  if (host)
-  {
-    const fs::paraview::HostLook& look = *host;
-    if (!hostTable || look.table != hostTableColors)
-    {
-      if (!hostTable)
-      {
-        hostTable = fs::gl::Texture2D(GL_RGBA8, 256, 1, GL_LINEAR);
-      }
-      std::vector<unsigned char> rgba(256 * 4, 255);
-      for (size_t i = 0; i < look.table.size() && i < 256; ++i)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          rgba[i * 4 + size_t(c)] = (unsigned char)std::lround(std::clamp(look.table[i][c], 0.0f, 1.0f) * 255.0f);
-        }
-      }
-      glTextureSubImage2D(hostTable.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-      hostTableColors = look.table;
-    }
-    glBindTextureUnit(2, method.surfaceShade().id());
-    glBindTextureUnit(3, hostTable.id());
-    glUniform1i(program.uniform("uMultiply"), blend);
-    glUniform1i(program.uniform("uScalars"), look.scalars.has_value());
-    const glm::vec2 valueRange = playback->surface().colorRange();
-    glUniform2f(program.uniform("uValueRange"), valueRange.x, valueRange.y);
-    glUniform2f(program.uniform("uTableRange"), look.range.x, look.range.y);
-    glUniform3f(program.uniform("uSolid"), look.solid.x, look.solid.y, look.solid.z);
-    glUniform3f(program.uniform("uNanColor"), look.nanColor.x, look.nanColor.y, look.nanColor.z);
-    glUniform1i(program.uniform("uLighting"), look.lighting);
-    glUniform1f(program.uniform("uAmbient"), look.ambient);
-    glUniform1f(program.uniform("uDiffuse"), look.diffuse);
-    const GLsizei lights = GLsizei(look.lightDirEye.size());
-    glUniform1i(program.uniform("uLightCount"), lights);
-    if (lights > 0)
-    {
-      glUniform3fv(program.uniform("uLightDir"), lights, &look.lightDirEye[0].x);
-      glUniform3fv(program.uniform("uLightColor"), lights, &look.lightColor[0].x);
-    }
-  }
-  glBindVertexArray(emptyVao.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDisable(GL_SCISSOR_TEST);
+  composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
+    options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
 }

@@ -31,6 +31,9 @@ public:
   // Sets an option of the table by name; returns the error message, empty if none.
   std::string SetOption(const std::string& name, const std::string& value);
   void SetViewTime(double time);
+  // The data time of this process's piece as the pipeline delivered it (the representation
+  // reads it before ParaView's delivery drops it); none: the data has no time.
+  void SetPieceTime(bool has, double time);
 
 protected:
   vtkFlowSurfMapper();

@@ -3,8 +3,10 @@
 #include "vtkFlowSurfMapper.h"
 
 #include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationRequestKey.h"
+#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 
@@ -47,6 +49,18 @@ int vtkFlowSurfRepresentation::ProcessViewRequest(
     }
   }
   return 1;
+}
+
+int vtkFlowSurfRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() > 0
+    ? vtkDataObject::GetData(inputVector[0], 0)
+    : nullptr;
+  vtkInformation* info = input ? input->GetInformation() : nullptr;
+  const bool has = info && info->Has(vtkDataObject::DATA_TIME_STEP());
+  this->FlowSurfMapper->SetPieceTime(has, has ? info->Get(vtkDataObject::DATA_TIME_STEP()) : 0.0);
+  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 void vtkFlowSurfRepresentation::SetFlowSurfVectors(int, int, int, int, const char* name)

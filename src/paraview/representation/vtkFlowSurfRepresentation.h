@@ -32,6 +32,10 @@ protected:
   vtkFlowSurfRepresentation();
   ~vtkFlowSurfRepresentation() override;
 
+  // Hands the piece's data time to the mapper (ParaView's delivery drops it).
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   vtkFlowSurfMapper* FlowSurfMapper;
 
 private:

@@ -149,6 +149,37 @@ std::string VtkProcessGroup::agree(const std::string& error)
   return {};
 }
 
+std::string VtkProcessGroup::sameValue(bool has, double value, const std::string& what)
+{
+  const int n = this->size();
+  const double mine[2] = { has ? 1.0 : 0.0, value };
+  std::vector<double> all(2 * static_cast<size_t>(n));
+  check(controller_->AllGather(mine, all.data(), 2), "gather of values");
+  int first = -1;
+  for (int q = 0; q < n; ++q)
+  {
+    if (all[2 * size_t(q)] == 0.0)
+    {
+      continue;
+    }
+    if (first < 0)
+    {
+      first = q;
+    }
+    else if (all[2 * size_t(q) + 1] != all[2 * size_t(first) + 1])
+    {
+      auto text = [](double v) {
+        std::string s = std::to_string(v);
+        return s.erase(s.find_last_not_of('0') + 1);
+      };
+      return "FlowSurf: " + what + " differ between the processes: " + text(all[2 * size_t(first) + 1]) +
+        " on process " + std::to_string(first) + ", " + text(all[2 * size_t(q) + 1]) + " on process " +
+        std::to_string(q) + " of " + std::to_string(n);
+    }
+  }
+  return {};
+}
+
 bool VtkProcessGroup::any(bool flag)
 {
   int in = flag ? 1 : 0, out = 0;

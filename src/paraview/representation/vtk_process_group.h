@@ -29,6 +29,9 @@ public:
   // process, naming that process: so that all report the same failure and none waits in a
   // later collective step for a process that gave up.
   std::string agree(const std::string& error);
+  // Collective: "" when every process that has a value (`has`) holds the same one; else an
+  // error naming `what` and the first two processes that differ, the same on every process.
+  std::string sameValue(bool has, double value, const std::string& what);
 
 private:
   vtkMultiProcessController* controller_;

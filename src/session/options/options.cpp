@@ -409,7 +409,17 @@ std::vector<OptionSpec> buildTable() {
                     FS_REF(params.common.maskRangeMode)));
     add(onOff("lighting", gLook, "Diffuse lighting", FS_REF(params.common.lighting)));
     add(flag("velocity-mask", gLook, "Texture contrast follows speed [L ref 14]", FS_REF(params.common.velocityMask)));
-    add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean", FS_REF(params.common.contrast), 0, 20));
+    add(param<float>("contrast", gLook, "Display gain of the flow texture about its mean (not applied to a texture "
+                     "--enhance-contrast stretches)", FS_REF(params.common.contrast), 0, 20));
+    add(choice("enhance-contrast", gLook, "Contrast enhancement as ParaView's Surface LIC: stretch the flow "
+               "texture's intensity (texture), the surface colour's lightness (color) or both between robust "
+               "percentiles of the surface's pixels, smoothed over frames (see doc/contrast.md)",
+               methods::kEnhanceContrastNames, FS_REF(params.common.enhanceContrast)));
+    add(param<float>("enhance-percentile", gLook, "Contrast enhancement: percent of the surface's pixels clamped "
+                     "at each end of the stretch", FS_REF(params.common.enhancePercentile), 0, 25));
+    add(param<float>("enhance-smoothing", gLook, "Contrast enhancement: frames over which the stretch's "
+                     "percentiles are smoothed (time constant; 1: each frame's own)",
+                     FS_REF(params.common.enhanceSmoothing), 1, 1000));
     {
         OptionSpec s{"background", "", gLook, "Background colour: #RRGGBB, r,g,b in 0..1, black, white, gray",
                      OptionKind::Color, 0, 1, {}, true, nullptr, nullptr};
@@ -514,6 +524,36 @@ OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b) {
     for (const OptionSpec& s : renderOptionTable())
         if (s.effect > e && s.get(a) != s.get(b)) e = s.effect;
     return e;
+}
+
+bool isRendererOption(const OptionSpec& s) {
+    // What is read (Reload) belongs to the surface, what is written (Output) to the caller.
+    return s.effect != OptionEffect::Reload && s.effect != OptionEffect::Output;
+}
+
+bool isReadOption(const OptionSpec& s) {
+    return s.effect == OptionEffect::Reload && s.name != "input" && s.name != "field";
+}
+
+bool inViewerPanel(const OptionSpec& s) {
+    // Method and overlay sections, the dye section, the camera read-out.
+    if (s.group == "Method" || s.group == "Overlay" || s.group == "Dye") return true;
+    return s.name == "eye" || s.name == "target" || s.name == "up" || s.name == "fov" || s.name == "ortho";
+}
+
+std::string paraviewProperty(const OptionSpec& s) {
+    // The method's options, the dye (sources as --dye's text) and the warm-up that the
+    // mapper's frame loop runs; colour map, lighting and background are ParaView's own.
+    if (s.group != "Method" && s.group != "Overlay" && s.group != "Dye" && s.name != "warmup") return "";
+    if (s.name == "colormap" || s.name == "lighting" || s.name == "background") return "";
+    std::string out = "FlowSurf";
+    bool up = true;
+    for (char c : s.name) {
+        if (c == '-') { up = true; continue; }
+        out += up ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+        up = false;
+    }
+    return out;
 }
 
 void validateRenderOptions(const RenderOptions& o) {

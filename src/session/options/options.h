@@ -109,6 +109,16 @@ OptionEffect effectOf(const std::string& name);
 // The largest effect among the options whose values differ between `a` and `b`.
 OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b);
 
+// Where an option is set besides the command line (render, compare, quality, view), the
+// viewer's `set NAME VALUE` events and, when `saved`, config files. The front ends choose
+// their options with these, and the manual's option reference lists them from the same.
+bool isRendererOption(const OptionSpec& spec);  // flowsurf::Renderer::set, Python Renderer/render keywords
+bool isReadOption(const OptionSpec& spec);      // Surface::read, flowsurf.read keywords, `flowsurf info`
+bool inViewerPanel(const OptionSpec& spec);     // a widget of the viewer's panel
+// The ParaView representation's property ("FlowSurf" + the name in CamelCase), empty when
+// ParaView has its own (colormap, lighting, background) or none.
+std::string paraviewProperty(const OptionSpec& spec);
+
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.
 void validateRenderOptions(const RenderOptions& opt);
 
