@@ -212,8 +212,8 @@ void installFilter() {
     addRule(ctx, SCMP_ACT_ALLOW, "openat", {SCMP_A2(SCMP_CMP_MASKED_EQ, writing, 0)});
     addRule(ctx, SCMP_ACT_ALLOW, "open", {SCMP_A1(SCMP_CMP_MASKED_EQ, writing, 0)});
     addRule(ctx, SCMP_ACT_ALLOW, "clone", {SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, CLONE_THREAD)});
-    addRule(ctx, SCMP_ACT_ALLOW, "prlimit64", {SCMP_A0(SCMP_CMP_EQ, 0)});  // glibc's own: pid 0, this process
-    addRule(ctx, SCMP_ACT_ALLOW, "tgkill", {SCMP_A0(SCMP_CMP_EQ, scmp_datum_t(getpid()))});  // raise(), abort()
+    addRule(ctx, SCMP_ACT_ALLOW, "prlimit64", {SCMP_A0(SCMP_CMP_EQ, 0, 0)});  // glibc's own: pid 0, this process
+    addRule(ctx, SCMP_ACT_ALLOW, "tgkill", {SCMP_A0(SCMP_CMP_EQ, scmp_datum_t(getpid()), 0)});  // raise(), abort()
     addRule(ctx, SCMP_ACT_ERRNO(ENOSYS), "clone3");  // flags out of reach: glibc falls back to clone
     addRule(ctx, SCMP_ACT_ERRNO(ENOSYS), "openat2");  // flags out of reach: callers fall back to openat
     addRule(ctx, SCMP_ACT_ERRNO(ENOTTY), "ioctl");    // isatty() and friends: "not a terminal"
