@@ -4,6 +4,7 @@
 //   socket   opens a TCP socket          write   creates a file next to the input
 //   exec     runs /bin/true              fork    starts a process
 //   outside  reads /etc/hostname         spin    burns CPU until stopped
+//   signal   signals its parent (signal 0: only asks whether it exists)
 //   memory   allocates until refused
 // What the sandbox lets through is answered as an error saying so ("... was not
 // stopped"), which the tests then see instead of the sandbox's refusal.
@@ -12,6 +13,7 @@
 
 #include <fcntl.h>
 #include <netinet/in.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -40,6 +42,7 @@ std::string misbehave(const std::string& what, const std::string& input) {
         return std::strerror(errno);
     }
     if (what == "fork") return fork() >= 0 ? "process started" : std::strerror(errno);
+    if (what == "signal") return kill(getppid(), 0) == 0 ? "parent signalled" : std::strerror(errno);
     if (what == "outside") return ::open("/etc/hostname", O_RDONLY) >= 0 ? "read outside" : std::strerror(errno);
     if (what == "spin")
         for (unsigned long i = 0;; ++i) asm volatile("" : "+r"(i));  // not optimised away
@@ -58,7 +61,8 @@ int main(int argc, char** argv) {
     const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
     in.u8();  // the op: Open (path, source options)
     const std::string path = in.str();
-    wire::readSourceOptions(in);
+    flowsurf::io::SourceOptions options;
+    wire::record(in, options);
     sandbox::limitRequest(memoryMb, cpuSeconds);
     const char* what = std::getenv("FLOWSURF_TEST_HOSTILE");
     wire::Writer out(sandbox::kSocketFd);

@@ -15,9 +15,11 @@
 #include <vtkSmartPointer.h>
 
 #include <stdlib.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -89,6 +91,25 @@ inline std::string formatErrorOf(const std::string& path) {
         return std::string("wrong type: ") + e.what();
     }
     return "no exception";
+}
+
+// CPU seconds used by this process's children that have ended (the reader processes).
+inline double childCpuSeconds() {
+    rusage u{};
+    getrusage(RUSAGE_CHILDREN, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// How long `read` took: wall-clock seconds, and CPU seconds of the reader processes.
+struct Took {
+    double wall = 0, cpu = 0;
+};
+template <class Read>
+Took timed(Read read) {
+    const double cpu = childCpuSeconds();
+    const auto start = std::chrono::steady_clock::now();
+    read();
+    return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), childCpuSeconds() - cpu};
 }
 
 inline vtkSmartPointer<vtkFloatArray> makeArray(const char* name, int components) {

@@ -1,8 +1,11 @@
 // Hostile files, each the reason one of the former format pre-parsers existed (EnSight
-// counts beyond the file, old-layout legacy cell lists, XML compression headers, Exodus
-// connectivity and missing variables): fed to the reader process as they are, each is
-// refused within 5 s with a typed error naming the file, whatever VTK's reader does with
-// it (an error, a crash, a runaway allocation or loop stopped by the child's limits).
+// counts beyond the file, XML compression headers, Exodus connectivity and missing
+// variables): fed to the reader process as they are, each is refused within 5 s with a
+// typed error naming the file, whatever VTK's reader does with it (an error, a crash, a
+// runaway allocation or loop stopped by the child's limits). Old-layout legacy cell lists
+// are still checked before VTK (legacy_check.h says why) and refused the same way.
+// "Within 5 s" is asserted on the reader's CPU time, which a loaded machine does not
+// stretch; the wall clock only has to stay under the library's deadline (30 s).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
 
@@ -13,7 +16,6 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 
-#include <chrono>
 #include <cstdint>
 #include <cstring>
 
@@ -22,21 +24,22 @@ using namespace flowsurf::testing_io;
 
 namespace {
 
-// Reads `path`; expects a flowsurf error naming `names` (the file by default) within 5 s.
-void expectRefusedQuickly(const std::string& path, const std::string& names = "") {
+// Reads `path`; expects a flowsurf error naming it, within 5 s (see above).
+void expectRefusedQuickly(const std::string& path) {
     SCOPED_TRACE(path);
-    const auto start = std::chrono::steady_clock::now();
     std::string what = "no exception";
-    try {
-        io::readDataset(path);
-    } catch (const Error& e) {
-        what = e.what();
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_NE(what.find(names.empty() ? path : names), std::string::npos) << what;
+    const Took took = timed([&] {
+        try {
+            io::readDataset(path);
+        } catch (const Error& e) {
+            what = e.what();
+        }
+    });
+    EXPECT_NE(what.find(path), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_EQ(what.find("sandbox"), std::string::npos) << what;  // reading needs no forbidden call
-    EXPECT_LT(seconds, 5.0) << what;
+    EXPECT_LT(took.cpu, 5.0) << what;
+    EXPECT_EQ(what.find("took longer"), std::string::npos) << what;
 }
 
 // --- EnSight Gold: counts beyond the file (VTK allocates for them and loops at its end) ---

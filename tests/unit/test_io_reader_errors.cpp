@@ -314,6 +314,17 @@ TEST(IoReaders, MalformedCellsAreFormatErrorsNotCrashes) {
     ScratchDir dir;
     const std::string points = "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n";
     const std::pair<std::string, std::string> cases[] = {
+        // Old layout: a count larger than the list, a list shorter than declared, a
+        // token that is not a number (each crashed VTK 9.1's reader).
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 5\n900 0 1 2 3\n",
+         "does not fit"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 2 5\n3 0 1 2 3\n",
+         "does not fit"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 5\n4 0 x 2 3\n",
+         "not an integer"},
+        {"# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
+             "CELLS 1 5\n900 0 1 2 3\nCELL_TYPES 1\n9\n",
+         "does not fit"},
         // New layout: a two-point polygon (crashes vtkCellDataToPointData), a
         // hexahedron with five points, an unknown cell type.
         {"# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n" + points +
@@ -326,6 +337,7 @@ TEST(IoReaders, MalformedCellsAreFormatErrorsNotCrashes) {
         {"# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points +
              "CELLS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\nCELL_TYPES 1\n200\n",
          "unknown type 200"},
+        {"# vtk DataFile Version \x8d.1\nt\nASCII\nDATASET POLYDATA\n" + points, "first line"},
     };
     int i = 0;
     for (const auto& [text, why] : cases) {

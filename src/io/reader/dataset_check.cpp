@@ -41,7 +41,8 @@ void checkConnectivity(vtkCellArray* cells, vtkIdType points, const char* kind, 
     double range[2];
     cells->GetConnectivityArray()->GetRange(range, 0);
     if (range[0] < 0 || range[1] >= static_cast<double>(points))
-        throw FormatError(where + ": a " + kind + " cell refers to point index " +
+        throw FormatError(where + ": a " + (std::string(kind) == "cell" ? "" : std::string(kind) + " ") +
+                          "cell refers to point index " +
                           std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) +
                           " (counting from 0) but there are only " + std::to_string(points) + " points");
 }

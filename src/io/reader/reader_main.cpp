@@ -35,14 +35,15 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
     switch (op) {
         case w::Op::Open: {
             std::string path = in.str();
-            io::SourceOptions options = w::readSourceOptions(in);
+            io::SourceOptions options;
+            w::record(in, options);
+            open.reset();  // one source at a time: the previous one's data goes first
             auto s = std::make_unique<OpenSource>();
             s->path = path;
             s->source = io::detail::openSource(path, s->trap, options);
             out.u8(uint8_t(w::Status::Ok));
             out.str(s->source->format());
-            out.u64(s->source->times().size());
-            for (double t : s->source->times()) out.f64(t);
+            out.field(s->source->times());
             open = std::move(s);
             return true;
         }
@@ -52,14 +53,16 @@ bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>
             core::SurfaceMesh m = io::detail::readSurfaceMesh(open->source->readStep(size_t(i)), open->trap,
                                                               io::detail::stepLabel(open->path, *open->source, i));
             out.u8(uint8_t(w::Status::Ok));
-            out.mesh(m);
+            w::record(out, m);
             return true;
         }
         case w::Op::Inspect: {
-            std::string path = in.str();
-            io::FileInfo info = io::detail::inspectFileHere(path, w::readSourceOptions(in));
+            const std::string path = in.str();
+            io::SourceOptions options;
+            w::record(in, options);
+            const io::FileInfo info = io::detail::inspectFileHere(path, options);
             out.u8(uint8_t(w::Status::Ok));
-            w::writeFileInfo(out, info);
+            w::record(out, info);
             return true;
         }
         case w::Op::Quit: return false;

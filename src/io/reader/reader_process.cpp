@@ -57,18 +57,23 @@ ReaderBudget budgetFor(const std::string& path) {
 
 // Which variable sets another value, for messages.
 std::string overrideHint(bool fixed, const char* variable) {
-    return fixed ? std::string(variable) : std::string("its limit for this input's size; ") + variable + " sets another";
+    return fixed ? std::string(variable)
+                 : std::string("its limit for this input's size; ") + variable + " sets another";
 }
 
 // Why the child ended, from its exit status and what it wrote to the reasons pipe.
 std::string deathText(int status, const std::string& reason, const ReaderBudget& budget) {
     if (WIFSIGNALED(status)) {
         switch (const int sig = WTERMSIG(status)) {
-            case SIGSYS: return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
+            case SIGSYS:
+                return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
             case SIGXCPU:
                 return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
                        overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
-            case SIGSEGV: case SIGBUS: case SIGFPE: case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
+            case SIGSEGV:
+            case SIGBUS:
+            case SIGFPE:
+            case SIGILL: return std::string("crashed (SIG") + sigabbrev_np(sig) + ")";
             case SIGABRT: return "aborted (SIGABRT)";
             default: return "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
         }
@@ -285,18 +290,18 @@ ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const Sou
 ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
+    lastOpen_.clear();  // the child drops its source before opening another
     SourceInfo info = call(
         path, openBudget_,
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Open));
             w.str(path);
-            wire::writeSourceOptions(w, options);
+            wire::record(w, options);
         },
         [](wire::Reader& r) {
             SourceInfo s;
             s.format = r.str();
-            s.times.resize(size_t(r.count(1 << 24)));
-            for (double& t : s.times) t = r.f64();
+            r.field(s.times);
             return s;
         });
     lastOpen_ = path;
@@ -310,7 +315,11 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
 }
 
 core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
-    if (pid_ <= 0 && !lastOpen_.empty()) openLocked(lastOpen_, lastOptions_);  // the child died: restore its source
+    if (pid_ <= 0 && !lastOpen_.empty()) {  // the child died: restore its source
+        const std::string path = lastOpen_;
+        const SourceOptions options = lastOptions_;
+        openLocked(path, options);
+    }
     ensureChild(root_);
     return call(
         label, openBudget_,
@@ -318,7 +327,11 @@ core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string&
             w.u8(uint8_t(wire::Op::Step));
             w.u64(index);
         },
-        [](wire::Reader& r) { return r.mesh(); });
+        [](wire::Reader& r) {
+            core::SurfaceMesh m;
+            wire::record(r, m);
+            return m;
+        });
 }
 
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
@@ -329,9 +342,13 @@ FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& op
         [&](wire::Writer& w) {
             w.u8(uint8_t(wire::Op::Inspect));
             w.str(path);
-            wire::writeSourceOptions(w, options);
+            wire::record(w, options);
         },
-        [](wire::Reader& r) { return wire::readFileInfo(r); });
+        [](wire::Reader& r) {
+            FileInfo info;
+            wire::record(r, info);
+            return info;
+        });
 }
 
 }  // namespace flowsurf::io::detail

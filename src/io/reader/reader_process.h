@@ -35,9 +35,10 @@ namespace flowsurf::io::detail {
 // allows. CPU time: a second (the child rounds what it used so far up to whole seconds,
 // so a request gets between 1 and 2 s; small files need milliseconds) plus twice the wall
 // clock's allowance per MiB (VTK's filters run on several threads), so a small file that
-// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb (the libraries, thread stacks and arenas)
-// plus kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times
-// are capped at a week (an unbounded folder).
+// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb
+// (the libraries, thread stacks and arenas; a small file needs under 400) plus
+// kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times are
+// capped at a week (an unbounded folder).
 struct ReaderBudget {
     long long wallS = 0;
     long long cpuS = 0;

@@ -47,6 +47,10 @@ unsigned long long memoryLimitMb();
 
 // Landlock below `root` (skipped where the kernel lacks it), then the system-call filter.
 void enter(const std::string& root);
+// The folder Landlock confines reading to (empty when it does not), and whether `path`
+// lies outside it.
+const std::string& readableRoot();
+bool isOutsideReadableRoot(const std::string& path);
 
 // FLOWSURF_READER_SANDBOX=off: limits only, no Landlock, no filter (for debugging).
 bool disabledByEnvironment();

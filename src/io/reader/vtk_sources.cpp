@@ -3,9 +3,11 @@
 
 #include "core/errors.h"
 #include "io/reader/exodus_check.h"
+#include "io/reader/legacy_check.h"
 #include "io/reader/obj_reader.h"
 #include "io/reader/openfoam_source.h"
 #include "io/reader/ply_reader.h"
+#include "io/reader/sandbox.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkExodusIIReader.h>
@@ -68,7 +70,13 @@ void checkReadable(const std::string& path, bool allowEmpty) {
         throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
     if (S_ISDIR(st.st_mode)) throw IoError(path + ": cannot open (Is a directory)");
     FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
+    if (!f) {
+        const int error = errno;
+        std::string why = std::system_category().message(error);
+        if (error == EACCES && sandbox::isOutsideReadableRoot(path))
+            why += "; the reader may read only below " + sandbox::readableRoot() + ", doc/reader_sandbox.md";
+        throw IoError(path + ": cannot open (" + why + ")");
+    }
     std::fclose(f);
     if (!allowEmpty && st.st_size == 0) throw FormatError(path + ": the file is empty");
 }
@@ -175,6 +183,7 @@ vtkSmartPointer<Reader> readerFor(const std::string& path) {
 }
 
 std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& trap) {
+    checkLegacyFile(path);  // old-layout cell lists VTK would read past their end
     auto r = readerFor<vtkGenericDataObjectReader>(path);
     trap.watch(r);
     r->UpdateInformation();

@@ -1,7 +1,8 @@
 // flowsurf — one reader per file extension, seen as a list of time steps (private to
 // src/io). VTK readers for most formats (where one crashes or loops on bad input, the
 // reader process's limits and sandbox stop it), behind checks of what VTK would read
-// silently wrong (a truncated binary STL or Exodus II file); our own parsers for PLY and OBJ.
+// silently wrong (legacy_check, exodus_check, a truncated binary STL); our own parsers for
+// PLY and OBJ.
 // A StepSource hands out the raw output per step; surface_pipeline.h turns that into
 // a triangle surface.
 #pragma once
