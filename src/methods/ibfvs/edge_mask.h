@@ -9,7 +9,8 @@
 // order: each process's own pixels get the one-process image. Seams of the partition are
 // not outlines (SurfaceGpu with piece_seams.h).
 // Cost: one draw of the edges (GL_LINES_ADJACENCY); in parallel a read-back of the quads
-// (64 B each), their exchange to every process, and one draw of the received ones.
+// (64 B each; a second, rasterizer-discarded draw when the buffer had to grow), their
+// exchange to every process, and one draw of the received ones.
 #pragma once
 
 #include "core/camera.h"
@@ -39,10 +40,11 @@ public:
 
 private:
     void setState(const gl::Program& p, const core::Camera& camera, const EdgeMaskStyle& style) const;
-    // Collective: this process's captured quads to every other; returns theirs.
-    std::vector<glm::vec4> exchange(ProcessGroup& group, const SurfaceGpu& surface, const core::Camera& camera,
-                                    const core::Viewport& viewport, const gl::Texture2D& depth,
-                                    const gl::Framebuffer& target, const EdgeMaskStyle& style);
+    // Draws this surface's outlines (program_ in use); with `capture` also into capture_,
+    // grown and captured again when too small. Returns the quads captured.
+    uint32_t drawOwn(const SurfaceGpu& surface, bool capture);
+    // Collective: the `count` captured quads to every other process; returns theirs.
+    std::vector<glm::vec4> exchange(ProcessGroup& group, uint32_t count);
 
     gl::Program program_, shared_;
     gl::VertexArray emptyVao_;
