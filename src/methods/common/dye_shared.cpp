@@ -9,15 +9,6 @@ namespace flowsurf::methods {
 
 namespace {
 
-// `bytes` from every process, in rank order (this one's included).
-std::vector<std::vector<uint8_t>> allGather(ProcessGroup& group, std::vector<uint8_t> bytes) {
-    std::vector<std::vector<uint8_t>> sends(size_t(group.size()), bytes);
-    sends[size_t(group.rank())].clear();
-    std::vector<std::vector<uint8_t>> all = group.exchange(sends);
-    all[size_t(group.rank())] = std::move(bytes);
-    return all;
-}
-
 template <class T>
 void put(std::vector<uint8_t>& out, const T& v) {
     const size_t at = out.size();

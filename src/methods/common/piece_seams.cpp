@@ -73,10 +73,7 @@ PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
                              piece.positions[mine[i].a]};
         std::memcpy(bytes.data() + i * sizeof(AdjacentEdge), &e, sizeof e);
     }
-    std::vector<std::vector<uint8_t>> sends(size_t(group.size()), bytes);
-    sends[size_t(group.rank())].clear();
-    std::vector<std::vector<uint8_t>> all = group.exchange(sends);
-    all[size_t(group.rank())] = std::move(bytes);
+    const std::vector<std::vector<uint8_t>> all = allGather(group, std::move(bytes));
 
     // Every process's one-sided edges, in (rank, order), their end points welded within a
     // millionth of their extent (a piece's end may be computed apart from its neighbour's:

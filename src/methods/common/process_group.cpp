@@ -78,4 +78,12 @@ void mergeByDepth(ProcessGroup& group, const gl::Texture2D& depth, std::initiali
     }
 }
 
+std::vector<std::vector<uint8_t>> allGather(ProcessGroup& group, std::vector<uint8_t> bytes) {
+    std::vector<std::vector<uint8_t>> sends(size_t(group.size()), bytes);
+    sends[size_t(group.rank())].clear();
+    std::vector<std::vector<uint8_t>> all = group.exchange(sends);
+    all[size_t(group.rank())] = std::move(bytes);
+    return all;
+}
+
 }  // namespace flowsurf::methods

@@ -42,6 +42,10 @@ public:
     virtual std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) = 0;
 };
 
+// Collective: `bytes` from every process of `group`, in rank order (this one's included),
+// over ProcessGroup::exchange.
+std::vector<std::vector<uint8_t>> allGather(ProcessGroup& group, std::vector<uint8_t> bytes);
+
 // Replaces `depth` (DEPTH_COMPONENT32F) and each of `layers` (float or half formats with
 // 1-4 channels, the size of `depth`) by their merge over `group`: at each pixel the values
 // of the process whose depth is smallest (on a tie, the lowest rank). Exact: the winning

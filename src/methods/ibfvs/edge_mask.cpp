@@ -92,10 +92,10 @@ uint32_t EdgeMask::drawOwn(const SurfaceGpu& surface, bool capture) {
 std::vector<glm::vec4> EdgeMask::exchange(ProcessGroup& group, uint32_t count) {
     std::vector<uint8_t> bytes(size_t(count) * 4 * sizeof(glm::vec4));
     if (!bytes.empty()) glGetNamedBufferSubData(capture_.id(), kCaptureHeader, GLsizeiptr(bytes.size()), bytes.data());
-    std::vector<std::vector<uint8_t>> sends(size_t(group.size()), bytes);
-    sends[size_t(group.rank())].clear();
+    std::vector<std::vector<uint8_t>> all = allGather(group, std::move(bytes));
+    all[size_t(group.rank())].clear();  // this process's own are drawn already
     std::vector<glm::vec4> others;
-    for (const std::vector<uint8_t>& msg : group.exchange(sends)) {
+    for (const std::vector<uint8_t>& msg : all) {
         const size_t n = msg.size() / sizeof(glm::vec4);
         const size_t at = others.size();
         others.resize(at + n);
