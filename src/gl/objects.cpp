@@ -3,6 +3,7 @@
 #include "core/errors.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <vector>
 
@@ -54,8 +55,14 @@ void Framebuffer::finish(int colorAttachments) {
     for (int i = 0; i < colorAttachments; ++i) bufs[i] = GL_COLOR_ATTACHMENT0 + i;
     glNamedFramebufferDrawBuffers(h_.id(), colorAttachments, bufs);
     GLenum status = glCheckNamedFramebufferStatus(h_.id(), GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw GlError("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+    if (status == GL_FRAMEBUFFER_COMPLETE) return;
+    // An attachment whose storage could not be allocated leaves the framebuffer incomplete.
+    bool outOfMemory = false;
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) outOfMemory = outOfMemory || e == GL_OUT_OF_MEMORY;
+    if (outOfMemory) throw GlError("not enough graphics memory for the render targets (framebuffer incomplete)");
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%04X", unsigned(status));
+    throw GlError(std::string("framebuffer incomplete (status ") + hex + ")");
 }
 
 VertexArray VertexArray::create() {

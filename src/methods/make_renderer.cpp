@@ -5,6 +5,8 @@
 #include "methods/ibfvs/ibfvs_renderer.h"
 #include "methods/isa/isa_renderer.h"
 
+#include <cstdio>
+
 namespace flowsurf::methods {
 
 namespace {
@@ -42,13 +44,23 @@ std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& para
                           " exceeds this OpenGL's largest texture (" + std::to_string(maxSize) + ")");
     while (glGetError() != GL_NO_ERROR) {
     }
-    std::unique_ptr<FlowMethod> renderer = construct(method, params, viewport);
+    std::unique_ptr<FlowMethod> renderer;
+    try {
+        renderer = construct(method, params, viewport);
+    } catch (const GlError& e) {  // e.g. render targets without memory: say for what
+        throw GlError(std::string(e.what()) + " setting up method " + name + " at " + std::to_string(viewport.width) +
+                      "x" + std::to_string(viewport.height));
+    }
     // Render targets are allocated above: an absurd size shows up here, not as a crash.
     if (GLenum err = glGetError(); err == GL_OUT_OF_MEMORY)
         throw GlError("not enough graphics memory for " + std::to_string(viewport.width) + "x" +
                       std::to_string(viewport.height) + " with method " + name);
     else if (err != GL_NO_ERROR)
-        throw GlError("OpenGL error 0x" + std::to_string(err) + " while setting up method " + name);
+    {
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "0x%04X", unsigned(err));
+        throw GlError(std::string("OpenGL error ") + hex + " while setting up method " + name);
+    }
     return renderer;
 }
 

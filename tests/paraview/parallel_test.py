@@ -11,6 +11,9 @@ tests/paraview/run_parallel_test.sh under mpiexec).
       plugin loaded on both sides), screenshots saved by the client.
   mpiexec ... pvbatch parallel_test.py PLUGIN OUTDIR glerror
       FlowSurf where one rank's OpenGL is too old: the same error on every rank, no hang.
+  mpiexec -np 2 pvbatch parallel_test.py PLUGIN OUTDIR oom
+      FlowSurf where one rank runs out of memory (its address space capped just above what
+      ParaView itself needs at a large view): the same error on every rank, no hang.
   mpiexec -np 2 pvbatch parallel_test.py PLUGIN OUTDIR errors
       inputs that differ between the ranks (the vector array missing on one, pieces of
       different data times): the same error on every rank, no hang, rendering goes on.
@@ -172,6 +175,43 @@ def gl_error():
     print('SURVIVED', flush=True)
 
 
+# Run on every process by a ProgrammableFilter: passes its input through; on process 1,
+# once, caps the address space 256 MiB above what it uses.
+CAP_RANK_ONE_SCRIPT = '''
+import resource
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+self.GetOutput().ShallowCopy(self.GetInput())
+if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 1:
+    size = int(open('/proc/self/statm').read().split()[0]) * resource.getpagesize()
+    resource.setrlimit(resource.RLIMIT_AS, (size + (256 << 20), resource.RLIM_INFINITY))
+    print('CAPPED at %d MiB' % ((size >> 20) + 256), flush=True)
+'''
+
+
+def out_of_memory():
+    """One rank out of memory: after ParaView has rendered the surface at a large view,
+    rank 1 caps its address space 256 MiB above what it uses, less than FlowSurf's per-pixel
+    buffers there. Every rank reports rank 1's error, none waits, ParaView renders on."""
+    LoadPlugin(PLUGIN, ns=globals())
+    sphere = Sphere(Radius=1.0, ThetaResolution=64, PhiResolution=32)
+    spin = Calculator(Input=sphere, ResultArrayName='V', Function='-coordsY*iHat+coordsX*jHat')
+    cap = ProgrammableFilter(Input=ExtractSurface(Input=RedistributeDataSet(Input=spin)))
+    cap.CopyArrays = 0
+    cap.Script = 'self.GetOutput().ShallowCopy(self.GetInput())'
+    view = CreateRenderView()
+    view.ViewSize = [3000, 3000]
+    rep = Show(cap, view)
+    Render(view)
+    print('FLOWSURF_STARTED', flush=True)
+    cap.Script = CAP_RANK_ONE_SCRIPT
+    rep.SetRepresentationType('FlowSurf')
+    rep.FlowSurfVectors = ['POINTS', 'V']
+    Render(view)
+    rep.SetRepresentationType('Surface')
+    Render(view)
+    print('SURVIVED', flush=True)
+
+
 # A filter that changes its piece on one process only (Python run on each process).
 RANK_ONE_SCRIPT = '''
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
@@ -216,6 +256,8 @@ if MODE == 'render':
     render(sys.argv[4], int(sys.argv[5]))
 elif MODE == 'glerror':
     gl_error()
+elif MODE == 'oom':
+    out_of_memory()
 elif MODE == 'errors':
     errors()
 elif MODE == 'client':

@@ -75,6 +75,16 @@ errors=$(grep -c "program .* failed to \(link\|compile\).* (on process 1 of 2)" 
 echo "shadererror: exit $rc, the error reported $errors time(s)"
 [ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/shadererror.log" ||
   { echo "shadererror: expected rank 1's shader error on both ranks and a render after it"; cat "$OUT/shadererror.log"; exit 1; }
+# A rank out of memory (rank 1's address space capped 256 MiB above its use after ParaView
+# rendered a 3000x3000 view): both ranks report rank 1's error, neither hangs, ParaView
+# renders on.
+echo "== oom: rank 1 out of memory"
+xrun "$OUT/oom.log" "${MPI[@]}" -np 2 pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" oom
+rc=$?
+errors=$(grep -c "not enough graphics memory.* (on process 1 of 2)" "$OUT/oom.log")
+echo "oom: exit $rc, the error reported $errors time(s)"
+[ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^CAPPED" "$OUT/oom.log" && grep -q "^SURVIVED" "$OUT/oom.log" ||
+  { echo "oom: expected rank 1's memory error on both ranks and a render after it"; cat "$OUT/oom.log"; exit 1; }
 # Inputs that differ between the ranks (the vector array missing on rank 1; rank 1's piece
 # of another data time): both ranks report the same error naming rank 1, neither hangs,
 # and FlowSurf renders again once the input is whole.

@@ -204,6 +204,9 @@ void vtkFlowSurfMapper::Render(vtkRenderer* ren, vtkActor* act)
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
+    while (glGetError() != GL_NO_ERROR)  // e.g. a failed allocation's: not for ParaView to find
+    {
+    }
     if (look)
     {
       this->Superclass::Render(ren, act);  // the surface at least, in ParaView's colours
