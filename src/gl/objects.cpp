@@ -104,6 +104,13 @@ std::string expandIncludes(const std::string& src, int depth = 0) {
     return out;
 }
 
+// A driver's info log without its trailing newline, so that a message can go on after it.
+std::string trimmedLog(const std::vector<char>& log) {
+    std::string text(log.data());
+    text.erase(text.find_last_not_of(" \n\r\t") + 1);
+    return text;
+}
+
 GLuint compile(GLenum type, const std::string& name, const std::string& defines) {
     std::string src = "#version 450 core\n" + defines + "\n#line 1\n" + expandIncludes(shaderSource(name));
     GLuint s = glCreateShader(type);
@@ -118,7 +125,7 @@ GLuint compile(GLenum type, const std::string& name, const std::string& defines)
         std::vector<char> log(std::max(len, 1));
         glGetShaderInfoLog(s, len, nullptr, log.data());
         glDeleteShader(s);
-        throw ShaderError("shader " + name + " failed to compile: " + log.data());
+        throw ShaderError("shader " + name + " failed to compile: " + trimmedLog(log));
     }
     return s;
 }
@@ -144,7 +151,7 @@ Program::Program(std::initializer_list<std::pair<GLenum, std::string>> stages, c
         glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
         std::vector<char> log(std::max(len, 1));
         glGetProgramInfoLog(prog, len, nullptr, log.data());
-        throw ShaderError("program " + names + " failed to link: " + log.data());
+        throw ShaderError("program " + names + " failed to link: " + trimmedLog(log));
     }
     names_ = names;
     GLint count = 0, maxLength = 0;
