@@ -7,7 +7,7 @@
 // computed here from the method's G-buffer as ParaView's mapper would (host_look.h): a
 // solid colour or the colour value through its lookup table, ambient + diffuse under its
 // directional lights, two-sided; the surface is then rasterised once per frame.
-layout(binding = COMPOSITE_IMAGE_UNIT) uniform sampler2D uImage;  // the method's composite, RGBA8
+layout(binding = COMPOSITE_COLOR_UNIT) uniform sampler2D uImage;  // the method's composite, RGBA8
 layout(binding = COMPOSITE_DEPTH_UNIT) uniform sampler2D uDepth;  // the method's surface depth, 1 = background
 uniform ivec2 uOrigin;                         // the viewport's lower-left pixel
 uniform float uDepthBias;                      // window depth: rounding between VTK's and our matrices

@@ -26,6 +26,28 @@ TEST(GpuBindings, EveryGlslNameIsDefinedOnce) {
     EXPECT_EQ(names.size(), count);
 }
 
+// The suffix says the kind, so a shader's layout qualifier reads as what it binds.
+TEST(GpuBindings, NamesEndInTheirKind) {
+    auto endsWith = [](const std::string& s, const std::string& end) {
+        return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+    };
+    for (const BindingPoint& b : kBindingPoints) {
+        const std::string name = b.glsl;
+        switch (b.kind) {
+            case BindingPoint::Texture:
+                EXPECT_TRUE(endsWith(name, "_UNIT") && !endsWith(name, "_IMAGE_UNIT")) << name;
+                break;
+            case BindingPoint::Image: EXPECT_TRUE(endsWith(name, "_IMAGE_UNIT")) << name; break;
+            case BindingPoint::Storage: EXPECT_TRUE(endsWith(name, "_BINDING")) << name; break;
+            case BindingPoint::Output: ADD_FAILURE() << name << ": an output among the binding points"; break;
+        }
+    }
+    for (const BindingPoint& o : kFragmentOutputs) {
+        EXPECT_EQ(o.kind, BindingPoint::Output) << o.glsl;
+        EXPECT_TRUE(endsWith(o.glsl, "_OUT")) << o.glsl;
+    }
+}
+
 TEST(GpuBindings, SurfaceVertexIsPackedInOrderIntoWholeTexels) {
     int next = 0;
     std::set<int> locations;

@@ -15,80 +15,87 @@
 
 namespace flowsurf::methods {
 
-// A texture unit, image unit or storage binding, and the `#define` the shaders use for it.
+// A texture unit, image unit, storage binding or fragment output location, and the
+// `#define` the shaders use for it; its name ends in _UNIT, _IMAGE_UNIT, _BINDING or _OUT.
 struct BindingPoint {
+    enum Kind { Texture, Image, Storage, Output };
+    Kind kind;
     const char* glsl;  // e.g. "OVERLAY_FLOW_UNIT": layout(binding = OVERLAY_FLOW_UNIT)
     int point;
     constexpr operator unsigned() const { return unsigned(point); }
 };
+constexpr BindingPoint textureUnit(const char* glsl, int unit) { return {BindingPoint::Texture, glsl, unit}; }
+constexpr BindingPoint imageUnit(const char* glsl, int unit) { return {BindingPoint::Image, glsl, unit}; }
+constexpr BindingPoint storageBinding(const char* glsl, int binding) { return {BindingPoint::Storage, glsl, binding}; }
+constexpr BindingPoint fragmentOutput(const char* glsl, int location) { return {BindingPoint::Output, glsl, location}; }
 
 // (1) Binding points, per stage -----------------------------------------------------------
 namespace bindings {
 // ISA stage 2, advection mesh (isa/advection_mesh.*): the velocity image in, the mesh out.
-inline constexpr BindingPoint kMeshVelocity{"MESH_VELOCITY_UNIT", 0};         // RGBA32F P-space velocity
-inline constexpr BindingPoint kMeshDepth{"MESH_DEPTH_UNIT", 1};               // window depth
-inline constexpr BindingPoint kMeshSourceDepth{"MESH_SOURCE_DEPTH_UNIT", 2};  // depth of the source texture
-inline constexpr BindingPoint kMeshImage{"MESH_IMAGE_UNIT", 0};               // RGBA32F (R+1)^2 vertices
+inline constexpr BindingPoint kMeshVelocity = textureUnit("MESH_VELOCITY_UNIT", 0);         // RGBA32F P-space velocity
+inline constexpr BindingPoint kMeshDepth = textureUnit("MESH_DEPTH_UNIT", 1);               // window depth
+inline constexpr BindingPoint kMeshSourceDepth = textureUnit("MESH_SOURCE_DEPTH_UNIT", 2);  // the source texture's depth
+inline constexpr BindingPoint kMeshImage = imageUnit("MESH_IMAGE_UNIT", 0);                 // RGBA32F (R+1)^2 vertices
 // ISA stage 3, texture advection (isa/texture_advection.*).
-inline constexpr BindingPoint kIsaPrevFlow{"ISA_PREV_FLOW_UNIT", 0};          // F_a(k-1), R32F
-inline constexpr BindingPoint kIsaMesh{"ISA_MESH_UNIT", 1};                   // the advection mesh
-inline constexpr BindingPoint kIsaSurfaceDepth{"ISA_SURFACE_DEPTH_UNIT", 2};  // velocity image depth
-inline constexpr BindingPoint kIsaNextFlow{"ISA_NEXT_FLOW_IMAGE_UNIT", 0};    // F_a(k), R32F
+inline constexpr BindingPoint kIsaPrevFlow = textureUnit("ISA_PREV_FLOW_UNIT", 0);          // F_a(k-1), R32F
+inline constexpr BindingPoint kIsaMesh = textureUnit("ISA_MESH_UNIT", 1);                   // the advection mesh
+inline constexpr BindingPoint kIsaSurfaceDepth = textureUnit("ISA_SURFACE_DEPTH_UNIT", 2);  // velocity image depth
+inline constexpr BindingPoint kIsaNextFlow = imageUnit("ISA_NEXT_FLOW_IMAGE_UNIT", 0);      // F_a(k), R32F
 // IBFVS stages 2-3, polygon advection (ibfvs/polygon_advection.*).
-inline constexpr BindingPoint kIbfvsPrevFlow{"IBFVS_PREV_FLOW_UNIT", 0};        // F_a(k-1), R32F
-inline constexpr BindingPoint kIbfvsTexcoord{"IBFVS_TEXCOORD_UNIT", 1};         // RG32F, from the draw
-inline constexpr BindingPoint kIbfvsDepth{"IBFVS_DEPTH_UNIT", 2};               // the draw's depth
-inline constexpr BindingPoint kIbfvsNextFlow{"IBFVS_NEXT_FLOW_IMAGE_UNIT", 0};  // F_a(k), R32F
+inline constexpr BindingPoint kIbfvsPrevFlow = textureUnit("IBFVS_PREV_FLOW_UNIT", 0);      // F_a(k-1), R32F
+inline constexpr BindingPoint kIbfvsTexcoord = textureUnit("IBFVS_TEXCOORD_UNIT", 1);       // RG32F, from the draw
+inline constexpr BindingPoint kIbfvsDepth = textureUnit("IBFVS_DEPTH_UNIT", 2);             // the draw's depth
+inline constexpr BindingPoint kIbfvsNextFlow = imageUnit("IBFVS_NEXT_FLOW_IMAGE_UNIT", 0);  // F_a(k), R32F
 // Noise injection [L eq. 9] (common/noise_injection.*), beside either advection's units.
-inline constexpr BindingPoint kNoisePhases{"NOISE_PHASES_UNIT", 3};  // R32F phase per noise cell
+inline constexpr BindingPoint kNoisePhases = textureUnit("NOISE_PHASES_UNIT", 3);  // R32F phase per noise cell
 // IBFVS edge mask (ibfvs/edge_mask.*): the surface depth, and the outline quads shared
 // between processes (an SSBO apart from the dye and visibility ones).
-inline constexpr BindingPoint kEdgeMaskDepth{"EDGE_MASK_DEPTH_UNIT", 0};
-inline constexpr BindingPoint kEdgeCapture{"EDGE_CAPTURE_BINDING", 9};
+inline constexpr BindingPoint kEdgeMaskDepth = textureUnit("EDGE_MASK_DEPTH_UNIT", 0);
+inline constexpr BindingPoint kEdgeCapture = storageBinding("EDGE_CAPTURE_BINDING", 9);
 // Hybrid particle tracing (hybrid/particle_tracing.*): the seed velocity image, the velocity
 // (one image, or one layer per time level when unsteady), the solid noise, I out.
-inline constexpr BindingPoint kLicSeedVelocity{"LIC_SEED_VELOCITY_UNIT", 0};
-inline constexpr BindingPoint kLicVelocity{"LIC_VELOCITY_UNIT", 1};  // sampler2D, or sampler3D of levels
-inline constexpr BindingPoint kLicNoise{"LIC_NOISE_IMAGE_UNIT", 1};  // RGBA8 3D, read as an image
-inline constexpr BindingPoint kLicImage{"LIC_IMAGE_UNIT", 0};        // I, R32F
+inline constexpr BindingPoint kLicSeedVelocity = textureUnit("LIC_SEED_VELOCITY_UNIT", 0);
+inline constexpr BindingPoint kLicVelocity = textureUnit("LIC_VELOCITY_UNIT", 1);  // sampler2D, or sampler3D of levels
+inline constexpr BindingPoint kLicNoise = imageUnit("LIC_NOISE_IMAGE_UNIT", 1);    // RGBA8 3D, read as an image
+inline constexpr BindingPoint kLicImage = imageUnit("LIC_IMAGE_UNIT", 0);          // I, R32F
 // Hybrid solid noise (hybrid/solid_noise.*): the packed RGBA8 texture as 32-bit words.
-inline constexpr BindingPoint kSolidNoiseImage{"SOLID_NOISE_IMAGE_UNIT", 0};
+inline constexpr BindingPoint kSolidNoiseImage = imageUnit("SOLID_NOISE_IMAGE_UNIT", 0);
 // Overlay [L eq. 10] (common/overlay.*): its inputs and, on the compute path, the composite.
-inline constexpr BindingPoint kOverlayFlow{"OVERLAY_FLOW_UNIT", 0};          // F_a or I, channel r
-inline constexpr BindingPoint kOverlayDepth{"OVERLAY_DEPTH_UNIT", 1};        // 1 = background
-inline constexpr BindingPoint kOverlayShade{"OVERLAY_SHADE_UNIT", 2};        // eye normal, colour value
-inline constexpr BindingPoint kOverlayColormap{"OVERLAY_COLORMAP_UNIT", 3};  // 256 x 1 RGBA8
-inline constexpr BindingPoint kOverlayMask{"OVERLAY_MASK_UNIT", 4};          // texture mask value
-inline constexpr BindingPoint kOverlayLegend{"OVERLAY_LEGEND_UNIT", 5};      // RGBA8, alpha = coverage
-inline constexpr BindingPoint kOverlayImage{"OVERLAY_IMAGE_UNIT", 0};        // the composite, RGBA8
+inline constexpr BindingPoint kOverlayFlow = textureUnit("OVERLAY_FLOW_UNIT", 0);          // F_a or I, channel r
+inline constexpr BindingPoint kOverlayDepth = textureUnit("OVERLAY_DEPTH_UNIT", 1);        // 1 = background
+inline constexpr BindingPoint kOverlayShade = textureUnit("OVERLAY_SHADE_UNIT", 2);        // eye normal, colour value
+inline constexpr BindingPoint kOverlayColormap = textureUnit("OVERLAY_COLORMAP_UNIT", 3);  // 256 x 1 RGBA8
+inline constexpr BindingPoint kOverlayMask = textureUnit("OVERLAY_MASK_UNIT", 4);          // texture mask value
+inline constexpr BindingPoint kOverlayLegend = textureUnit("OVERLAY_LEGEND_UNIT", 5);      // RGBA8, alpha = coverage
+inline constexpr BindingPoint kOverlayImage = imageUnit("OVERLAY_IMAGE_UNIT", 0);          // the composite, RGBA8
 // Dye (common/dye.*): the band's index texture and storage, read by the overlay as well.
-inline constexpr BindingPoint kDyeIndex{"DYE_INDEX_UNIT", 6};           // isampler3D: band voxel per cell
-inline constexpr BindingPoint kDyeValue{"DYE_VALUE_BINDING", 0};        // values, three slots of the band's size
-inline constexpr BindingPoint kDyeBand{"DYE_BAND_BINDING", 1};          // closest point and velocity per voxel
-inline constexpr BindingPoint kDyeSource{"DYE_SOURCE_BINDING", 2};      // the emitters of this frame
-inline constexpr BindingPoint kDyeDeparture{"DYE_DEPARTURE_BINDING", 3};  // departure points per voxel
-inline constexpr BindingPoint kDyeFlag{"DYE_FLAG_BINDING", 4};          // per brick, 1 where a step left dye
-inline constexpr BindingPoint kDyeActive{"DYE_ACTIVE_BINDING", 5};      // the band voxels a step updates
+inline constexpr BindingPoint kDyeIndex = textureUnit("DYE_INDEX_UNIT", 6);                // isampler3D: band voxel per cell
+inline constexpr BindingPoint kDyeValue = storageBinding("DYE_VALUE_BINDING", 0);          // three slots of values per voxel
+inline constexpr BindingPoint kDyeBand = storageBinding("DYE_BAND_BINDING", 1);            // closest point, velocity per voxel
+inline constexpr BindingPoint kDyeSource = storageBinding("DYE_SOURCE_BINDING", 2);        // this frame's emitters
+inline constexpr BindingPoint kDyeDeparture = storageBinding("DYE_DEPARTURE_BINDING", 3);  // departure point per voxel
+inline constexpr BindingPoint kDyeFlag = storageBinding("DYE_FLAG_BINDING", 4);            // per brick: 1 where dye was left
+inline constexpr BindingPoint kDyeActive = storageBinding("DYE_ACTIVE_BINDING", 5);        // the voxels a step updates
 // Visibility buffer (common/visibility_buffer.*).
-inline constexpr BindingPoint kVisVertex{"VIS_VERTEX_UNIT", 0};      // samplerBuffer: SurfaceGpu's vertices
-inline constexpr BindingPoint kVisTriangle{"VIS_TRIANGLE_UNIT", 1};  // usamplerBuffer: SurfaceGpu's triangles
-inline constexpr BindingPoint kVisDepth{"VIS_DEPTH_BINDING", 2};     // per pixel: least depth (float bits)
-inline constexpr BindingPoint kVisId{"VIS_ID_BINDING", 3};           // per pixel: least triangle id at that depth
-inline constexpr BindingPoint kVisIndirect{"VIS_INDIRECT_BINDING", 4};  // the GL part's draw command, deferred count
-inline constexpr BindingPoint kVisDeferred{"VIS_DEFERRED_BINDING", 5};  // deferred triangles' vertex indices
-inline constexpr BindingPoint kVisDeferredId{"VIS_DEFERRED_ID_BINDING", 6};  // deferred triangles' ids
-inline constexpr BindingPoint kVisCovering{"VIS_COVERING_BINDING", 7};  // triangles covering a pixel centre
+inline constexpr BindingPoint kVisVertex = textureUnit("VIS_VERTEX_UNIT", 0);                 // samplerBuffer: the vertices
+inline constexpr BindingPoint kVisTriangle = textureUnit("VIS_TRIANGLE_UNIT", 1);             // usamplerBuffer: the triangles
+inline constexpr BindingPoint kVisDepth = storageBinding("VIS_DEPTH_BINDING", 2);             // per pixel: least depth (bits)
+inline constexpr BindingPoint kVisId = storageBinding("VIS_ID_BINDING", 3);                   // per pixel: least triangle id there
+inline constexpr BindingPoint kVisIndirect = storageBinding("VIS_INDIRECT_BINDING", 4);       // the GL part's draw, deferred count
+inline constexpr BindingPoint kVisDeferred = storageBinding("VIS_DEFERRED_BINDING", 5);       // deferred triangles' indices
+inline constexpr BindingPoint kVisDeferredId = storageBinding("VIS_DEFERRED_ID_BINDING", 6);  // deferred triangles' ids
+inline constexpr BindingPoint kVisCovering = storageBinding("VIS_COVERING_BINDING", 7);       // triangles on a pixel centre
 // Contrast enhancement [issue 28] (common/contrast_*, percentile_range.*): the histogram
 // (an SSBO apart from the dye and visibility ones) and the stretch pass.
-inline constexpr BindingPoint kHistogram{"HISTOGRAM_BINDING", 8};
-inline constexpr BindingPoint kContrastFlow{"CONTRAST_FLOW_UNIT", 0};    // F_a or I, channel r
-inline constexpr BindingPoint kContrastDepth{"CONTRAST_DEPTH_UNIT", 1};  // window depth
-inline constexpr BindingPoint kContrastImage{"CONTRAST_IMAGE_UNIT", 0};  // the stretched texture, R32F
+inline constexpr BindingPoint kHistogram = storageBinding("HISTOGRAM_BINDING", 8);
+inline constexpr BindingPoint kContrastFlow = textureUnit("CONTRAST_FLOW_UNIT", 0);    // F_a or I, channel r
+inline constexpr BindingPoint kContrastDepth = textureUnit("CONTRAST_DEPTH_UNIT", 1);  // window depth
+inline constexpr BindingPoint kContrastImage = imageUnit("CONTRAST_IMAGE_UNIT", 0);    // the stretched texture, R32F
 // ParaView's composite of a method's image into its view (paraview/composite.frag).
-inline constexpr BindingPoint kCompositeImage{"COMPOSITE_IMAGE_UNIT", 0};  // the method's composite, RGBA8
-inline constexpr BindingPoint kCompositeDepth{"COMPOSITE_DEPTH_UNIT", 1};  // its surface depth
-inline constexpr BindingPoint kCompositeShade{"COMPOSITE_SHADE_UNIT", 2};  // eye normal, colour value
-inline constexpr BindingPoint kCompositeTable{"COMPOSITE_TABLE_UNIT", 3};  // ParaView's 256 x 1 lookup table
+inline constexpr BindingPoint kCompositeColor = textureUnit("COMPOSITE_COLOR_UNIT", 0);  // the method's composite, RGBA8
+inline constexpr BindingPoint kCompositeDepth = textureUnit("COMPOSITE_DEPTH_UNIT", 1);  // its surface depth
+inline constexpr BindingPoint kCompositeShade = textureUnit("COMPOSITE_SHADE_UNIT", 2);  // eye normal, colour value
+inline constexpr BindingPoint kCompositeTable = textureUnit("COMPOSITE_TABLE_UNIT", 3);  // ParaView's 256 x 1 table
 }  // namespace bindings
 
 // (2) Every point above, for the generated GLSL (a point missing here fails its shader's
@@ -107,8 +114,17 @@ inline constexpr BindingPoint kBindingPoints[] = {
     bindings::kVisVertex, bindings::kVisTriangle, bindings::kVisDepth, bindings::kVisId, bindings::kVisIndirect,
     bindings::kVisDeferred, bindings::kVisDeferredId, bindings::kVisCovering,
     bindings::kHistogram, bindings::kContrastFlow, bindings::kContrastDepth, bindings::kContrastImage,
-    bindings::kCompositeImage, bindings::kCompositeDepth, bindings::kCompositeShade, bindings::kCompositeTable,
+    bindings::kCompositeColor, bindings::kCompositeDepth, bindings::kCompositeShade, bindings::kCompositeTable,
 };
+
+// The highest point of `kind` in the table (-1: none): what a caller that saves and restores
+// the host's bindings must cover (the ParaView plugin's GlStateGuard).
+constexpr int highestPoint(BindingPoint::Kind kind) {
+    int highest = -1;
+    for (const BindingPoint& b : kBindingPoints)
+        if (b.kind == kind && b.point > highest) highest = b.point;
+    return highest;
+}
 
 // (3) Vertex attributes -------------------------------------------------------------------
 // One attribute: its location, its float count, its offset in floats from the start of its
@@ -159,15 +175,15 @@ inline constexpr VertexAttribute kVertexAttributes[] = {surface_vertex::kPosObj,
 // (gl::Framebuffer::finish draws buffer i to attachment i).
 namespace outputs {
 // The surface G-buffer (common/surface_gbuffer.frag, common/visibility_resolve.frag).
-inline constexpr BindingPoint kVelObj{"VEL_OBJ_OUT", 0};  // xyz: P-space velocity, w: layer depth
-inline constexpr BindingPoint kShade{"SHADE_OUT", 1};     // xyz: eye-space normal, w: colour value
-inline constexpr BindingPoint kMask{"MASK_OUT", 2};       // texture mask value
-inline constexpr BindingPoint kPosObj{"POS_OBJ_OUT", 3};  // P-space position (hybrid)
+inline constexpr BindingPoint kVelObj = fragmentOutput("VEL_OBJ_OUT", 0);  // xyz: P-space velocity, w: layer depth
+inline constexpr BindingPoint kShade = fragmentOutput("SHADE_OUT", 1);     // xyz: eye-space normal, w: colour value
+inline constexpr BindingPoint kMask = fragmentOutput("MASK_OUT", 2);       // texture mask value
+inline constexpr BindingPoint kPosObj = fragmentOutput("POS_OBJ_OUT", 3);  // P-space position (hybrid)
 // F_a into a FlowPingPong (isa/texture_advection.frag; ibfvs/polygon_advection.frag, which
 // also writes the shade and mask above, or the texture coordinate on the compute path).
-inline constexpr BindingPoint kFlow{"FLOW_OUT", 0};
+inline constexpr BindingPoint kFlow = fragmentOutput("FLOW_OUT", 0);
 // A time level's velocity into a layer of the levels' 3D texture (hybrid/velocity_levels.frag).
-inline constexpr BindingPoint kLevelVelocity{"LEVEL_VELOCITY_OUT", 0};
+inline constexpr BindingPoint kLevelVelocity = fragmentOutput("LEVEL_VELOCITY_OUT", 0);
 }  // namespace outputs
 
 // Every output above, for the generated GLSL.

@@ -55,7 +55,7 @@ void MapperComposite::draw(const GlStateGuard& guard, int x0, int y0, int w, int
   program.use();
   glUniform2i(program.uniform("uOrigin"), x0, y0);
   glUniform1f(program.uniform("uDepthBias"), 2e-5f);
-  glBindTextureUnit(methods::bindings::kCompositeImage, method.composite().id());
+  glBindTextureUnit(methods::bindings::kCompositeColor, method.composite().id());
   glBindTextureUnit(methods::bindings::kCompositeDepth, method.surfaceDepth().id());
   if (host)
   {
