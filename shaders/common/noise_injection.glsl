@@ -7,7 +7,7 @@
 // came along in this frame (d' = x - its backward coordinate, pixels): what continuous
 // injection along the pathline would deposit; n samples, one per noise cell of the
 // largest step (a fixed count: llvmpipe samples textures in a variable loop per pixel).
-layout(binding = 3) uniform sampler2D uNoisePhases;  // R32F phi of cell (i, j) at (i, j) + margin
+layout(binding = NOISE_PHASES_UNIT) uniform sampler2D uNoisePhases;  // R32F phi of cell (i, j) at (i, j) + margin
 uniform float uPhaseMargin;
 uniform uint uFrame;
 uniform float uAlpha;   // 0 while the texture is frozen

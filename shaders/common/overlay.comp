@@ -1,7 +1,7 @@
 // Overlay [L eq. 10], compute path: one invocation per pixel of the composite (RGBA8).
 #include "common/overlay.glsl"
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
-layout(binding = 0, rgba8) writeonly uniform image2D uComposite;
+layout(binding = OVERLAY_IMAGE_UNIT, rgba8) writeonly uniform image2D uComposite;
 uniform ivec2 uOrigin;  // the pixels written: [uOrigin, uEnd) (a parallel render's own piece)
 uniform ivec2 uEnd;
 void main() {

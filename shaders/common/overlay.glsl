@@ -2,12 +2,12 @@
 // or one of the colour schemes of [W Fig. 6]. Plus texture clipping ([L] Fig. 10:
 // opacity 1 over the background), the optional texture mask (contrast follows speed or
 // any scalar, [L] Fig. 13) and the colour legend on top. Display only: never fed back.
-layout(binding = 0) uniform sampler2D uFlow;       // F_a or the LIC result I, channel r
-layout(binding = 1) uniform sampler2D uDepth;      // 1 = background
-layout(binding = 2) uniform sampler2D uShade;      // xyz: eye-space normal, w: colour value 0..1 (NaN: none)
-layout(binding = 3) uniform sampler2D uColormap;   // 256 x 1 RGBA8
-layout(binding = 4) uniform sampler2D uMaskValue;  // texture mask value 0..1
-layout(binding = 5) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
+layout(binding = OVERLAY_FLOW_UNIT) uniform sampler2D uFlow;           // F_a or the LIC result I, channel r
+layout(binding = OVERLAY_DEPTH_UNIT) uniform sampler2D uDepth;         // 1 = background
+layout(binding = OVERLAY_SHADE_UNIT) uniform sampler2D uShade;         // xyz: eye-space normal, w: colour value 0..1 (NaN: none)
+layout(binding = OVERLAY_COLORMAP_UNIT) uniform sampler2D uColormap;   // 256 x 1 RGBA8
+layout(binding = OVERLAY_MASK_UNIT) uniform sampler2D uMaskValue;      // texture mask value 0..1
+layout(binding = OVERLAY_LEGEND_UNIT) uniform sampler2D uLegendImage;  // RGBA8, alpha = coverage
 // SCHEME (a define per program: OVERLAY_BLEND (eq. 10), OVERLAY_GRAY, ..._GRAY_LIT,
 // ..._HUE_LIT, ..._COOLWARM), WITH_LEGEND and WITH_DYE (0 or 1) select the program's
 // variant: a software rasteriser runs every branch of a shader, taken or not.

@@ -8,11 +8,11 @@ in vec3 vNormalEye;
 in float vColor;
 in float vMask;
 in float vLayerDepth;
-layout(location = 0) out vec4 outVelObj;  // xyz: P-space velocity, w: layer depth
-layout(location = 1) out vec4 outShade;   // xyz: eye-space normal, w: colour value (overlay)
-layout(location = 2) out float outMask;   // texture mask value (overlay)
+layout(location = VEL_OBJ_OUT) out vec4 outVelObj;  // xyz: P-space velocity, w: layer depth
+layout(location = SHADE_OUT) out vec4 outShade;     // xyz: eye-space normal, w: colour value (overlay)
+layout(location = MASK_OUT) out float outMask;      // texture mask value (overlay)
 #ifdef WITH_POSITION
-layout(location = 3) out vec4 outPosObj;  // xyz: P-space position
+layout(location = POS_OBJ_OUT) out vec4 outPosObj;  // xyz: P-space position
 #endif
 void main() {
     outVelObj = vec4(vVelObj, vLayerDepth);

@@ -1,11 +1,11 @@
 // One render of the surface into per-pixel buffers: ISA's velocity image [L §IV-C.1] and
 // the hybrid method's seed textures [W §4]. Per-vertex attributes interpolated over each
 // triangle (Gouraud); only the nearest layer survives the z-test.
-layout(location = 0) in vec3 aPosObj;
-layout(location = 1) in vec3 aNormalObj;
-layout(location = 2) in vec3 aVelObj;
-layout(location = 3) in float aColor;  // colour value, 0..1 over the colour range (NaN: none)
-layout(location = 4) in float aMask;   // texture mask value, 0..1
+layout(location = SURFACE_POS_OBJ_LOCATION) in vec3 aPosObj;
+layout(location = SURFACE_NORMAL_OBJ_LOCATION) in vec3 aNormalObj;
+layout(location = SURFACE_VEL_OBJ_LOCATION) in vec3 aVelObj;
+layout(location = SURFACE_COLOR_LOCATION) in float aColor;  // colour value, 0..1 over the colour range (NaN: none)
+layout(location = SURFACE_MASK_LOCATION) in float aMask;    // texture mask value, 0..1
 uniform mat4 uViewProj;
 uniform mat4 uView;
 uniform vec4 uLayerDepthRow;  // methods::layerDepthRow

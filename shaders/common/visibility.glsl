@@ -12,7 +12,11 @@ uniform ivec2 uSize;  // image size in pixels
 uniform int uPass;    // 0: least depth; 1: least triangle id at that depth
 
 uvec3 triangleVertices(uint tri) { return texelFetch(uTriangles, int(tri)).xyz; }
-vec3 vertexPosition(uint v) { return texelFetch(uVertices, int(v) * VERTEX_TEXELS).xyz; }
+// The position starts a texel (gpu_bindings.h asserts it): one fetch.
+vec3 vertexPosition(uint v) { return texelFetch(uVertices, int(v) * VERTEX_TEXELS + SURFACE_POS_OBJ_OFFSET / 4).xyz; }
+// Float `i` (a SURFACE_*_OFFSET) of a vertex held as its texels, and the three from `i` on.
+float vertexFloat(vec4 t[VERTEX_TEXELS], int i) { return t[i / 4][i % 4]; }
+vec3 vertexVec3(vec4 t[VERTEX_TEXELS], int i) { return vec3(vertexFloat(t, i), vertexFloat(t, i + 1), vertexFloat(t, i + 2)); }
 
 // One covered pixel of triangle `tri` at window depth `depth` (the same float in both
 // passes: the same code computes it from the same inputs).

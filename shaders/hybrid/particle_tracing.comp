@@ -3,7 +3,7 @@
 // the noise mean, as the fragment pass's clear leaves them.
 #include "hybrid/particle_tracing.glsl"
 layout(local_size_x = LOCAL_X, local_size_y = LOCAL_Y, local_size_z = 1) in;
-layout(binding = 0, r32f) writeonly uniform image2D uLic;
+layout(binding = LIC_IMAGE_UNIT, r32f) writeonly uniform image2D uLic;
 uniform ivec2 uOrigin;  // the pixels traced: [uOrigin, uEnd) (a parallel render's tile)
 uniform ivec2 uEnd;
 void main() {

@@ -12,12 +12,12 @@
 // moves them through per-pixel step maps (the step length folded in), and it reads no
 // uniform: llvmpipe reads a uniform inside divergent control flow with one load per lane.
 #include "hybrid/kernels.glsl"
-layout(binding = 0) uniform sampler2D uSeedVelocity;  // the velocity image, nearest: w = layer depth, 0 off the surface
+layout(binding = LIC_SEED_VELOCITY_UNIT) uniform sampler2D uSeedVelocity;  // the velocity image, nearest: w = layer depth, 0 off the surface
 #ifdef UNSTEADY
 // Unsteady flow [W §3]: the velocity image per time level, layer j at data time
 // uLevelTime[j] after the frame's (divided by the reference speed, uVelocityScale); the
 // trilinear lookup is linear in time between levels.
-layout(binding = 1) uniform sampler3D uVelLevels;
+layout(binding = LIC_VELOCITY_UNIT) uniform sampler3D uVelLevels;
 uniform int uLevelCount;
 uniform float uLevelTime[MAX_LEVELS];  // increasing
 uniform float uTimePerStep;
@@ -30,11 +30,11 @@ float levelOf(float t) {
     return float(uLevelCount - 1);
 }
 #else
-layout(binding = 1) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
+layout(binding = LIC_VELOCITY_UNIT) uniform sampler2D uVelObj;    // RGBA32F tangential velocity, linear
 #endif
 // The solid noise, RGBA8 2 x 2 neighbourhoods (solid_noise.comp), read as an image: a
 // texelFetch would look up its mip level per lane.
-layout(binding = NOISE_IMAGE_UNIT, rgba8) readonly uniform image3D uNoise;
+layout(binding = LIC_NOISE_IMAGE_UNIT, rgba8) readonly uniform image3D uNoise;
 uniform mat4 uTexFromObj;     // P-space -> image texture coordinates (x, y, -, w): eq. 2
 // The ray through a pixel: P = origin + s dir with, at normalised device coordinates n,
 // perspective: origin = uEye, dir = uForward + n.x uRayRight + n.y uRayUp; orthographic:

@@ -16,7 +16,7 @@
 // part of each hash is taken once per row.
 #include "common/noise.glsl"
 layout(local_size_x = GROUP, local_size_y = GROUP, local_size_z = 1) in;
-layout(binding = 0, r32ui) writeonly uniform uimage3D uPacked;  // the RGBA8 texture, as 32-bit words
+layout(binding = SOLID_NOISE_IMAGE_UNIT, r32ui) writeonly uniform uimage3D uPacked;  // the RGBA8 texture, as 32-bit words
 uniform uint uFrame;
 uniform float uPeriod;
 uniform int uProfile;

@@ -2,5 +2,5 @@
 // (common/surface_gbuffer.frag, methods::layerDepthRow); 0 on the background.
 in vec3 vVel;
 in float vLayerDepth;
-layout(location = 0) out vec4 outVel;
+layout(location = LEVEL_VELOCITY_OUT) out vec4 outVel;
 void main() { outVel = vec4(vVel, vLayerDepth); }

@@ -3,10 +3,10 @@
 // frame's normals and scaled as the steady path scales the frame's field (§0, [W §3]:
 // normalised, or clamped at the frame's speed percentile), then divided by the frame's
 // reference speed so that 16-bit targets keep precision whatever the data's units.
-layout(location = 0) in vec3 aPosObj;
-layout(location = 1) in vec3 aNormalObj;
-layout(location = 2) in vec3 aFieldA;
-layout(location = 3) in vec3 aFieldB;
+layout(location = SURFACE_POS_OBJ_LOCATION) in vec3 aPosObj;
+layout(location = SURFACE_NORMAL_OBJ_LOCATION) in vec3 aNormalObj;
+layout(location = LEVEL_FIELD_A_LOCATION) in vec3 aFieldA;
+layout(location = LEVEL_FIELD_B_LOCATION) in vec3 aFieldB;
 uniform mat4 uViewProj;
 uniform vec4 uLayerDepthRow;  // methods::layerDepthRow
 uniform float uWeight;

@@ -3,9 +3,9 @@
 // (ibfvs/polygon_advection.glsl); the gray flow background elsewhere [L §IV-F.2].
 #include "ibfvs/polygon_advection.glsl"
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
-layout(binding = 1) uniform sampler2D uTexcoord;  // RG32F, from the draw
-layout(binding = 2) uniform sampler2D uDepth;     // the draw's depth, 1 = background
-layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
+layout(binding = IBFVS_TEXCOORD_UNIT) uniform sampler2D uTexcoord;  // RG32F, from the draw
+layout(binding = IBFVS_DEPTH_UNIT) uniform sampler2D uDepth;        // the draw's depth, 1 = background
+layout(binding = IBFVS_NEXT_FLOW_IMAGE_UNIT, r32f) writeonly uniform image2D uNextFlow;
 uniform float uFlowBackground;
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

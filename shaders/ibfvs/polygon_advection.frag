@@ -7,9 +7,9 @@ noperspective in vec2 vTexcoord;
 in vec3 vNormalEye;
 in float vColor;
 in float vMask;
-layout(location = 0) out vec4 outFlow;  // ADVECT_IN_COMPUTE: RG32F texture coordinate
-layout(location = 1) out vec4 outShade;
-layout(location = 2) out float outMask;
+layout(location = FLOW_OUT) out vec4 outFlow;  // ADVECT_IN_COMPUTE: RG32F texture coordinate
+layout(location = SHADE_OUT) out vec4 outShade;
+layout(location = MASK_OUT) out float outMask;
 void main() {
 #ifdef ADVECT_IN_COMPUTE
     outFlow = vec4(vTexcoord, 0.0, 1.0);

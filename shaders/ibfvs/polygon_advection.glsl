@@ -4,7 +4,7 @@
 // injected [L eq. 9] (every pixel of the projected surface S').
 #include "common/resample.glsl"
 #include "common/noise_injection.glsl"
-layout(binding = 0) uniform sampler2D uPrevFlow;  // R32F, linear, clamp to edge
+layout(binding = IBFVS_PREV_FLOW_UNIT) uniform sampler2D uPrevFlow;  // R32F, linear, clamp to edge
 
 float polygonAdvectedFlow(vec2 px, vec2 texcoord) {
     vec2 motionPx = px - texcoord * vec2(textureSize(uPrevFlow, 0));

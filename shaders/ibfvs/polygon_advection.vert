@@ -3,11 +3,11 @@
 // (noperspective) so large triangles at a steep depth gradient show no artefact
 // [L §IV-J].
 #include "ibfvs/mesh_projection.glsl"
-layout(location = 0) in vec3 aPosObj;
-layout(location = 1) in vec3 aNormalObj;
-layout(location = 2) in vec3 aVelObj;
-layout(location = 3) in float aColor;
-layout(location = 4) in float aMask;
+layout(location = SURFACE_POS_OBJ_LOCATION) in vec3 aPosObj;
+layout(location = SURFACE_NORMAL_OBJ_LOCATION) in vec3 aNormalObj;
+layout(location = SURFACE_VEL_OBJ_LOCATION) in vec3 aVelObj;
+layout(location = SURFACE_COLOR_LOCATION) in float aColor;
+layout(location = SURFACE_MASK_LOCATION) in float aMask;
 uniform mat4 uViewProj;
 uniform mat4 uPrevViewProj;
 uniform mat4 uView;

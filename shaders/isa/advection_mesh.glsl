@@ -6,9 +6,9 @@
 // translate remedy reprojects under camera motion. Output per vertex: (texcoord in
 // [0,1]^2, edge flag, 0) in an (R+1)^2 RGBA32F image that the static case reuses.
 #include "isa/edge_detection.glsl"
-layout(binding = 0) uniform sampler2D uVelocity;     // RGBA32F, xyz P-space velocity
-layout(binding = 1) uniform sampler2D uDepth;        // window depth, 1 = background
-layout(binding = 2) uniform sampler2D uSourceDepth;  // depth where the source texture was made
+layout(binding = MESH_VELOCITY_UNIT) uniform sampler2D uVelocity;         // RGBA32F, xyz P-space velocity
+layout(binding = MESH_DEPTH_UNIT) uniform sampler2D uDepth;               // window depth, 1 = background
+layout(binding = MESH_SOURCE_DEPTH_UNIT) uniform sampler2D uSourceDepth;  // depth where the source texture was made
 uniform mat4 uInvViewProj;     // current view, to recover x from depth
 uniform mat4 uSourceViewProj;  // T_src
 uniform vec2 uViewport;        // pixels

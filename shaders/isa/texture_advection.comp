@@ -2,7 +2,7 @@
 // per pixel writes the next F_a (R32F image).
 #include "isa/texture_advection.glsl"
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
-layout(binding = 0, r32f) writeonly uniform image2D uNextFlow;
+layout(binding = ISA_NEXT_FLOW_IMAGE_UNIT, r32f) writeonly uniform image2D uNextFlow;
 uniform ivec2 uOrigin;  // the pixels written: [uOrigin, uEnd) (a parallel render's tile)
 uniform ivec2 uEnd;
 void main() {

@@ -6,7 +6,7 @@
 in vec2 vTexcoord;
 in float vEdge;
 #endif
-out vec4 outFlow;
+layout(location = FLOW_OUT) out vec4 outFlow;
 void main() {
 #ifdef PER_PIXEL
     vec4 m = meshAtPixel(gl_FragCoord.xy);

@@ -8,9 +8,9 @@
 // the surface only [L eq. 9], in the same pass.
 #include "common/resample.glsl"
 #include "common/noise_injection.glsl"
-layout(binding = 0) uniform sampler2D uPrevFlow;     // F_a(k-1), R32F, linear filtering
-layout(binding = 1) uniform sampler2D uMesh;         // (R+1)^2: texcoord xy, edge flag z; linear
-layout(binding = 2) uniform sampler2D uSurfaceDepth; // velocity image depth, 1 = background
+layout(binding = ISA_PREV_FLOW_UNIT) uniform sampler2D uPrevFlow;  // F_a(k-1), R32F, linear filtering
+layout(binding = ISA_MESH_UNIT) uniform sampler2D uMesh;           // (R+1)^2: texcoord xy, edge flag z; linear
+layout(binding = ISA_SURFACE_DEPTH_UNIT) uniform sampler2D uSurfaceDepth; // velocity image depth, 1 = background
 uniform int uGridRes;
 uniform int uEdgeBlending;
 uniform float uFillAlpha;  // alpha of the noise history at edge points (also while frozen)

@@ -1,6 +1,6 @@
 // ISA stage 3, texture advection [L §IV-D.1], mesh variant: the R x R grid at its image
 // positions, textured with the previous F_a at the backward-integrated coordinates.
-layout(binding = 1) uniform sampler2D uMesh;  // (R+1)^2: texcoord xy, edge flag z
+layout(binding = ISA_MESH_UNIT) uniform sampler2D uMesh;  // (R+1)^2: texcoord xy, edge flag z
 uniform int uGridRes;
 out vec2 vTexcoord;
 out float vEdge;

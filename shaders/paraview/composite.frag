@@ -7,14 +7,14 @@
 // computed here from the method's G-buffer as ParaView's mapper would (host_look.h): a
 // solid colour or the colour value through its lookup table, ambient + diffuse under its
 // directional lights, two-sided; the surface is then rasterised once per frame.
-layout(binding = 0) uniform sampler2D uImage;  // the method's composite, RGBA8
-layout(binding = 1) uniform sampler2D uDepth;  // the method's surface depth, 1 = background
+layout(binding = COMPOSITE_COLOR_UNIT) uniform sampler2D uImage;  // the method's composite, RGBA8
+layout(binding = COMPOSITE_DEPTH_UNIT) uniform sampler2D uDepth;  // the method's surface depth, 1 = background
 uniform ivec2 uOrigin;                         // the viewport's lower-left pixel
 uniform float uDepthBias;                      // window depth: rounding between VTK's and our matrices
 out vec4 outColor;
 #ifdef HOST_LOOK
-layout(binding = 2) uniform sampler2D uShade;  // xyz: eye-space normal, w: colour value 0..1 over uValueRange
-layout(binding = 3) uniform sampler2D uTable;  // 256 x 1 lookup table colours over uTableRange
+layout(binding = COMPOSITE_SHADE_UNIT) uniform sampler2D uShade;  // xyz: eye-space normal, w: colour value 0..1 over uValueRange
+layout(binding = COMPOSITE_TABLE_UNIT) uniform sampler2D uTable;  // 256 x 1 lookup table colours over uTableRange
 uniform int uMultiply;          // blend overlay: image x ParaView's colour; else the image
 uniform int uScalars;           // 0: uSolid
 uniform vec2 uValueRange, uTableRange;

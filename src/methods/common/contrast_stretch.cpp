@@ -21,8 +21,8 @@ void ContrastStretch::measure(const gl::Texture2D& flow, const gl::Texture2D& de
     const PixelRect r = pixels.value_or(PixelRect{0, 0, viewport_.width, viewport_.height});
     range_.bindCleared();
     if (!r.empty()) {
-        glBindTextureUnit(kContrastFlowUnit, flow.id());
-        glBindTextureUnit(kContrastDepthUnit, depth.id());
+        glBindTextureUnit(bindings::kContrastFlow, flow.id());
+        glBindTextureUnit(bindings::kContrastDepth, depth.id());
         histogram_.use();
         glUniform2i(histogram_.uniform("uOrigin"), r.x0, r.y0);
         glUniform2i(histogram_.uniform("uEnd"), r.x1, r.y1);
@@ -34,12 +34,12 @@ void ContrastStretch::measure(const gl::Texture2D& flow, const gl::Texture2D& de
 const gl::Texture2D& ContrastStretch::stretch(const gl::Texture2D& flow, const gl::Texture2D& depth) {
     if (!enabled_) return flow;
     const glm::vec2 r = range_.range();
-    glBindTextureUnit(kContrastFlowUnit, flow.id());
-    glBindTextureUnit(kContrastDepthUnit, depth.id());
+    glBindTextureUnit(bindings::kContrastFlow, flow.id());
+    glBindTextureUnit(bindings::kContrastDepth, depth.id());
     stretch_.use();
     glUniform2f(stretch_.uniform("uRange"), r.x, r.y);
     glUniform2i(stretch_.uniform("uEnd"), viewport_.width, viewport_.height);
-    glBindImageTexture(kContrastImageUnit, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(bindings::kContrastImage, stretched_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchPerPixel(viewport_.width, viewport_.height);
     return stretched_;
 }

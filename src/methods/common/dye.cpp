@@ -135,13 +135,13 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     const DyeGrid& g = band_.grid;
     glUniform3fv(program_.uniform("uDyeOrigin"), 1, glm::value_ptr(g.origin));
     glUniform1f(program_.uniform("uDyeH"), g.h);
-    glBindTextureUnit(kDyeIndexUnit, indexTexture_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, values_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeBandBinding, bandData_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeSourceBinding, emitters_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeDepartureBinding, departures_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeFlagBinding, flags_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeActiveBinding, active_.id());
+    glBindTextureUnit(bindings::kDyeIndex, indexTexture_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeValue, values_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeBand, bandData_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeSource, emitters_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeDeparture, departures_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeFlag, flags_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeActive, active_.id());
     const float decayFactor = std::exp(-std::max(decay, 0.0f) * std::abs(dt));
     const int emitterCount = int(emitters.size());
     if (dt != 0.0f && maxSpeed_ > 0.0f) {

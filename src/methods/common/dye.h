@@ -21,15 +21,8 @@
 
 namespace flowsurf::methods {
 
-// Work group of the band passes and the bindings the dye shaders share (shader_interface.cpp).
+// Work group of the band passes (DYE_GROUP; their binding points are in gpu_bindings.h).
 inline constexpr int kDyeGroup = 256;
-inline constexpr int kDyeIndexUnit = 6;      // isampler3D: band voxel of each grid cell
-inline constexpr int kDyeValueBinding = 0;   // SSBO: values, three slots of the band's size
-inline constexpr int kDyeBandBinding = 1;    // SSBO: closest point and velocity per band voxel
-inline constexpr int kDyeSourceBinding = 2;  // SSBO: the emitters of this frame
-inline constexpr int kDyeDepartureBinding = 3;  // SSBO: departure points per band voxel
-inline constexpr int kDyeFlagBinding = 4;       // SSBO: per brick, 1 where a step left dye
-inline constexpr int kDyeActiveBinding = 5;     // SSBO: the band voxels a step updates
 
 // A source emitting this frame, on the surface.
 struct DyeEmitter {

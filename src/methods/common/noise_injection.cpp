@@ -1,5 +1,7 @@
 #include "methods/common/noise_injection.h"
 
+#include "methods/common/gpu_bindings.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -47,7 +49,7 @@ void NoiseInjection::bind(const gl::Program& program, const NoiseStep& step) con
     glUniform1f(program.uniform("uPeriod"), n.period);
     glUniform1i(program.uniform("uProfile"), int(n.profile));
     glUniform1f(program.uniform("uPhaseMargin"), float(kMargin));
-    glBindTextureUnit(3, phases_.id());
+    glBindTextureUnit(bindings::kNoisePhases, phases_.id());
 }
 
 }  // namespace flowsurf::methods

@@ -111,11 +111,11 @@ void Overlay::bindInputs(const gl::Program& prog, const gl::Texture2D& flow, con
     glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
     glUniform1f(prog.uniformIfActive("uContrast"), enhancesTexture(params_.enhanceContrast) ? 1.0f : params_.contrast);
     glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);
-    glBindTextureUnit(0, flow.id());
-    glBindTextureUnit(1, depth.id());
-    glBindTextureUnit(2, shade.id());
-    glBindTextureUnit(3, colormap_.id());
-    glBindTextureUnit(4, mask.id());
+    glBindTextureUnit(bindings::kOverlayFlow, flow.id());
+    glBindTextureUnit(bindings::kOverlayDepth, depth.id());
+    glBindTextureUnit(bindings::kOverlayShade, shade.id());
+    glBindTextureUnit(bindings::kOverlayColormap, colormap_.id());
+    glBindTextureUnit(bindings::kOverlayMask, mask.id());
 }
 
 void Overlay::measureLightness(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
@@ -142,10 +142,10 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
         const glm::vec2 l = lightness_.range();
         glUniform2f(prog.uniform("uLightRange"), l.x, l.y);
     }
-    glBindTextureUnit(5, params_.legend ? legendSizes_[legendShown_].texture.id() : colormap_.id());
+    glBindTextureUnit(bindings::kOverlayLegend, params_.legend ? legendSizes_[legendShown_].texture.id() : colormap_.id());
     if (dye) {
-        glBindTextureUnit(kDyeIndexUnit, dye->index);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDyeValueBinding, dye->values);
+        glBindTextureUnit(bindings::kDyeIndex, dye->index);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeValue, dye->values);
         glUniform1i(prog.uniform("uDyeSlot"), dye->slot);
         glUniform3fv(prog.uniform("uDyeOrigin"), 1, &dye->grid.origin.x);
         glUniform1f(prog.uniform("uDyeH"), dye->grid.h);
@@ -156,7 +156,7 @@ void Overlay::apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const
         GLint composite = 0;
         glGetNamedFramebufferAttachmentParameteriv(target.id(), GL_COLOR_ATTACHMENT0,
                                                    GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &composite);
-        glBindImageTexture(0, GLuint(composite), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glBindImageTexture(bindings::kOverlayImage, GLuint(composite), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
         glUniform2i(prog.uniform("uOrigin"), r.x0, r.y0);
         glUniform2i(prog.uniform("uEnd"), r.x1, r.y1);
         dispatchPerPixel(r.width(), r.height());  // read next also by the edge mask's draw

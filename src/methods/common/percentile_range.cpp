@@ -44,7 +44,7 @@ PercentileRange::PercentileRange(float percent, float smoothingFrames)
 
 void PercentileRange::bindCleared() const {
     glClearNamedBufferData(histogram_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogramBinding, histogram_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kHistogram, histogram_.id());
 }
 
 void PercentileRange::dispatchHistogram(int width, int height) {

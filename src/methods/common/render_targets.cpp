@@ -1,6 +1,7 @@
 #include "methods/common/render_targets.h"
 
 #include "core/noise.h"
+#include "methods/common/gpu_bindings.h"
 
 namespace flowsurf::methods {
 
@@ -15,14 +16,14 @@ FlowPingPong::FlowPingPong(const core::Viewport& viewport, std::initializer_list
     for (int i = 0; i < 2; ++i) {
         flow_[i] = gl::Texture2D(GL_R32F, viewport.width, viewport.height, GL_LINEAR);
         fbo_[i] = gl::Framebuffer::create();
-        fbo_[i].attach(GL_COLOR_ATTACHMENT0, flow_[i]);
+        fbo_[i].attach(GL_COLOR_ATTACHMENT0 + outputs::kFlow, flow_[i]);
         int colors = 1;
         for (const auto& [attachment, texture] : shared) {
             fbo_[i].attach(attachment, *texture);
             colors += attachment >= GL_COLOR_ATTACHMENT0 && attachment <= GL_COLOR_ATTACHMENT15;
         }
         fbo_[i].finish(colors);
-        glClearNamedFramebufferfv(fbo_[i].id(), GL_COLOR, 0, mean);
+        glClearNamedFramebufferfv(fbo_[i].id(), GL_COLOR, outputs::kFlow, mean);
     }
 }
 

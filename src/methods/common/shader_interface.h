@@ -1,11 +1,12 @@
-// flowsurf — the typed interface between C++ and GLSL: every enum value and limit a
-// shader compares against reaches it as a `#define` generated from the C++ definition
-// (the enum name tables of params.h, TimeLevelSource::kMaxLevels, core::kNoiseMean), so
-// no number is copied by hand. Every program of the methods is built by `program()`,
-// which prepends these definitions to its own variant defines.
+// flowsurf — the typed interface between C++ and GLSL: every enum value, limit and binding
+// point a shader uses reaches it as a `#define` generated from the C++ definition (the
+// enum name tables of params.h, TimeLevelSource::kMaxLevels, core::kNoiseMean, the table
+// of gpu_bindings.h), so no number is copied by hand. Every program is built by
+// `program()`, which prepends these definitions to its own variant defines.
 #pragma once
 
 #include "gl/objects.h"
+#include "methods/common/gpu_bindings.h"
 
 #include <initializer_list>
 #include <string>
@@ -19,21 +20,14 @@ const std::string& shaderInterface();
 // Work-group side of the per-pixel compute passes (PIXEL_GROUP in GLSL).
 inline constexpr int kPixelGroup = 8;
 
-// Contrast enhancement [issue 28]: the histogram's storage buffer binding and the texture
-// and image units of the stretch pass (HISTOGRAM_BINDING, CONTRAST_FLOW_UNIT, ...).
-inline constexpr int kHistogramBinding = 8;  // SSBO, apart from the dye and visibility ones
-inline constexpr int kContrastFlowUnit = 0;
-inline constexpr int kContrastDepthUnit = 1;
-inline constexpr int kContrastImageUnit = 0;  // the stretched texture, an image store
-// IBFVS edge mask (ibfvs/edge_mask.h): the surface depth it tests against, and the SSBO its
-// geometry shader writes the outline quads to when they are shared between processes.
-inline constexpr int kEdgeMaskDepthUnit = 0;
-inline constexpr int kEdgeCaptureBinding = 9;
-
 // A per-pixel compute pass over a width x height image with the bound program, then the
 // barrier that makes its image stores visible to what reads them next: textures, read-backs,
 // framebuffer draws.
 void dispatchPerPixel(int width, int height);
+
+// Enables attribute `a` of `vao`: floats read from the buffer bound at a.buffer, a.offset
+// floats into each vertex.
+void enableAttribute(GLuint vao, const VertexAttribute& a);
 
 // A linked program of the embedded `stages` with the interface and `defines` prepended.
 gl::Program program(std::initializer_list<std::pair<GLenum, std::string>> stages, const std::string& defines = "");

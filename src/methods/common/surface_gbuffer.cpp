@@ -29,12 +29,12 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces),
       clearBackground_(clearBackground) {
-    fbo_.attach(GL_COLOR_ATTACHMENT0, velocity_);
-    fbo_.attach(GL_COLOR_ATTACHMENT1, shade_);
-    fbo_.attach(GL_COLOR_ATTACHMENT2, mask_);
+    fbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kVelObj, velocity_);
+    fbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kShade, shade_);
+    fbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kMask, mask_);
     if (withPosition) {
         position_ = gl::Texture2D(GL_RGBA32F, viewport.width, viewport.height, GL_NEAREST);
-        fbo_.attach(GL_COLOR_ATTACHMENT3, position_);
+        fbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kPosObj, position_);
     }
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     fbo_.finish(targets_);

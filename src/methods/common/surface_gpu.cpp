@@ -2,6 +2,7 @@
 
 #include "core/derived_fields.h"
 #include "core/errors.h"
+#include "methods/common/shader_interface.h"
 
 #include <algorithm>
 #include <atomic>
@@ -15,7 +16,10 @@ namespace flowsurf::methods {
 
 namespace {
 std::atomic<uint64_t> nextGeneration{1};
-}
+
+// Writes the `a.components` floats at `value` into attribute `a` of `vertex`.
+void put(float* vertex, const VertexAttribute& a, const float* value) { std::copy_n(value, a.components, vertex + a.offset); }
+}  // namespace
 
 std::string selectField(const core::SurfaceMesh& mesh, const std::string& requested, const std::string& where) {
     if (mesh.fields.empty())
@@ -256,15 +260,18 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     }
     const float clampSpeed = st.clampSpeed;
     clampSpeed_ = params.normalize ? 0.0f : clampSpeed;
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.vertexCount() * kVertexFloats);
+    using namespace surface_vertex;
+    std::vector<float> interleaved(mesh.vertexCount() * kFloats, 0.0f);  // the padding stays 0
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         glm::vec3 v = vel[i];
         if (params.normalize && speed[i] > 0.0f) v /= speed[i];
         else if (clampSpeed > 0.0f && speed[i] > clampSpeed) v *= clampSpeed / speed[i];
-        const glm::vec3& p = mesh.positions[i];
-        const glm::vec3& n = mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, v.x, v.y, v.z, color[i], mask[i], 0.0f});
+        float* vertex = interleaved.data() + i * kFloats;
+        put(vertex, kPosObj, &mesh.positions[i].x);
+        put(vertex, kNormalObj, &mesh.normals[i].x);
+        put(vertex, kVelObj, &v.x);
+        put(vertex, kColor, &color[i]);
+        put(vertex, kMask, &mask[i]);
     }
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
@@ -277,7 +284,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
 
 bool SurfaceGpu::updateVertices(const core::SurfaceMesh& mesh, const std::string& fieldName,
                                 const CommonParams& params, const SurfaceStatistics* whole) {
-    if (GLsizeiptr(mesh.vertexCount() * kVertexStride) != vertices_.size() ||
+    if (GLsizeiptr(mesh.vertexCount() * surface_vertex::kStride) != vertices_.size() ||
         mesh.triangleCount() != triangles_)
         return false;
     std::vector<float> interleaved = interleave(mesh, fieldName, params, whole);
@@ -293,7 +300,7 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     wholeTriangles_ = whole && whole->triangles ? whole->triangles : triangles_;
     // An empty piece (a process of a parallel render holding no triangles) draws nothing;
     // GL buffers need at least one byte.
-    interleaved.resize(std::max<size_t>(interleaved.size(), kVertexFloats));
+    interleaved.resize(std::max<size_t>(interleaved.size(), surface_vertex::kFloats));
     vertices_ = gl::Buffer(GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_DYNAMIC_STORAGE_BIT);
     const glm::uvec3 none{0, 0, 0};
     indices_ = gl::Buffer(GLsizeiptr(std::max<size_t>(mesh.triangles.size(), 1) * sizeof(glm::uvec3)),
@@ -306,32 +313,23 @@ SurfaceGpu::SurfaceGpu(const core::SurfaceMesh& mesh, const std::string& fieldNa
     }
     vao_ = gl::VertexArray::create();
     GLuint vao = vao_.id();
-    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, kVertexStride);
+    glVertexArrayVertexBuffer(vao, surface_vertex::kBuffer, vertices_.id(), 0, surface_vertex::kStride);
     glVertexArrayElementBuffer(vao, indices_.id());
-    // 0: position, 1: normal, 2: advection velocity (P-space), 3: colour value, 4: mask value.
-    for (GLuint a = 0; a < 5; ++a) {
-        glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, a < 3 ? 3 : 1, GL_FLOAT, GL_FALSE, (a < 4 ? a * 3 : 10) * sizeof(float));
-        glVertexArrayAttribBinding(vao, a, 0);
-    }
+    for (const VertexAttribute& a : surface_vertex::kAttributes) enableAttribute(vao, a);
     if (withEdges) {
         std::vector<uint32_t> edges = edgeAdjacency(mesh.triangles, seams ? seams->edges : std::vector<uint64_t>{});
         edgeCount_ = edges.size() / 4;
         edgeIndices_ = gl::Buffer(GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), 0);
         edgeVao_ = gl::VertexArray::create();
-        glVertexArrayVertexBuffer(edgeVao_.id(), 0, vertices_.id(), 0, kVertexStride);
+        glVertexArrayVertexBuffer(edgeVao_.id(), surface_vertex::kBuffer, vertices_.id(), 0, surface_vertex::kStride);
         glVertexArrayElementBuffer(edgeVao_.id(), edgeIndices_.id());
-        glEnableVertexArrayAttrib(edgeVao_.id(), 0);
-        glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(edgeVao_.id(), 0, 0);
+        enableAttribute(edgeVao_.id(), surface_vertex::kPosObj);
         if (seams && !seams->drawn.empty()) {
             seamCount_ = seams->drawn.size();
             seamPositions_ = gl::Buffer(GLsizeiptr(seamCount_ * sizeof(AdjacentEdge)), seams->drawn.data(), 0);
             seamVao_ = gl::VertexArray::create();
-            glVertexArrayVertexBuffer(seamVao_.id(), 0, seamPositions_.id(), 0, sizeof(glm::vec3));
-            glEnableVertexArrayAttrib(seamVao_.id(), 0);
-            glVertexArrayAttribFormat(seamVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-            glVertexArrayAttribBinding(seamVao_.id(), 0, 0);
+            glVertexArrayVertexBuffer(seamVao_.id(), surface_vertex::kBuffer, seamPositions_.id(), 0, sizeof(glm::vec3));
+            enableAttribute(seamVao_.id(), surface_vertex::kPosObj.alone());
         }
     }
     generation_ = nextGeneration++;

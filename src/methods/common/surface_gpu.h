@@ -98,15 +98,12 @@ public:
     void drawEdgesAdjacency() const;
     bool hasEdges() const { return edgeCount_ + seamCount_ > 0; }
     GLuint vertexArray() const { return vao_.id(); }
-    // The interleaved vertices (kVertexFloats floats: position, normal, velocity, colour
-    // value and mask value, both mapped to 0..1 by their ranges, NaN where undefined, and
-    // one float of padding, so that a vertex is three RGBA32F texels) and the triangle
-    // indices, for passes that pair the geometry with other per-vertex data.
+    // The interleaved vertices (surface_vertex in gpu_bindings.h: position, normal,
+    // velocity, colour value and mask value, padded to whole RGBA32F texels) and the
+    // triangle indices, for passes that pair the geometry with other per-vertex data.
     GLuint vertexBuffer() const { return vertices_.id(); }
     GLuint indexBuffer() const { return indices_.id(); }
-    static constexpr int kVertexFloats = 12;
-    static constexpr GLsizei kVertexStride = kVertexFloats * sizeof(float);
-    // The same two buffers as buffer textures: vertices as RGBA32F (three texels a vertex),
+    // The same two buffers as buffer textures: vertices as RGBA32F (surface_vertex::kTexels),
     // triangles as RGB32UI (one texel a triangle). Null when either is longer than the
     // renderer's GL_MAX_TEXTURE_BUFFER_SIZE.
     const gl::BufferTexture& vertexTexture() const { return vertexTexture_; }

@@ -35,9 +35,7 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
       noAttachments_(gl::Framebuffer::create()) {
     glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, viewport.width);
     glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, viewport.height);
-    glEnableVertexArrayAttrib(deferredVao_.id(), 0);
-    glVertexArrayAttribFormat(deferredVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(deferredVao_.id(), 0, 0);
+    enableAttribute(deferredVao_.id(), surface_vertex::kPosObj);
     // The renderer's limits, once: deferred triangles (the large and the clipped ones, which
     // cannot be that many) fit the largest storage block, beyond it they are dropped; so do
     // the covering triangles' ids, beyond it the second pass runs over every triangle; work
@@ -68,10 +66,10 @@ void VisibilityBuffer::ensureCapacity(size_t triangles) {
 }
 
 void VisibilityBuffer::bind(const SurfaceGpu& surface) const {
-    glBindTextureUnit(kVisVertexUnit, surface.vertexTexture().id());
-    glBindTextureUnit(kVisTriangleUnit, surface.triangleTexture().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDepthBinding, depth_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIdBinding, ids_.id());
+    glBindTextureUnit(bindings::kVisVertex, surface.vertexTexture().id());
+    glBindTextureUnit(bindings::kVisTriangle, surface.triangleTexture().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisDepth, depth_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisId, ids_.id());
 }
 
 void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces,
@@ -90,11 +88,11 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     const std::array<uint32_t, kIndirectWords> command{0, 1, 0, 0, 0, 0, 0, 0, 0, 1};  // see kIndirectWords
     glNamedBufferSubData(indirect_.id(), 0, sizeof(command), command.data());
     bind(surface);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisIndirectBinding, indirect_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredBinding, deferred_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisDeferredIdBinding, deferredIds_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisCoveringBinding, covering_.id());
-    glVertexArrayVertexBuffer(deferredVao_.id(), 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisIndirect, indirect_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisDeferred, deferred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisDeferredId, deferredIds_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisCovering, covering_.id());
+    glVertexArrayVertexBuffer(deferredVao_.id(), surface_vertex::kBuffer, surface.vertexBuffer(), 0, surface_vertex::kStride);
 
     for (const gl::Program* p : {&compute_, &glPass_}) {
         glProgramUniformMatrix4fv(p->id(), p->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));

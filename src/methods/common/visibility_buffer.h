@@ -23,17 +23,9 @@
 
 namespace flowsurf::methods {
 
-// Where the visibility passes find their inputs and outputs (shader_interface.cpp turns
-// these into VIS_* defines): texture units for the surface, storage blocks for the rest.
-inline constexpr int kVisVertexUnit = 0;        // samplerBuffer: SurfaceGpu's vertices
-inline constexpr int kVisTriangleUnit = 1;      // usamplerBuffer: SurfaceGpu's triangles
-inline constexpr int kVisDepthBinding = 2;      // per pixel: least depth (float bits)
-inline constexpr int kVisIdBinding = 3;         // per pixel: least triangle id at that depth
-inline constexpr int kVisIndirectBinding = 4;   // the GL part's draw command, deferred count
-inline constexpr int kVisDeferredBinding = 5;   // deferred triangles' vertex indices
-inline constexpr int kVisDeferredIdBinding = 6; // deferred triangles' ids
-inline constexpr int kVisCoveringBinding = 7;   // triangles that cover a pixel centre (first pass)
-inline constexpr int kVisRasterGroup = 64;      // visibility_raster.comp's work group: triangles
+// visibility_raster.comp's work group, in triangles (VIS_RASTER_GROUP; the passes' binding
+// points are in gpu_bindings.h).
+inline constexpr int kVisRasterGroup = 64;
 
 // Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
 // along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest

@@ -14,16 +14,13 @@ namespace flowsurf::methods::hybrid {
 namespace {
 // Compute work group: 8 x 8 pixels (llvmpipe runs 8 invocations per SIMD batch).
 constexpr int kLocalX = 8, kLocalY = 8;
-// The solid noise's image unit (the compute pass writes I through unit 0).
-constexpr int kNoiseImageUnit = 1;
 }  // namespace
 
 ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
     : compute_(path == GlPath::Compute),
       defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
-               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n#define NOISE_IMAGE_UNIT " +
-               std::to_string(kNoiseImageUnit) + "\n" + SolidNoise::defines(params.noiseSize)),
+               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n" + SolidNoise::defines(params.noiseSize)),
       emptyVao_(gl::VertexArray::create()) {
     programFor(false, false);  // the common variant, so that a shader error shows at construction
 }
@@ -50,7 +47,7 @@ void ParticleTracing::apply(const TracingInput& in, const HybridParams& params, 
         // Every pixel is written (the background with the noise mean): no clear.
         glUniform2i(program.uniform("uOrigin"), r.x0, r.y0);
         glUniform2i(program.uniform("uEnd"), r.x1, r.y1);
-        glBindImageTexture(0, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindImageTexture(bindings::kLicImage, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
         glDispatchCompute(GLuint((r.width() + kLocalX - 1) / kLocalX), GLuint((r.height() + kLocalY - 1) / kLocalY), 1);
         // The overlay samples I; tests and read-back fetch it.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
@@ -106,18 +103,18 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     glUniform3fv(program.uniform("uForward"), 1, glm::value_ptr(forward));
     glUniform3fv(program.uniform("uRayRight"), 1, glm::value_ptr(right * halfWidth));
     glUniform3fv(program.uniform("uRayUp"), 1, glm::value_ptr(up * halfHeight));
-    glBindTextureUnit(0, in.seedVelocity->id());
+    glBindTextureUnit(bindings::kLicSeedVelocity, in.seedVelocity->id());
     const bool unsteady = in.velocityLevels != 0 && in.levelTimes.size() >= 2;
     if (unsteady) {
-        glBindTextureUnit(1, in.velocityLevels);
+        glBindTextureUnit(bindings::kLicVelocity, in.velocityLevels);
         glUniform1i(program.uniform("uLevelCount"), GLint(in.levelTimes.size()));
         glUniform1fv(program.uniform("uLevelTime"), GLsizei(in.levelTimes.size()), in.levelTimes.data());
         glUniform1f(program.uniform("uTimePerStep"), in.timePerStep);
         glUniform1f(program.uniform("uVelocityScale"), speed);
     } else {
-        glBindTextureUnit(1, in.seedVelocity->id());
+        glBindTextureUnit(bindings::kLicVelocity, in.seedVelocity->id());
     }
-    glBindImageTexture(kNoiseImageUnit, in.noise, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA8);
+    glBindImageTexture(bindings::kLicNoise, in.noise, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA8);
 }
 
 }  // namespace flowsurf::methods::hybrid

@@ -32,7 +32,7 @@ void SolidNoise::update(uint32_t frame, const core::NoiseParams& params) {
     glUniform1i(program_.uniform("uProfile"), int(params.profile));
     glUniform1ui(program_.uniform("uSeed"), params.seed);
     // The RGBA8 texels written as 32-bit words (same size class).
-    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glBindImageTexture(bindings::kSolidNoiseImage, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
     // One invocation per kRows rows along x at one depth.
     glDispatchCompute(GLuint((size_ / kRows + kGroup - 1) / kGroup), GLuint((size_ + kGroup - 1) / kGroup), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);

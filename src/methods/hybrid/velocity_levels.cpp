@@ -16,16 +16,15 @@ VelocityLevels::VelocityLevels(const core::Viewport& viewport, bool cullBackFace
       vao_(gl::VertexArray::create()),
       program_(program({{GL_VERTEX_SHADER, "hybrid/velocity_levels.vert"}, {GL_FRAGMENT_SHADER, "hybrid/velocity_levels.frag"}})) {
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    const GLenum buffer = GL_COLOR_ATTACHMENT0;  // a layer of the 3D texture, per level
+    // One draw buffer, so the output's location is 0; a layer of the 3D texture is attached
+    // to it per level.
+    static_assert(outputs::kLevelVelocity.point == 0, "the only draw buffer is location 0");
+    const GLenum buffer = GL_COLOR_ATTACHMENT0 + outputs::kLevelVelocity;
     glNamedFramebufferDrawBuffers(fbo_.id(), 1, &buffer);
-    // 0, 1: position and normal from the surface's interleaved vertices; 2, 3: the two
-    // raw fields of a level (bound per level).
-    GLuint vao = vao_.id();
-    for (GLuint a = 0; a < 4; ++a) {
-        glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a == 1 ? 3 * sizeof(float) : 0);
-        glVertexArrayAttribBinding(vao, a, a < 2 ? 0 : a - 1);
-    }
+    // Position and normal from the surface's interleaved vertices; the two raw fields of a
+    // level (bound per level).
+    for (const VertexAttribute& a : {surface_vertex::kPosObj, surface_vertex::kNormalObj, kLevelFieldA, kLevelFieldB})
+        enableAttribute(vao_.id(), a);
 }
 
 VelocityLevels::Volume::Volume(const core::Viewport& viewport, int count) : count_(count) {
@@ -43,7 +42,7 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     const int count = int(levels.levels.size());
     if (count != volume_.count()) volume_ = Volume(viewport_, count);
     GLuint vao = vao_.id();
-    glVertexArrayVertexBuffer(vao, 0, surface.vertexBuffer(), 0, SurfaceGpu::kVertexStride);
+    glVertexArrayVertexBuffer(vao, surface_vertex::kBuffer, surface.vertexBuffer(), 0, surface_vertex::kStride);
     glVertexArrayElementBuffer(vao, surface.indexBuffer());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, viewport_.width, viewport_.height);
@@ -63,11 +62,11 @@ void VelocityLevels::render(const SurfaceGpu& surface, const TimeLevels& levels,
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
     for (int j = 0; j < count; ++j) {
         const TimeLevel& level = levels.levels[size_t(j)];
-        glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, volume_.id(), 0, j);
-        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+        glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0 + outputs::kLevelVelocity, volume_.id(), 0, j);
+        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, outputs::kLevelVelocity, zero);
         glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
-        glVertexArrayVertexBuffer(vao, 1, level.fieldA, 0, sizeof(float) * 3);
-        glVertexArrayVertexBuffer(vao, 2, level.fieldB, 0, sizeof(float) * 3);
+        glVertexArrayVertexBuffer(vao, kLevelFieldA.buffer, level.fieldA, 0, kLevelFieldA.components * sizeof(float));
+        glVertexArrayVertexBuffer(vao, kLevelFieldB.buffer, level.fieldB, 0, kLevelFieldB.components * sizeof(float));
         glUniform1f(weight, level.weight);
         glBindVertexArray(vao);
         glDrawElements(GL_TRIANGLES, GLsizei(surface.triangleCount() * 3), GL_UNSIGNED_INT, nullptr);

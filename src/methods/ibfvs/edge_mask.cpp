@@ -36,7 +36,7 @@ void EdgeMask::apply(const SurfaceGpu& surface, const core::Camera& camera, cons
     glDisable(GL_DEPTH_TEST);  // visibility is tested in the fragment shader
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBindTextureUnit(kEdgeMaskDepthUnit, depth.id());
+    glBindTextureUnit(bindings::kEdgeMaskDepth, depth.id());
 
     // This surface's outlines (in parallel also written to the capture buffer).
     setState(program_, camera, style);
@@ -56,7 +56,7 @@ void EdgeMask::apply(const SurfaceGpu& surface, const core::Camera& camera, cons
     glEnable(GL_BLEND);
     gl::Buffer received(GLsizeiptr(others.size() * sizeof(glm::vec4)), others.data(), 0);
     setState(shared_, camera, style);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCaptureBinding, received.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kEdgeCapture, received.id());
     if (!emptyVao_.id()) emptyVao_ = gl::VertexArray::create();
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(others.size() / 4 * 6));
@@ -70,7 +70,7 @@ uint32_t EdgeMask::drawOwn(const SurfaceGpu& surface, bool capture) {
             glClearNamedBufferSubData(capture_.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
             glUniform1ui(program_.uniform("uCapacity"), capacity_);
         }
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCaptureBinding, capture_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kEdgeCapture, capture_.id());
         surface.drawEdgesAdjacency();
     };
     draw();

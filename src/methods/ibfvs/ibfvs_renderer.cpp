@@ -1,5 +1,7 @@
 #include "methods/ibfvs/ibfvs_renderer.h"
 
+#include "methods/common/gpu_bindings.h"
+
 #include <cmath>
 
 namespace flowsurf::methods::ibfvs {
@@ -11,11 +13,11 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       mask_(GL_R16F, viewport.width, viewport.height, GL_NEAREST),
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       polygonAdvection_(viewport, params.common,
-                        {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
+                        {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       overlay_(params.common),
       contrast_(params.common, viewport),
       motion_(params.common.onCameraMove),
-      flow_(viewport, {{GL_COLOR_ATTACHMENT1, &shade_}, {GL_COLOR_ATTACHMENT2, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
+      flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
 
 void IbfvsRenderer::renderFrame(const FrameInput& in) {

@@ -21,7 +21,7 @@ PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonP
                              resampleDefine(common.resample) + noise_.defines());
     texcoord_ = gl::Texture2D(GL_RG32F, viewport.width, viewport.height, GL_NEAREST);
     texcoordFbo_ = gl::Framebuffer::create();
-    texcoordFbo_.attach(GL_COLOR_ATTACHMENT0, texcoord_);
+    texcoordFbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kFlow, texcoord_);
     int colors = 1;
     for (const auto& [attachment, texture] : shared) {
         texcoordFbo_.attach(attachment, *texture);
@@ -38,7 +38,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     program_.use();
     if (path_ != GlPath::Compute) {
         noise_.bind(program_, noise);
-        glBindTextureUnit(0, prevFlow.id());
+        glBindTextureUnit(bindings::kIbfvsPrevFlow, prevFlow.id());
         draw(surface, camera, prevCamera, viewport, dt, nextFlowFbo, flowBackground, cullBackFaces);
         return;
     }
@@ -46,10 +46,10 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     advectProgram_.use();
     noise_.bind(advectProgram_, noise);
     glUniform1f(advectProgram_.uniform("uFlowBackground"), flowBackground);
-    glBindTextureUnit(0, prevFlow.id());
-    glBindTextureUnit(1, texcoord_.id());
-    glBindTextureUnit(2, depth.id());
-    glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindTextureUnit(bindings::kIbfvsPrevFlow, prevFlow.id());
+    glBindTextureUnit(bindings::kIbfvsTexcoord, texcoord_.id());
+    glBindTextureUnit(bindings::kIbfvsDepth, depth.id());
+    glBindImageTexture(bindings::kIbfvsNextFlow, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchPerPixel(viewport.width, viewport.height);
 }
 
@@ -60,9 +60,9 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camer
     glViewport(0, 0, viewport.width, viewport.height);
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
     const float bg[4] = {flowBackground, 0, 0, 1}, zero[4] = {0, 0, 0, 0}, one = 1.0f;
-    glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, bg);
-    glClearNamedFramebufferfv(target.id(), GL_COLOR, 1, zero);
-    glClearNamedFramebufferfv(target.id(), GL_COLOR, 2, zero);
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kFlow, bg);
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kShade, zero);
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kMask, zero);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

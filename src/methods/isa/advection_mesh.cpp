@@ -41,11 +41,11 @@ void AdvectionMesh::compute(const gl::Texture2D& velocity, const gl::Texture2D& 
     glUniform1f(program_.uniform("uNear"), sourceCamera.nearPlane);
     glUniform1f(program_.uniform("uFar"), sourceCamera.farPlane);
     glUniform1i(program_.uniform("uOrtho"), sourceCamera.orthographic());
-    glBindTextureUnit(0, velocity.id());
-    glBindTextureUnit(1, depth.id());
-    glBindTextureUnit(2, sourceDepth.id());
+    glBindTextureUnit(bindings::kMeshVelocity, velocity.id());
+    glBindTextureUnit(bindings::kMeshDepth, depth.id());
+    glBindTextureUnit(bindings::kMeshSourceDepth, sourceDepth.id());
     if (path_ == GlPath::Compute) {
-        glBindImageTexture(0, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(bindings::kMeshImage, vertices_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         GLuint groups = GLuint((gridRes_ + 1 + 7) / 8);  // 8 x 8: measured 2x faster than 16 x 16 on llvmpipe
         glDispatchCompute(groups, groups, 1);
         // The next stage reads the mesh through texture fetches.

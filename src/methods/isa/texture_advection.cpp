@@ -58,14 +58,14 @@ void TextureAdvection::apply(const gl::Texture2D& mesh, const gl::Texture2D& pre
     glUniform1i(program_.uniform("uEdgeBlending"), edgeBlending);
     if (fill_ == EdgeFill::Noise) glUniform1f(program_.uniform("uFillAlpha"), fillAlpha_);
     noise_.bind(program_, noise);
-    glBindTextureUnit(0, prevFlow.id());
-    glBindTextureUnit(1, mesh.id());
-    glBindTextureUnit(2, surfaceDepth.id());
+    glBindTextureUnit(bindings::kIsaPrevFlow, prevFlow.id());
+    glBindTextureUnit(bindings::kIsaMesh, mesh.id());
+    glBindTextureUnit(bindings::kIsaSurfaceDepth, surfaceDepth.id());
     const PixelRect r = pixels.empty() ? PixelRect{0, 0, nextFlow.width(), nextFlow.height()} : pixels;
     if (path_ == GlPath::Compute) {
         glUniform2i(program_.uniform("uOrigin"), r.x0, r.y0);
         glUniform2i(program_.uniform("uEnd"), r.x1, r.y1);
-        glBindImageTexture(0, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindImageTexture(bindings::kIsaNextFlow, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
         dispatchPerPixel(r.width(), r.height());
         return;
     }

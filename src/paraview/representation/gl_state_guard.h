@@ -5,6 +5,8 @@
 #ifndef gl_state_guard_h
 #define gl_state_guard_h
 
+#include "methods/common/gpu_bindings.h"
+
 #include <epoxy/gl.h>
 
 #include <array>
@@ -23,7 +25,9 @@ public:
   GLuint drawFramebuffer() const { return drawFramebuffer_; }
 
 private:
+  // The texture units saved and restored: every one flowsurf's passes bind.
   static constexpr int kUnits = 16;
+  static_assert(methods::highestPoint(methods::BindingPoint::Texture) < kUnits, "a texture unit the guard does not restore");
   vtkOpenGLState* state_;
   GLint program_ = 0, vertexArray_ = 0, activeTexture_ = 0, arrayBuffer_ = 0;
   GLint packAlignment_ = 4, unpackAlignment_ = 4, packBuffer_ = 0, unpackBuffer_ = 0;

@@ -1,5 +1,7 @@
 #include "mapper_composite.h"
 
+#include "methods/common/shader_interface.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -25,7 +27,7 @@ void MapperComposite::draw(const GlStateGuard& guard, int x0, int y0, int w, int
   gl::Program& program = host ? compositeHost_ : composite_;
   if (!program)
   {
-    program = gl::Program(
+    program = methods::program(
       { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } },
       host ? "#define HOST_LOOK 1\n#define MAX_LIGHTS " + std::to_string(kMaxHostLights) + "\n" : std::string());
   }
@@ -53,11 +55,11 @@ void MapperComposite::draw(const GlStateGuard& guard, int x0, int y0, int w, int
   program.use();
   glUniform2i(program.uniform("uOrigin"), x0, y0);
   glUniform1f(program.uniform("uDepthBias"), 2e-5f);
-  glBindTextureUnit(0, method.composite().id());
-  glBindTextureUnit(1, method.surfaceDepth().id());
+  glBindTextureUnit(methods::bindings::kCompositeColor, method.composite().id());
+  glBindTextureUnit(methods::bindings::kCompositeDepth, method.surfaceDepth().id());
   if (host)
   {
-    glBindTextureUnit(2, method.surfaceShade().id());
+    glBindTextureUnit(methods::bindings::kCompositeShade, method.surfaceShade().id());
     setHostLook(program, *host, blend, valueRange);
   }
   glBindVertexArray(emptyVao_.id());
@@ -84,7 +86,7 @@ void MapperComposite::setHostLook(const gl::Program& program, const HostLook& lo
     glTextureSubImage2D(hostTable_.id(), 0, 0, 0, 256, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     hostTableColors_ = look.table;
   }
-  glBindTextureUnit(3, hostTable_.id());
+  glBindTextureUnit(methods::bindings::kCompositeTable, hostTable_.id());
   glUniform1i(program.uniform("uMultiply"), blend);
   glUniform1i(program.uniform("uScalars"), look.scalars.has_value());
   glUniform2f(program.uniform("uValueRange"), valueRange.x, valueRange.y);
