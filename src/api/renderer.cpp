@@ -146,7 +146,7 @@ std::string Renderer::get(const std::string& option) const {
 std::vector<std::string> Renderer::optionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isRendererOption(spec)) names.push_back(spec.name);
+        if (spec.takes(session::FrontEnd::Renderer)) names.push_back(spec.name);
     return names;
 }
 
@@ -155,9 +155,9 @@ std::vector<OptionInfo> Renderer::optionInfo() {
     static_assert(std::size(kKinds) == size_t(session::OptionKind::Path) + 1, "one name per OptionKind");
     std::vector<OptionInfo> out;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isRendererOption(spec))
-            out.push_back({spec.name, spec.group, spec.help, kKinds[int(spec.kind)], spec.min, spec.max,
-                           spec.choices, session::defaultText(spec)});
+        if (spec.takes(session::FrontEnd::Renderer))
+            out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)],
+                           spec.min, spec.max, spec.choices, session::defaultText(spec)});
     return out;
 }
 
