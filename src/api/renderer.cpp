@@ -128,12 +128,9 @@ void Renderer::set(const std::string& option, const std::string& value) {
 
 void Renderer::addDye(const std::array<float, 3>& point, float radius, const std::string& color) {
     std::vector<methods::DyeSource> sources = impl_->options.dye;
-    const std::string text = session::formatFloat(point[0]) + "," + session::formatFloat(point[1]) + "," +
-                             session::formatFloat(point[2]) + ":" + session::formatFloat(radius) +
-                             (color.empty() ? "" : ":" + color);
-    methods::DyeSource s = session::parseDyeSources(text, "addDye").at(0);
-    if (color.empty()) s.color = methods::kDyePalette[sources.size() % std::size(methods::kDyePalette)];
-    sources.push_back(s);
+    sources.push_back(session::dyeSource({point[0], point[1], point[2]}, radius,
+                                         color.empty() ? std::nullopt : std::optional<std::string>(color),
+                                         sources.size(), "addDye"));
     set("dye", session::dyeSourcesText(sources));
 }
 
