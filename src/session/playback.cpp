@@ -14,7 +14,7 @@ namespace flowsurf::session {
 
 Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
                    methods::ProcessGroup* group)
-    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)) {
+    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)), dye_(group) {
     build();
     built_ = options_;
     builtViews_ = requestedViews_;
@@ -33,8 +33,8 @@ void Playback::build() {
     methods_.clear();
     surface_.reset();
     cameras_.reset();
-    dye_.reset();
-    resetDye();
+    dye_.dropBand();
+    dye_.restart();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
     const methods::MethodParams params = surface_->paramsFor(options_.params);
     views_ = shownViews();
@@ -102,7 +102,7 @@ void Playback::setStageTiming(bool on) {
 }
 
 void Playback::stepsChanged() {
-    dye_.reset();  // the geometry may have changed: the band is made again at the next step
+    dye_.dropBand();  // the geometry may have changed: the band is made again at the next step
     surface_.reset();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
 }
@@ -119,7 +119,7 @@ void Playback::restart() {
     clock_ = 0;
     warmedUp_ = 0;
     clearQuality();
-    resetDye();
+    dye_.restart();
     if (startWarm_) {
         const core::Camera camera = frameCameras().at(0);
         const double t = surface_->unsteady() ? surface_->timeAt(0) : 0.0;
@@ -136,7 +136,7 @@ void Playback::start(bool warmUp) {
 
 void Playback::animationFrame(int f, uint32_t k) {
     const double t = surface_->unsteady() ? surface_->timeAt(f) : 0.0;
-    stepDye(frameCameras().at(f), t, surface_->mapping().perFrame);
+    dye_.step(options_, *surface_, frameCameras().at(f), t, surface_->mapping().perFrame);
     renderAll(frameCameras().at(f), t, surface_->mapping().perFrame, k);
 }
 
@@ -159,7 +159,8 @@ void Playback::still(int f) {
     for (int k = 0; k <= f; ++k) {
         qualityNext_ = qualityStep(f, k);
         if (k < f && historyFree() && qualityNext_ == QualityStep::None) {
-            stepDye(frameCameras().at(k), surface_->unsteady() ? surface_->timeAt(k) : 0.0, surface_->mapping().perFrame);
+            const double t = surface_->unsteady() ? surface_->timeAt(k) : 0.0;
+            dye_.step(options_, *surface_, frameCameras().at(k), t, surface_->mapping().perFrame);
             continue;
         }
         animationFrame(k, uint32_t(k));
@@ -182,7 +183,7 @@ void Playback::warmUp(const LiveFrame& at) {
 void Playback::render(const LiveFrame& f, bool advance) {
     applyPending();
     qualityNext_ = qualityStep();
-    if (advance) stepDye(f.camera, f.time, f.perFrame);
+    if (advance) dye_.step(options_, *surface_, f.camera, f.time, f.perFrame);
     renderAll(f.camera, f.time, f.perFrame, clock_);
     if (advance) ++clock_;
 }
@@ -200,10 +201,7 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         }
         methods::FrameInput in{&s, camera, k, m->usesTimeLevels() ? levels : nullptr};
         in.group = group_;
-        if (dye_ && dyeFrame_ > 0) {
-            dyeView_ = dye_->view(camera, options_.size);
-            in.dye = &dyeView_;
-        }
+        in.dye = dye_.view(camera, options_.size);
         m->renderFrame(in);
         if (qualityNext_ != QualityStep::None) collectQuality(i, s, camera, k);
     }

@@ -15,10 +15,10 @@
 
 #include "core/camera.h"
 #include "core/time_series.h"
-#include "methods/common/dye.h"
 #include "methods/common/frame.h"
 #include "quality/quality_probe.h"
 #include "session/animated_surface.h"
+#include "session/dye_injection.h"
 #include "session/options/options.h"
 #include "session/scene_setup.h"
 
@@ -130,25 +130,12 @@ public:
     // next measurement; 0: none), for timers that leave it out.
     double qualityMsLastFrame() const { return qualityMs_; }
 
-    // --- dye [issue 20] (playback_dye.cpp) ------------------------------------------------
-    // The options' sources (--dye, --dye-file) are read at every frame: a source that was not
-    // there before starts emitting at that frame, so dye changes apply live (effect None).
+    // --- dye [issue 20] (DyeInjection) -----------------------------------------------------
     // The dye steps with each animation frame and each live frame that advances the clock
-    // (not the warm-up): frame 0 emits, every later frame first advects by the data time per
-    // frame. Null until a frame had a source.
-    const methods::DyeField* dye() const { return dye_.get(); }
-    // Data time per dye step: the data's time per frame, or for steady data
-    // --time-per-frame, or when 0 what moves the fastest dye --step-px pixels at the view
-    // of the dye's first frame.
-    double dyeTimePerFrame() const { return dyeDt_; }
-    // A source as placed on the surface: the point snapped, radius and start resolved.
-    struct PlacedDye {
-        methods::DyeSource source;  // as given
-        int start = 0;              // dye frame the source appeared at
-        glm::vec3 posObj{0.0f};     // on the surface
-        float radius = 0.0f;        // object units
-    };
-    const std::vector<PlacedDye>& placedDye() const { return placedDye_; }
+    // (not the warm-up), with the options of that frame: dye changes apply live (effect
+    // None). Null until a frame had a source.
+    const methods::DyeField* dye() const { return dye_.field(); }
+    const DyeInjection& dyeInjection() const { return dye_; }
 
 private:
     void build();                       // surface, renderers, cameras from options_
@@ -164,12 +151,6 @@ private:
     QualityStep qualityStep(int stillFrame = -1, int frame = -1);
     void makeProbes();
     void collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k);
-
-    // One dye step at this frame's camera and data time (nothing without sources).
-    void stepDye(const core::Camera& camera, double time, double perFrame);
-    void resetDye();                     // the dye empty, at frame 0 (a restart)
-    bool sameGeometryEverywhere(bool mine) const;  // `mine` and'ed over the process group
-    std::vector<methods::DyeEmitter> dyeEmitters(const core::Camera& camera, const core::SurfaceMesh& mesh);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
     core::StepProvider& steps_;
@@ -194,12 +175,7 @@ private:
     int qualityCounter_ = 0;            // frames since the quality log was cleared, warm-up not
     std::vector<std::unique_ptr<quality::QualityProbe>> probes_;
     std::vector<std::vector<quality::FrameQuality>> qualityLog_;
-
-    std::unique_ptr<methods::DyeField> dye_;
-    std::vector<PlacedDye> placedDye_;
-    int dyeFrame_ = 0;                  // dye steps taken since the start
-    double dyeDt_ = 0.0, dyeVelocityTime_ = 0.0;
-    methods::DyeView dyeView_;
+    DyeInjection dye_;
 };
 
 }  // namespace flowsurf::session
