@@ -16,10 +16,10 @@
 #include "core/camera.h"
 #include "core/time_series.h"
 #include "methods/common/frame.h"
-#include "quality/quality_probe.h"
 #include "session/animated_surface.h"
 #include "session/dye_injection.h"
 #include "session/options/options.h"
+#include "session/quality_monitor.h"
 #include "session/scene_setup.h"
 
 #include <functional>
@@ -112,23 +112,23 @@ public:
     // Composites of every view side by side, RGB8, rows top to bottom.
     std::vector<uint8_t> readImage(int* width, int* height) const;
 
-    // --- quality (doc/algorithms.md, "Quality metrics"): off by default ------------------
+    // --- quality (QualityMonitor; doc/algorithms.md, "Quality metrics"): off by default ---
     // every > 0: measure every view's F_a against the field on every `every`-th frame that
     // is not warm-up (animation, still and live frames alike; a still measures its last
     // frame only), reading back the frame before each for the correlations. 0: off.
-    void setQuality(int every, const quality::QualityParams& params = {});
-    int qualityEvery() const { return qualityEvery_; }
+    void setQuality(int every, const quality::QualityParams& params = {}) { quality_.configure(every, params); }
+    int qualityEvery() const { return quality_.every(); }
     // The frames of view i measured since the animation (re)started, the build, or
     // clearQuality(); and their median and worst.
-    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const;
-    quality::QualitySummary qualitySummary(size_t view) const;
-    void clearQuality();
+    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const { return quality_.frames(view); }
+    quality::QualitySummary qualitySummary(size_t view) const { return quality::summarize(qualityFrames(view)); }
+    void clearQuality() { quality_.clear(); }
     // Measures view i's last frame now (surface and camera of the last frame); with the
     // quality off it has no frame before it, so no correlations. Not added to the log.
     quality::FrameQuality measureLastFrame(size_t view);
     // Wall time the quality took in the last frame (measuring, or keeping the frame for the
     // next measurement; 0: none), for timers that leave it out.
-    double qualityMsLastFrame() const { return qualityMs_; }
+    double qualityMsLastFrame() const { return quality_.msLastFrame(); }
 
     // --- dye [issue 20] (DyeInjection) -----------------------------------------------------
     // The dye steps with each animation frame and each live frame that advances the clock
@@ -146,11 +146,6 @@ private:
     void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
     void animationFrame(int f, uint32_t k);
     const FrameCameras& frameCameras();  // of the options, made when an animation needs them
-    // What the quality probes do with the frame renderAll draws next (setQuality).
-    enum class QualityStep { None, Keep, Measure };
-    QualityStep qualityStep(int stillFrame = -1, int frame = -1);
-    void makeProbes();
-    void collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
     core::StepProvider& steps_;
@@ -168,13 +163,7 @@ private:
     core::Camera lastCamera_;
     double lastTime_ = 0.0;
     std::function<void()> onFrame_;
-    int qualityEvery_ = 0;
-    quality::QualityParams qualityParams_;
-    QualityStep qualityNext_ = QualityStep::None;
-    double qualityMs_ = 0.0;
-    int qualityCounter_ = 0;            // frames since the quality log was cleared, warm-up not
-    std::vector<std::unique_ptr<quality::QualityProbe>> probes_;
-    std::vector<std::vector<quality::FrameQuality>> qualityLog_;
+    QualityMonitor quality_;
     DyeInjection dye_;
 };
 
