@@ -7,10 +7,11 @@ namespace flowsurf::app {
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     for (const OptionSpec& spec : renderOptionTable()) {
         const OptionSpec* s = &spec;
-        if (s->name == "input") {
-            cmd.add_option("input", o.input, s->help);
+        if (s->takes(FrontEnd::Positional)) {
+            cmd.add_option_function<std::string>(s->name, [&o, s](const std::string& v) { s->set(o, v); }, s->help);
             continue;
         }
+        if (!s->takes(FrontEnd::CommandLine)) continue;
         std::string names = (s->shortName.empty() ? "" : "-" + s->shortName + ",") + "--" + s->name;
         std::string help = s->help;
         if (s->kind == OptionKind::Choice) {
@@ -41,7 +42,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         else
             opt = cmd.add_option_function<std::string>(names, [&o, s](const std::string& v) { s->set(o, v); }, help);
         static const char* const kTypeNames[] = {"", "INT", "FLOAT", "TEXT", "CHOICE", "WxH", "X,Y,Z", "COLOR", "PATH"};
-        opt->group(s->group)->type_name(kTypeNames[int(s->kind)]);
+        opt->group(groupName(s->role.group))->type_name(kTypeNames[int(s->kind)]);
     }
     cmd.add_flag("--list-builtins", o.listBuiltins, "List the built-in scenes and exit");
 }

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     // How info reads the file: the table's options of reading an input.
     session::RenderOptions infoRead;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isReadOption(spec))
+        if (spec.takes(session::FrontEnd::Read))
             infoCmd->add_option_function<std::string>(
                 "--" + spec.name, [&infoRead, s = &spec](const std::string& v) { s->set(infoRead, v); }, spec.help);
 

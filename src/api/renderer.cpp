@@ -128,12 +128,9 @@ void Renderer::set(const std::string& option, const std::string& value) {
 
 void Renderer::addDye(const std::array<float, 3>& point, float radius, const std::string& color) {
     std::vector<methods::DyeSource> sources = impl_->options.dye;
-    const std::string text = session::formatFloat(point[0]) + "," + session::formatFloat(point[1]) + "," +
-                             session::formatFloat(point[2]) + ":" + session::formatFloat(radius) +
-                             (color.empty() ? "" : ":" + color);
-    methods::DyeSource s = session::parseDyeSources(text, "addDye").at(0);
-    if (color.empty()) s.color = methods::kDyePalette[sources.size() % std::size(methods::kDyePalette)];
-    sources.push_back(s);
+    sources.push_back(session::dyeSource({point[0], point[1], point[2]}, radius,
+                                         color.empty() ? std::nullopt : std::optional<std::string>(color),
+                                         sources.size(), "addDye"));
     set("dye", session::dyeSourcesText(sources));
 }
 
@@ -146,7 +143,7 @@ std::string Renderer::get(const std::string& option) const {
 std::vector<std::string> Renderer::optionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isRendererOption(spec)) names.push_back(spec.name);
+        if (spec.takes(session::FrontEnd::Renderer)) names.push_back(spec.name);
     return names;
 }
 
@@ -155,9 +152,9 @@ std::vector<OptionInfo> Renderer::optionInfo() {
     static_assert(std::size(kKinds) == size_t(session::OptionKind::Path) + 1, "one name per OptionKind");
     std::vector<OptionInfo> out;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isRendererOption(spec))
-            out.push_back({spec.name, spec.group, spec.help, kKinds[int(spec.kind)], spec.min, spec.max,
-                           spec.choices, session::defaultText(spec)});
+        if (spec.takes(session::FrontEnd::Renderer))
+            out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)],
+                           spec.min, spec.max, spec.choices, session::defaultText(spec)});
     return out;
 }
 

@@ -105,7 +105,7 @@ Surface Surface::fromArrays(const float* points, size_t pointCount, const uint32
 std::vector<std::string> Surface::readOptionNames() {
     std::vector<std::string> names;
     for (const auto& spec : session::renderOptionTable())
-        if (session::isReadOption(spec)) names.push_back(spec.name);
+        if (spec.takes(session::FrontEnd::Read)) names.push_back(spec.name);
     return names;
 }
 

@@ -7,14 +7,13 @@
 #include "methods/make_renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace flowsurf::session {
 
 Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
                    methods::ProcessGroup* group)
-    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)) {
+    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)), dye_(group) {
     build();
     built_ = options_;
     builtViews_ = requestedViews_;
@@ -33,8 +32,8 @@ void Playback::build() {
     methods_.clear();
     surface_.reset();
     cameras_.reset();
-    dye_.reset();
-    resetDye();
+    dye_.dropBand();
+    dye_.restart();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
     const methods::MethodParams params = surface_->paramsFor(options_.params);
     views_ = shownViews();
@@ -43,8 +42,7 @@ void Playback::build() {
     rebuildPending_ = camerasPending_ = false;
     clock_ = 0;
     warmedUp_ = 0;
-    probes_.clear();
-    clearQuality();
+    quality_.rebuilt(methods_.size(), options_.size, options_.params.common.cullBackFaces);
 }
 
 void Playback::rebuild() {
@@ -102,7 +100,7 @@ void Playback::setStageTiming(bool on) {
 }
 
 void Playback::stepsChanged() {
-    dye_.reset();  // the geometry may have changed: the band is made again at the next step
+    dye_.dropBand();  // the geometry may have changed: the band is made again at the next step
     surface_.reset();
     surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
 }
@@ -119,7 +117,7 @@ void Playback::restart() {
     clock_ = 0;
     warmedUp_ = 0;
     clearQuality();
-    resetDye();
+    dye_.restart();
     if (startWarm_) {
         const core::Camera camera = frameCameras().at(0);
         const double t = surface_->unsteady() ? surface_->timeAt(0) : 0.0;
@@ -136,14 +134,14 @@ void Playback::start(bool warmUp) {
 
 void Playback::animationFrame(int f, uint32_t k) {
     const double t = surface_->unsteady() ? surface_->timeAt(f) : 0.0;
-    stepDye(frameCameras().at(f), t, surface_->mapping().perFrame);
+    dye_.step(options_, *surface_, frameCameras().at(f), t, surface_->mapping().perFrame);
     renderAll(frameCameras().at(f), t, surface_->mapping().perFrame, k);
 }
 
 void Playback::advance() {
     if (!started_) throw ConfigError("advance: the animation has not started");
     if (applyPending()) restart();  // an option asked for new renderers: the animation starts over
-    qualityNext_ = qualityStep();
+    quality_.planFrame();
     animationFrame(frame_, uint32_t(warmedUp_ + frame_));
     ++frame_;
     clock_ = uint32_t(warmedUp_ + frame_);
@@ -157,9 +155,10 @@ void Playback::still(int f) {
     // A history-free method's frame f needs no frame before it (the dye and the quality's
     // frame before f do).
     for (int k = 0; k <= f; ++k) {
-        qualityNext_ = qualityStep(f, k);
-        if (k < f && historyFree() && qualityNext_ == QualityStep::None) {
-            stepDye(frameCameras().at(k), surface_->unsteady() ? surface_->timeAt(k) : 0.0, surface_->mapping().perFrame);
+        quality_.planStill(f, k);
+        if (k < f && historyFree() && !quality_.plannedFrame()) {
+            const double t = surface_->unsteady() ? surface_->timeAt(k) : 0.0;
+            dye_.step(options_, *surface_, frameCameras().at(k), t, surface_->mapping().perFrame);
             continue;
         }
         animationFrame(k, uint32_t(k));
@@ -173,7 +172,7 @@ void Playback::still(int f) {
 void Playback::warmUp(const LiveFrame& at) {
     applyPending();
     const int w = warmupFrames();
-    qualityNext_ = QualityStep::None;
+    quality_.planNothing();
     for (int k = 0; k < w; ++k) renderAll(at.camera, at.time, at.perFrame, uint32_t(k));
     warmedUp_ = w;
     clock_ = uint32_t(w);
@@ -181,8 +180,8 @@ void Playback::warmUp(const LiveFrame& at) {
 
 void Playback::render(const LiveFrame& f, bool advance) {
     applyPending();
-    qualityNext_ = qualityStep();
-    if (advance) stepDye(f.camera, f.time, f.perFrame);
+    quality_.planFrame();
+    if (advance) dye_.step(options_, *surface_, f.camera, f.time, f.perFrame);
     renderAll(f.camera, f.time, f.perFrame, clock_);
     if (advance) ++clock_;
 }
@@ -191,7 +190,7 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
     const methods::SurfaceGpu& s = surface_->atTime(time);
     const methods::TimeLevels* levels = nullptr;
     bool levelsRead = false;
-    qualityMs_ = 0.0;
+    quality_.frameStarts();
     for (size_t i = 0; i < methods_.size(); ++i) {
         methods::FlowMethod* m = methods_[i].get();
         if (m->usesTimeLevels() && !levelsRead) {
@@ -200,14 +199,11 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         }
         methods::FrameInput in{&s, camera, k, m->usesTimeLevels() ? levels : nullptr};
         in.group = group_;
-        if (dye_ && dyeFrame_ > 0) {
-            dyeView_ = dye_->view(camera, options_.size);
-            in.dye = &dyeView_;
-        }
+        in.dye = dye_.view(camera, options_.size);
         m->renderFrame(in);
-        if (qualityNext_ != QualityStep::None) collectQuality(i, s, camera, k);
+        if (quality_.plannedFrame()) quality_.collect(i, *m, s, camera, k);
     }
-    qualityNext_ = QualityStep::None;
+    quality_.frameDone();
     lastCamera_ = camera;
     lastTime_ = surface_->unsteady() ? time : 0.0;
     if (onFrame_) onFrame_();
@@ -242,54 +238,9 @@ std::vector<uint8_t> Playback::readImage(int* width, int* height) const {
 
 // --- quality --------------------------------------------------------------------------------
 
-void Playback::setQuality(int every, const quality::QualityParams& params) {
-    if (every < 0) throw ConfigError("quality: measure every N frames, N >= 0 (0: off)");
-    qualityEvery_ = every;
-    qualityParams_ = params;
-    probes_.clear();
-    clearQuality();
-}
-
-void Playback::clearQuality() {
-    qualityLog_.assign(methods_.size(), {});
-    qualityCounter_ = 0;
-}
-
-Playback::QualityStep Playback::qualityStep(int stillFrame, int frame) {
-    if (qualityEvery_ <= 0) return QualityStep::None;
-    // A still: its last frame, and the one before it for the correlations.
-    if (stillFrame >= 0)
-        return frame == stillFrame ? QualityStep::Measure : frame + 1 == stillFrame ? QualityStep::Keep : QualityStep::None;
-    const int phase = qualityCounter_++ % qualityEvery_;
-    if (phase == qualityEvery_ - 1) return QualityStep::Measure;
-    return phase == qualityEvery_ - 2 ? QualityStep::Keep : QualityStep::None;
-}
-
-void Playback::makeProbes() {
-    if (probes_.size() == methods_.size()) return;
-    probes_.clear();
-    for (size_t i = 0; i < methods_.size(); ++i)
-        probes_.push_back(std::make_unique<quality::QualityProbe>(options_.size, qualityParams_,
-                                                                  options_.params.common.cullBackFaces));
-}
-
 quality::FrameQuality Playback::measureLastFrame(size_t view) {
-    makeProbes();
     const uint32_t k = clock_ > 0 ? clock_ - 1 : 0;
-    return probes_.at(view)->measure(*methods_.at(view), surface_->atTime(lastTime_), lastCamera_, k);
+    return quality_.measure(view, *methods_.at(view), surface_->atTime(lastTime_), lastCamera_, k);
 }
-
-void Playback::collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k) {
-    makeProbes();
-    glFinish();  // the method's frame is not the quality's time
-    const auto t0 = std::chrono::steady_clock::now();
-    if (qualityNext_ == QualityStep::Keep) probes_[view]->keep(*methods_[view], camera, k);
-    else qualityLog_[view].push_back(probes_[view]->measure(*methods_[view], surface, camera, k));
-    qualityMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-const std::vector<quality::FrameQuality>& Playback::qualityFrames(size_t view) const { return qualityLog_.at(view); }
-
-quality::QualitySummary Playback::qualitySummary(size_t view) const { return quality::summarize(qualityFrames(view)); }
 
 }  // namespace flowsurf::session

@@ -15,11 +15,11 @@
 
 #include "core/camera.h"
 #include "core/time_series.h"
-#include "methods/common/dye.h"
 #include "methods/common/frame.h"
-#include "quality/quality_probe.h"
 #include "session/animated_surface.h"
+#include "session/dye_injection.h"
 #include "session/options/options.h"
+#include "session/quality_monitor.h"
 #include "session/scene_setup.h"
 
 #include <functional>
@@ -112,43 +112,30 @@ public:
     // Composites of every view side by side, RGB8, rows top to bottom.
     std::vector<uint8_t> readImage(int* width, int* height) const;
 
-    // --- quality (doc/algorithms.md, "Quality metrics"): off by default ------------------
+    // --- quality (QualityMonitor; doc/algorithms.md, "Quality metrics"): off by default ---
     // every > 0: measure every view's F_a against the field on every `every`-th frame that
     // is not warm-up (animation, still and live frames alike; a still measures its last
     // frame only), reading back the frame before each for the correlations. 0: off.
-    void setQuality(int every, const quality::QualityParams& params = {});
-    int qualityEvery() const { return qualityEvery_; }
+    void setQuality(int every, const quality::QualityParams& params = {}) { quality_.configure(every, params); }
+    int qualityEvery() const { return quality_.every(); }
     // The frames of view i measured since the animation (re)started, the build, or
     // clearQuality(); and their median and worst.
-    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const;
-    quality::QualitySummary qualitySummary(size_t view) const;
-    void clearQuality();
+    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const { return quality_.frames(view); }
+    quality::QualitySummary qualitySummary(size_t view) const { return quality::summarize(qualityFrames(view)); }
+    void clearQuality() { quality_.clear(); }
     // Measures view i's last frame now (surface and camera of the last frame); with the
     // quality off it has no frame before it, so no correlations. Not added to the log.
     quality::FrameQuality measureLastFrame(size_t view);
     // Wall time the quality took in the last frame (measuring, or keeping the frame for the
     // next measurement; 0: none), for timers that leave it out.
-    double qualityMsLastFrame() const { return qualityMs_; }
+    double qualityMsLastFrame() const { return quality_.msLastFrame(); }
 
-    // --- dye [issue 20] (playback_dye.cpp) ------------------------------------------------
-    // The options' sources (--dye, --dye-file) are read at every frame: a source that was not
-    // there before starts emitting at that frame, so dye changes apply live (effect None).
+    // --- dye [issue 20] (DyeInjection) -----------------------------------------------------
     // The dye steps with each animation frame and each live frame that advances the clock
-    // (not the warm-up): frame 0 emits, every later frame first advects by the data time per
-    // frame. Null until a frame had a source.
-    const methods::DyeField* dye() const { return dye_.get(); }
-    // Data time per dye step: the data's time per frame, or for steady data
-    // --time-per-frame, or when 0 what moves the fastest dye --step-px pixels at the view
-    // of the dye's first frame.
-    double dyeTimePerFrame() const { return dyeDt_; }
-    // A source as placed on the surface: the point snapped, radius and start resolved.
-    struct PlacedDye {
-        methods::DyeSource source;  // as given
-        int start = 0;              // dye frame the source appeared at
-        glm::vec3 posObj{0.0f};     // on the surface
-        float radius = 0.0f;        // object units
-    };
-    const std::vector<PlacedDye>& placedDye() const { return placedDye_; }
+    // (not the warm-up), with the options of that frame: dye changes apply live (effect
+    // None). Null until a frame had a source.
+    const methods::DyeField* dye() const { return dye_.field(); }
+    const DyeInjection& dyeInjection() const { return dye_; }
 
 private:
     void build();                       // surface, renderers, cameras from options_
@@ -159,17 +146,6 @@ private:
     void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
     void animationFrame(int f, uint32_t k);
     const FrameCameras& frameCameras();  // of the options, made when an animation needs them
-    // What the quality probes do with the frame renderAll draws next (setQuality).
-    enum class QualityStep { None, Keep, Measure };
-    QualityStep qualityStep(int stillFrame = -1, int frame = -1);
-    void makeProbes();
-    void collectQuality(size_t view, const methods::SurfaceGpu& surface, const core::Camera& camera, uint32_t k);
-
-    // One dye step at this frame's camera and data time (nothing without sources).
-    void stepDye(const core::Camera& camera, double time, double perFrame);
-    void resetDye();                     // the dye empty, at frame 0 (a restart)
-    bool sameGeometryEverywhere(bool mine) const;  // `mine` and'ed over the process group
-    std::vector<methods::DyeEmitter> dyeEmitters(const core::Camera& camera, const core::SurfaceMesh& mesh);
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
     core::StepProvider& steps_;
@@ -187,19 +163,8 @@ private:
     core::Camera lastCamera_;
     double lastTime_ = 0.0;
     std::function<void()> onFrame_;
-    int qualityEvery_ = 0;
-    quality::QualityParams qualityParams_;
-    QualityStep qualityNext_ = QualityStep::None;
-    double qualityMs_ = 0.0;
-    int qualityCounter_ = 0;            // frames since the quality log was cleared, warm-up not
-    std::vector<std::unique_ptr<quality::QualityProbe>> probes_;
-    std::vector<std::vector<quality::FrameQuality>> qualityLog_;
-
-    std::unique_ptr<methods::DyeField> dye_;
-    std::vector<PlacedDye> placedDye_;
-    int dyeFrame_ = 0;                  // dye steps taken since the start
-    double dyeDt_ = 0.0, dyeVelocityTime_ = 0.0;
-    methods::DyeView dyeView_;
+    QualityMonitor quality_;
+    DyeInjection dye_;
 };
 
 }  // namespace flowsurf::session

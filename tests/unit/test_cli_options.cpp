@@ -150,7 +150,7 @@ TEST(CliOptions, ConfigFileRoundTrip) {
     RenderOptions b;
     applyConfigFile(path, b);
     for (const OptionSpec& spec : renderOptionTable())
-        if (spec.saved) {
+        if (spec.takes(FrontEnd::Config)) {
             EXPECT_EQ(spec.get(b), spec.get(a)) << spec.name;
         }
     EXPECT_EQ(*b.eye, *a.eye);
@@ -238,22 +238,41 @@ TEST(CliOptions, NameListsComeFromTheTables) {
     EXPECT_EQ(parse({"x", "-m", "ibfvs"}).method, methods::Method::Ibfvs);
 }
 
-// The front ends take their options by these rules, and the manual's option reference
-// lists them by the same (tools/docs/option_reference.cpp).
+// Each row declares the front ends that take it; the front ends and the manual's option
+// reference (tools/docs/option_reference.cpp) read them from there.
 TEST(CliOptions, FrontEndsOfEachOption) {
     auto spec = [](const char* name) { return *findOption(name); };
     EXPECT_EQ(paraviewProperty(spec("filter-length")), "FlowSurfFilterLength");
     EXPECT_EQ(paraviewProperty(spec("warmup")), "FlowSurfWarmup");
     EXPECT_EQ(paraviewProperty(spec("colormap")), "");   // ParaView's own colouring
     EXPECT_EQ(paraviewProperty(spec("size")), "");       // the view's size
-    EXPECT_TRUE(isRendererOption(spec("alpha")));
-    EXPECT_FALSE(isRendererOption(spec("output")));      // the caller writes its files
-    EXPECT_FALSE(isRendererOption(spec("patches")));     // read with the surface
-    EXPECT_TRUE(isReadOption(spec("patches")));
-    EXPECT_FALSE(isReadOption(spec("field")));            // read()'s own argument
-    EXPECT_TRUE(inViewerPanel(spec("alpha")));
-    EXPECT_TRUE(inViewerPanel(spec("eye")));
-    EXPECT_FALSE(inViewerPanel(spec("orbit")));
-    for (const OptionSpec& s : renderOptionTable())
-        EXPECT_FALSE(isRendererOption(s) && isReadOption(s)) << s.name << " belongs to one of Renderer and read";
+    EXPECT_TRUE(spec("alpha").takes(FrontEnd::Renderer));
+    EXPECT_FALSE(spec("output").takes(FrontEnd::Renderer));  // the caller writes its files
+    EXPECT_FALSE(spec("patches").takes(FrontEnd::Renderer)); // read with the surface
+    EXPECT_TRUE(spec("patches").takes(FrontEnd::Read));
+    EXPECT_FALSE(spec("field").takes(FrontEnd::Read));        // read()'s own argument
+    EXPECT_TRUE(spec("alpha").takes(FrontEnd::Panel));
+    EXPECT_TRUE(spec("eye").takes(FrontEnd::Panel));
+    EXPECT_FALSE(spec("orbit").takes(FrontEnd::Panel));
+    EXPECT_TRUE(spec("method").takes(FrontEnd::PanelOwn));   // buttons of their own, not a widget
+    EXPECT_FALSE(spec("method").takes(FrontEnd::Panel));
+    EXPECT_FALSE(spec("quiet").takes(FrontEnd::Config));     // messages are not a saved state
+    EXPECT_EQ(groupName(spec("dye").role.group), "Dye");
+}
+
+// What the rows declare agrees with what the front ends do with them: what is read (Reload)
+// belongs to the surface and what is written (Output) to the caller, never to a Renderer;
+// the options of reading are reloads; the command line takes every option once.
+TEST(CliOptions, RolesAgreeWithEffects) {
+    int positional = 0;
+    for (const OptionSpec& s : renderOptionTable()) {
+        const OptionEffect e = s.role.effect;
+        EXPECT_EQ(s.takes(FrontEnd::Renderer), e != OptionEffect::Reload && e != OptionEffect::Output) << s.name;
+        EXPECT_TRUE(!s.takes(FrontEnd::Read) || e == OptionEffect::Reload) << s.name;
+        EXPECT_NE(s.takes(FrontEnd::CommandLine), s.takes(FrontEnd::Positional)) << s.name;
+        EXPECT_FALSE(s.takes(FrontEnd::Panel) && s.takes(FrontEnd::PanelOwn)) << s.name;
+        EXPECT_EQ(s.role.effect == OptionEffect::Camera, s.role.group == OptionGroup::Camera) << s.name;
+        positional += s.takes(FrontEnd::Positional);
+    }
+    EXPECT_EQ(positional, 1);
 }

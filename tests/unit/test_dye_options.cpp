@@ -10,6 +10,7 @@
 
 #include <utility>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -46,6 +47,21 @@ TEST(DyeOptions, RepeatableSourcesWithRadiusAndColour) {
     RenderOptions back;
     setOption(back, "dye", findOption("dye")->get(o));
     EXPECT_EQ(back.dye, o.dye);
+}
+
+// A source made from its values (Renderer::addDye, the viewer's ctrl+click) is the one its
+// text reads back as, so a log or a saved state replays it exactly.
+TEST(DyeOptions, SourceFromValuesEqualsItsText) {
+    const glm::vec3 p(1.0f / 3.0f, -2.7182817f, 0.1f);
+    const methods::DyeSource s = dyeSource(p, 0.25f, "orange", 0, "addDye");
+    EXPECT_EQ(parseDyeSources(dyeSourcesText({s})).at(0), s);
+    EXPECT_EQ(s.point, p);
+    // No colour: the palette's, as the text without one gives for the same position.
+    const methods::DyeSource third = dyeSource(p, 0.0f, std::nullopt, 2, "addDye");
+    EXPECT_EQ(third.color, parseDyeSources("0,0,0;0,0,0;1,1,1").at(2).color);
+    EXPECT_NE(messageOf([&] { dyeSource(p, -1.0f, std::nullopt, 0, "addDye"); }).find("addDye"), std::string::npos);
+    EXPECT_THROW(dyeSource(glm::vec3(INFINITY, 0, 0), 0.0f, std::nullopt, 0, "addDye"), ConfigError);
+    EXPECT_THROW(parseDyeSources("1,2,3:0:"), ConfigError);  // a colour's place with none in it
 }
 
 TEST(DyeOptions, BadValuesNameTheOption) {

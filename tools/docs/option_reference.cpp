@@ -5,6 +5,7 @@
 #include "session/options/options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -69,6 +70,11 @@ std::string effect(OptionEffect e) {
     return "";
 }
 
+std::string upper(std::string s) {
+    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
 std::string frontEnds(const OptionSpec& s) {
     const std::string py = [&] {
         std::string n = s.name;
@@ -76,12 +82,12 @@ std::string frontEnds(const OptionSpec& s) {
         return n;
     }();
     std::vector<std::string> out;
-    out.push_back("CLI");
-    if (s.saved) out.push_back("config");
-    out.push_back(inViewerPanel(s) ? "viewer panel" : "viewer `set`");
-    if (isRendererOption(s)) out.push_back("Python `" + py + "=`, C++ `set`");
-    if (isReadOption(s)) out.push_back("Python `read(" + py + "=)`, C++ `Surface::read`");
-    if (!paraviewProperty(s).empty()) out.push_back("ParaView `" + paraviewProperty(s) + "`");
+    if (s.takes(FrontEnd::CommandLine) || s.takes(FrontEnd::Positional)) out.push_back("CLI");
+    if (s.takes(FrontEnd::Config)) out.push_back("config");
+    out.push_back(s.takes(FrontEnd::Panel) || s.takes(FrontEnd::PanelOwn) ? "viewer panel" : "viewer `set`");
+    if (s.takes(FrontEnd::Renderer)) out.push_back("Python `" + py + "=`, C++ `set`");
+    if (s.takes(FrontEnd::Read)) out.push_back("Python `read(" + py + "=)`, C++ `Surface::read`");
+    if (s.takes(FrontEnd::ParaView)) out.push_back("ParaView `" + paraviewProperty(s) + "`");
     std::string text;
     for (const auto& f : out) text += (text.empty() ? "" : ", ") + f;
     return text;
@@ -104,20 +110,20 @@ int main() {
          "**Change** says what changing it means for a running animation (viewer, `Renderer.set`, "
          "ParaView).\n";
     // One table per group, the groups in the order they first appear.
-    std::vector<std::string> groups;
+    std::vector<OptionGroup> groups;
     for (const OptionSpec& s : renderOptionTable())
-        if (std::find(groups.begin(), groups.end(), s.group) == groups.end()) groups.push_back(s.group);
-    for (const std::string& group : groups) {
-        o << "\n## " << group << "\n\n"
+        if (std::find(groups.begin(), groups.end(), s.role.group) == groups.end()) groups.push_back(s.role.group);
+    for (const OptionGroup group : groups) {
+        o << "\n## " << groupName(group) << "\n\n"
           << "| option | value | default | change | front ends | what it does |\n"
           << "|---|---|---|---|---|---|\n";
         for (const OptionSpec& s : renderOptionTable()) {
-            if (s.group != group) continue;
-            const std::string name = s.name == "input" ? "INPUT (positional)"
+            if (s.role.group != group) continue;
+            const std::string name = s.takes(FrontEnd::Positional) ? upper(s.name) + " (positional)"
                                                        : "--" + s.name + (s.shortName.empty() ? "" : ", -" + s.shortName);
             const std::string def = defaultText(s);
             o << "| " << code(name) << (s.repeatable ? " (repeatable)" : "") << " | " << value(s) << " | "
-              << (def.empty() ? "—" : code(def)) << " | " << effect(s.effect) << " | " << frontEnds(s) << " | "
+              << (def.empty() ? "—" : code(def)) << " | " << effect(s.role.effect) << " | " << frontEnds(s) << " | "
               << cell(s.help) << " |\n";
         }
     }

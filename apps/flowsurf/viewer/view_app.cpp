@@ -223,7 +223,7 @@ private:
         } catch (const std::exception& e) {
             // Keep the data that was loaded: restore the options it was read with.
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.effect == OptionEffect::Reload) spec.set(state_.options, spec.get(loaded_));
+                if (spec.role.effect == OptionEffect::Reload) spec.set(state_.options, spec.get(loaded_));
             report(e.what());
         }
         const bool sizeChanged = pipeline_.ready() && (pipeline_.viewSize().width != state_.viewSize().width ||
@@ -268,7 +268,7 @@ private:
         try {
             // Options that apply live (effect None: the dye sources) go to the playback as they are.
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.effect == OptionEffect::None && spec.get(state_.options) != spec.get(pipeline_.playback().options()))
+                if (spec.role.effect == OptionEffect::None && spec.get(state_.options) != spec.get(pipeline_.playback().options()))
                     pipeline_.playback().set(spec.name, spec.get(state_.options));
             pipeline_.render({camera, state_.time, state_.timePerFrame}, state_.advancing());
         } catch (const std::exception& e) {

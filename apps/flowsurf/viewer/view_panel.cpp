@@ -67,7 +67,7 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool
         break;
     }
     case OptionKind::Color: {
-        glm::vec3 c = state.options.params.common.background;
+        const glm::vec3 c = parseColor(current, "--" + spec.name);
         float rgb[3] = {c.r, c.g, c.b};
         ImGui::ColorEdit3(label, rgb);
         if (ImGui::IsItemDeactivatedAfterEdit())
@@ -123,7 +123,7 @@ void Window::dyePanel(const ViewerState& state) {
     if (removed >= 0) sources.erase(sources.begin() + removed);
     if (removed >= 0 || moved) emitSet("dye", session::dyeSourcesText(sources));
     for (const OptionSpec& spec : renderOptionTable())
-        if (spec.group == "Dye" && spec.name != "dye") optionWidget(spec, state);
+        if (spec.role.group == OptionGroup::Dye && spec.takes(FrontEnd::Panel)) optionWidget(spec, state);
 }
 
 void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
@@ -220,14 +220,15 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         int mode = state.rotateMode == RotateMode::Turntable ? 0 : 1;
         if (ImGui::Combo("rotate", &mode, "turntable\0trackball\0")) emitSet("rotate", mode == 0 ? "turntable" : "trackball");
         for (const OptionSpec& spec : renderOptionTable())
-            if (spec.group == "Camera" && inViewerPanel(spec)) optionWidget(spec, state);
+            if (spec.role.group == OptionGroup::Camera && spec.takes(FrontEnd::Panel)) optionWidget(spec, state);
         if (ImGui::Button("reset view")) queue_.push_back({frame_, EventType::Key, "r"});
     }
 
-    for (const char* group : {"Method", "Overlay"})
-        if (ImGui::CollapsingHeader(group == std::string("Method") ? "Method parameters" : "Overlay"))
+    for (const OptionGroup group : {OptionGroup::Method, OptionGroup::Overlay})
+        if (ImGui::CollapsingHeader(group == OptionGroup::Method ? "Method parameters" : "Overlay"))
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.group == group && spec.name != "method") optionWidget(spec, state, pipeline.ready());
+                if (spec.role.group == group && spec.takes(FrontEnd::Panel))
+                    optionWidget(spec, state, pipeline.ready());
 
     if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
 

@@ -192,11 +192,7 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
                         depth * 2.0f - 1.0f, 1.0f);
     const glm::vec4 p = inv * ndc;
     std::vector<methods::DyeSource> sources = state.options.dye;
-    methods::DyeSource s;
-    s.point = glm::vec3(p) / p.w;
-    s.color = methods::kDyePalette[sources.size() % std::size(methods::kDyePalette)];
-    // As the option's text reads it back, so the log replays exactly this source.
-    sources.push_back(session::parseDyeSources(session::dyeSourcesText({s})).at(0));
+    sources.push_back(session::dyeSource(glm::vec3(p) / p.w, 0.0f, std::nullopt, sources.size(), "--dye"));
     emitSet("dye", session::dyeSourcesText(sources));
 }
 

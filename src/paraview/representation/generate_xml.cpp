@@ -1,8 +1,7 @@
 // flowsurf — writes the FlowSurf representation's server-manager XML (ParaView 5.11) to
-// stdout, one property per row of the option table that a ParaView user sets
-// (session::paraviewProperty: the Method, Overlay and Dye groups and the warm-up, named
-// "FlowSurf" + the option in CamelCase, --filter-length -> FlowSurfFilterLength; colormap,
-// lighting and background are ParaView's own). Run at configure time.
+// stdout, one property per row of the option table that ParaView takes (FrontEnd::ParaView,
+// declared in the row), named by session::paraviewProperty: "FlowSurf" + the option in
+// CamelCase, --filter-length -> FlowSurfFilterLength. Run at configure time.
 #include "session/options/options.h"
 
 #include <climits>
@@ -94,7 +93,7 @@ int main() {
       << "        <Documentation>Point array of 3-component vectors to show (--field).</Documentation>\n"
       << "      </StringVectorProperty>\n";
     for (const OptionSpec& s : flowsurf::session::renderOptionTable()) {
-        if (flowsurf::session::paraviewProperty(s).empty()) continue;
+        if (!s.takes(flowsurf::session::FrontEnd::ParaView)) continue;
         property(s, o);
         names += "            <Property name=\"" + flowsurf::session::paraviewProperty(s) + "\"/>\n";
     }

@@ -62,7 +62,7 @@ std::string configJson(const RenderOptions& o) {
     nlohmann::ordered_json doc;
     doc["flowsurf-config"] = 1;
     for (const OptionSpec& spec : renderOptionTable()) {
-        if (!spec.saved) continue;
+        if (!spec.takes(FrontEnd::Config)) continue;
         const std::string text = spec.get(o);
         if (text.empty()) continue;
         switch (spec.kind) {

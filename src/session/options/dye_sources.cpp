@@ -31,21 +31,34 @@ float checkedRadius(float r, const std::string& what, const std::string& item) {
 }
 }  // namespace
 
+methods::DyeSource dyeSource(const glm::vec3& point, float radius, const std::optional<std::string>& color,
+                             size_t index, const std::string& what) {
+    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+        throw ConfigError(what + ": the point " + formatFloat(point.x) + "," + formatFloat(point.y) + "," +
+                          formatFloat(point.z) + " is not finite");
+    methods::DyeSource s;
+    s.point = point;  // formatFloat writes what reads back exactly
+    s.radius = checkedRadius(radius, what, formatFloat(radius));
+    s.color = quantised(color ? parseColor(*color, what) : paletteColor(index));
+    return s;
+}
+
 std::vector<methods::DyeSource> parseDyeSources(const std::string& text, const std::string& what) {
     std::vector<methods::DyeSource> out;
     std::stringstream ss(text);
     for (std::string item; std::getline(ss, item, ';');) {
         if (item.empty()) continue;
-        methods::DyeSource s;
         const size_t c1 = item.find(':');
         const size_t c2 = c1 == std::string::npos ? std::string::npos : item.find(':', c1 + 1);
-        s.point = parseVec3(item.substr(0, c1), what);
+        const glm::vec3 point = parseVec3(item.substr(0, c1), what);
+        float radius = 0.0f;
         if (c1 != std::string::npos) {
             const std::string r = item.substr(c1 + 1, c2 == std::string::npos ? std::string::npos : c2 - c1 - 1);
-            s.radius = r.empty() ? 0.0f : checkedRadius(parseFloat(r, what), what, item);
+            radius = r.empty() ? 0.0f : checkedRadius(parseFloat(r, what), what, item);
         }
-        s.color = quantised(c2 == std::string::npos ? paletteColor(out.size()) : parseColor(item.substr(c2 + 1), what));
-        out.push_back(s);
+        const std::optional<std::string> color =
+            c2 == std::string::npos ? std::nullopt : std::optional<std::string>(item.substr(c2 + 1));
+        out.push_back(dyeSource(point, radius, color, out.size(), what));
     }
     return out;
 }

@@ -1,6 +1,8 @@
 // flowsurf — the options of `flowsurf render`, `compare` and `view` as one table of data
-// (name, group, help, kind, range, choices, how to set and read the value): the command
-// line (CLI11, --help), config files, the viewer's panel and its event logs all use it.
+// (name, group, effect, front ends, help, kind, range, choices, how to set and read the
+// value): the command line (CLI11, --help), config files, the viewer's panel and its event
+// logs, flowsurf::Renderer and Python, ParaView and the manual read it. The rows are listed
+// by group in rows_*.cpp.
 // Also the parsers of the value syntaxes. Free of GL so unit tests cover it.
 #pragma once
 
@@ -77,26 +79,60 @@ inline constexpr methods::EnumNames<OptionEffect, 5> kOptionEffectNames{{{Option
                                                                          {OptionEffect::Rebuild, "rebuild"},
                                                                          {OptionEffect::Reload, "reload"}}};
 
-struct OptionSpec {
-    std::string name;                 // long name without dashes: CLI --name, config key, event `set name`
-    std::string shortName;            // one letter (-m) or empty
-    std::string group;                // Output, Data, Method, Overlay, Camera
-    std::string help;                 // one line; the default is appended from RenderOptions{}
-    OptionKind kind = OptionKind::Text;
-    double min = 0.0, max = 0.0;      // numeric range, inclusive (Int, Float)
-    std::vector<std::string> choices; // Choice
-    bool saved = true;                // part of a saved view state (config files)
-    // Parses and checks `text` and stores it; throws ConfigError naming the option.
-    std::function<void(RenderOptions&, const std::string&)> set;
-    // The value as text that set() reads back exactly; empty when unset (e.g. camera
-    // "fit the bounds").
-    std::function<std::string(const RenderOptions&)> get;
-    OptionEffect effect = OptionEffect::Rebuild;  // what a change means after the start
-    // Given several times on the command line: the values joined by ';' are set at once.
-    bool repeatable = false;
+// The section an option is listed in: --help, the manual's option reference, the viewer's
+// panel and the Python/C++ option descriptions.
+enum class OptionGroup { Data, Output, Method, Overlay, Dye, Camera };
+inline constexpr methods::EnumNames<OptionGroup, 6> kOptionGroupNames{{{OptionGroup::Data, "Data"},
+                                                                       {OptionGroup::Output, "Output"},
+                                                                       {OptionGroup::Method, "Method"},
+                                                                       {OptionGroup::Overlay, "Overlay"},
+                                                                       {OptionGroup::Dye, "Dye"},
+                                                                       {OptionGroup::Camera, "Camera"}}};
+std::string groupName(OptionGroup group);
+
+// The front ends that take an option, a set of bits. Every option is also a `set NAME VALUE`
+// event of the viewer's logs.
+enum class FrontEnd : unsigned {
+    CommandLine = 1u << 0,  // --name VALUE of render, compare, quality and view
+    Positional = 1u << 1,   // the command line's positional argument instead (the input)
+    Config = 1u << 2,       // a key of config files and of the viewer's saved state
+    Panel = 1u << 3,        // a widget of the viewer's panel made from the row's kind
+    PanelOwn = 1u << 4,     // in the viewer's panel by a widget of its own (method buttons, dye list)
+    Renderer = 1u << 5,     // flowsurf::Renderer::set, Python Renderer/render keywords
+    Read = 1u << 6,         // Surface::read, flowsurf.read keywords, `flowsurf info`
+    ParaView = 1u << 7,     // a property of the ParaView representation (see paraviewProperty)
+};
+constexpr FrontEnd operator|(FrontEnd a, FrontEnd b) { return FrontEnd(unsigned(a) | unsigned(b)); }
+
+// What a row is besides its value, declared in the row: its section, what a change means
+// after the start (the viewer, flowsurf::Renderer, ParaView) and the front ends that take it.
+struct OptionRole {
+    OptionGroup group = OptionGroup::Data;
+    OptionEffect effect = OptionEffect::Rebuild;
+    FrontEnd frontEnds = FrontEnd::CommandLine;
 };
 
-// Every option of render/compare/view, in --help order. The positional input is "input".
+// One row of the table. Every member has a default so that rows can name only theirs.
+struct OptionSpec {
+    std::string name = {};                 // long name without dashes: CLI --name, config key, event `set name`
+    std::string shortName = {};            // one letter (-m) or empty
+    OptionRole role = {};
+    std::string help = {};                 // one line; the default is appended from RenderOptions{}
+    OptionKind kind = OptionKind::Text;
+    double min = 0.0, max = 0.0;           // numeric range, inclusive (Int, Float, Size, Color)
+    std::vector<std::string> choices = {}; // Choice
+    // Parses and checks `text` and stores it; throws ConfigError naming the option.
+    std::function<void(RenderOptions&, const std::string&)> set = {};
+    // The value as text that set() reads back exactly; empty when unset (e.g. camera
+    // "fit the bounds").
+    std::function<std::string(const RenderOptions&)> get = {};
+    // Given several times on the command line: the values joined by ';' are set at once.
+    bool repeatable = false;
+
+    bool takes(FrontEnd f) const { return (unsigned(role.frontEnds) & unsigned(f)) != 0; }
+};
+
+// Every option of render/compare/view, in --help order.
 const std::vector<OptionSpec>& renderOptionTable();
 // The option named `name` (long name without dashes), or null.
 const OptionSpec* findOption(const std::string& name);
@@ -109,14 +145,8 @@ OptionEffect effectOf(const std::string& name);
 // The largest effect among the options whose values differ between `a` and `b`.
 OptionEffect changeEffect(const RenderOptions& a, const RenderOptions& b);
 
-// Where an option is set besides the command line (render, compare, quality, view), the
-// viewer's `set NAME VALUE` events and, when `saved`, config files. The front ends choose
-// their options with these, and the manual's option reference lists them from the same.
-bool isRendererOption(const OptionSpec& spec);  // flowsurf::Renderer::set, Python Renderer/render keywords
-bool isReadOption(const OptionSpec& spec);      // Surface::read, flowsurf.read keywords, `flowsurf info`
-bool inViewerPanel(const OptionSpec& spec);     // a widget of the viewer's panel
-// The ParaView representation's property ("FlowSurf" + the name in CamelCase), empty when
-// ParaView has its own (colormap, lighting, background) or none.
+// The ParaView representation's property of an option that ParaView takes: "FlowSurf" + the
+// name in CamelCase (--filter-length: FlowSurfFilterLength); empty for the others.
 std::string paraviewProperty(const OptionSpec& spec);
 
 // Checks ranges and combinations after parsing; throws ConfigError naming the option.

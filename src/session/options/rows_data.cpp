@@ -1,0 +1,133 @@
+// flowsurf — the option table's rows of what goes in and what comes out: the input and how it
+// is read (Data: a change reads the input again; the field and time selection only rebuild),
+// and the Output rows (the image, the frames, the files a front end writes, the messages).
+#include "session/options/option_rows.h"
+
+namespace flowsurf::session::rows {
+
+std::vector<OptionSpec> inputRows() {
+    return {
+        text("input", {G::Data, E::Reload, Positional | Config},
+             "Surface file (.vtp .vtu .vtk .ply .obj .stl .foam .e .case .pvd), a file series (surf_%04d.vtp, "
+             "surf_*.vtp) or builtin:NAME", FS_REF(input), OptionKind::Path),
+    };
+}
+
+std::vector<OptionSpec> outputRows() {
+    return {
+        shortNamed("o", text("output", {G::Output, E::Output, CommandLine | Config},
+                             "FILE.png (final composite), FILE.mp4 (all frames) or frame_%04d.png", FS_REF(output),
+                             OptionKind::Path)),
+        {.name = "size",
+         .role = {G::Output, E::Rebuild, CommandLine | Config | Renderer},
+         .help = "Image size WxH in pixels",
+         .kind = OptionKind::Size,
+         .min = core::kMinImageSide,
+         .max = core::kMaxImageSide,
+         .set = [](RenderOptions& o, const std::string& v) { o.size = parseSize(v); },
+         .get = [](const RenderOptions& o) {
+             return std::to_string(o.size.width) + "x" + std::to_string(o.size.height);
+         }},
+        number("frames", {G::Output, E::Rebuild, CommandLine | Config | Renderer},
+               "PNG: advection frames before the output frame; MP4 or PNG sequence: frames written",
+               &RenderOptions::frames, 0, 100000),
+        text("flow-texture", {G::Output, E::Output, CommandLine},
+             "Also write the advected texture F_a alone (16-bit gray PNG)", FS_REF(flowTexture), OptionKind::Path),
+        number("warmup", {G::Output, E::Rebuild, CommandLine | Config | Renderer | ParaView},
+               "Frames advected before the first written frame of an MP4 or PNG sequence and the viewer's start "
+               "(-1: enough to look converged, 3/alpha for ISA and IBFVS, 0 for the hybrid)",
+               &RenderOptions::warmup, -1, 100000),
+        number("fps", {G::Output, E::Output, CommandLine | Config}, "MP4 frame rate", &RenderOptions::fps, 1, 240),
+        number("crf", {G::Output, E::Output, CommandLine | Config}, "MP4 H.264 quality, 0 = lossless",
+               &RenderOptions::crf, 0, 51),
+        shortNamed("q", flag("quiet", {G::Output, E::None, CommandLine | Renderer}, "No progress bar or messages",
+                             FS_REF(quiet))),
+        shortNamed("v", flag("verbose", {G::Output, E::None, CommandLine | Renderer},
+                             "Log the OpenGL renderer and timings", FS_REF(verbose))),
+    };
+}
+
+namespace {
+
+// The field shown (read, or derived from what is read) and how an OpenFOAM case is read.
+std::vector<OptionSpec> readRows() {
+    return {
+        text("field", {G::Data, E::Reload, CommandLine | Config},
+             "Vector array to show (default: the first 3-component point array that is not zero everywhere in the "
+             "series), or a derived field: curvature-max, curvature-min, gradient:ARRAY, down:x,y,z", FS_REF(field)),
+        number("curvature-radius", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+               "Derived curvature fields: average the curvature tensor over this radius (object units; 0: one-ring "
+               "estimate only)", &RenderOptions::curvatureRadius, 0, 1e30),
+        text("patches", {G::Data, E::Reload, CommandLine | Config | Read},
+             "OpenFOAM: read the boundary patches whose names match this regular expression (default: all)",
+             FS_REF(patches)),
+        textChoice("foam-case", {G::Data, E::Reload, CommandLine | Config | Read},
+                   "OpenFOAM: read the reconstructed case or the processor* directories of a decomposed one (auto: "
+                   "the decomposed one when it has more time directories or the case folder has no mesh)",
+                   {"auto", "reconstructed", "decomposed"}, FS_REF(foamCase)),
+    };
+}
+
+// Which data times the animation shows and how fast.
+std::vector<OptionSpec> timeRows() {
+    return {
+        {.name = "time-step",
+         .role = {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+         .help = "Render only this time step (index), as steady data",
+         .kind = OptionKind::Int,
+         .min = 0,
+         .max = 1e9,
+         .set = [](RenderOptions& o, const std::string& v) {
+             if (v.empty()) { o.timeStepGiven = false; o.timeStep = 0; return; }
+             double d = parseNumber(v, "--time-step");
+             if (d < 0 || d > 1e9 || d != std::floor(d))
+                 throw ConfigError("--time-step: '" + v + "' is not a step index");
+             o.timeStep = size_t(d);
+             o.timeStepGiven = true;
+         },
+         .get = [](const RenderOptions& o) { return o.timeStepGiven ? std::to_string(o.timeStep) : std::string(); }},
+        {.name = "time",
+         .role = {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+         .help = "Data time range START:END of the animation (default: the whole series)",
+         .set = [](RenderOptions& o, const std::string& v) {
+             if (v.empty()) { o.timeRange.reset(); return; }
+             auto colon = v.find(':');
+             if (colon == std::string::npos) throw ConfigError("--time: '" + v + "' is not START:END");
+             o.timeRange = std::make_pair(parseNumber(v.substr(0, colon), "--time"),
+                                          parseNumber(v.substr(colon + 1), "--time"));
+         },
+         .get = [](const RenderOptions& o) {
+             return o.timeRange ? formatDouble(o.timeRange->first) + ":" + formatDouble(o.timeRange->second)
+                                : std::string();
+         }},
+        number("time-per-frame", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+               "Data time per animation frame (0: see --frames-per-step)", &RenderOptions::timePerFrame, 0, 1e30),
+        number("frames-per-step", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+               "Animation frames per data time step (0: the range over --frames)", &RenderOptions::framesPerStep, 0,
+               100000),
+        {.name = "trace-dt",
+         .role = {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+         .help = "Hybrid on a time series: data time per particle step, so the LIC follows pathlines (default: the "
+                 "data time per frame; 0: streamlines of each frame's field)",
+         .kind = OptionKind::Float,
+         .min = 0,
+         .max = 1e30,
+         .set = [](RenderOptions& o, const std::string& v) {
+             if (v.empty()) { o.traceDt.reset(); return; }
+             double d = parseNumber(v, "--trace-dt");
+             if (d < 0) throw ConfigError("--trace-dt: " + v + " must not be negative");
+             o.traceDt = d;
+         },
+         .get = [](const RenderOptions& o) { return o.traceDt ? formatDouble(*o.traceDt) : std::string(); }},
+    };
+}
+
+}  // namespace
+
+std::vector<OptionSpec> dataRows() {
+    std::vector<OptionSpec> rows = readRows();
+    for (OptionSpec& s : timeRows()) rows.push_back(std::move(s));
+    return rows;
+}
+
+}  // namespace flowsurf::session::rows

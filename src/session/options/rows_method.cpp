@@ -1,0 +1,113 @@
+// flowsurf — the option table's Method rows: the method and its parameters (noise, advection,
+// each method's stages, where the GPU work runs). Each row declares its role: a change
+// rebuilds the renderers; every front end takes them, the viewer's panel as widgets made from
+// their kinds (the method as buttons of its own).
+#include "methods/common/gl_path.h"
+#include "session/options/option_rows.h"
+
+namespace flowsurf::session::rows {
+
+namespace {
+
+// "on llvmpipe when triangles >= 0.5 x pixels, on H100 when ..." from the auto rule itself.
+std::string computeRasterRuleText() {
+    std::string text;
+    for (const methods::ComputeRasterRule& rule : methods::kComputeRasterRule)
+        text += std::string(text.empty() ? "on " : ", on ") + std::string(rule.renderer) + " when triangles >= " +
+                formatDouble(rule.trianglesPerPixel) + " x pixels";
+    return text;
+}
+
+// The method, the noise [L eq. 9] and the advection that ISA and IBFVS share.
+std::vector<OptionSpec> noiseAndAdvectionRows() {
+    return {
+        shortNamed("m", choice("method", {G::Method, E::Rebuild, CommandLine | Config | PanelOwn | Renderer | ParaView},
+                               "Visualization method", methods::kMethodNames, FS_REF(method))),
+        param<float>("alpha", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Noise blend alpha [L eq. 9] (papers: 0.1-0.2)", FS_REF(params.common.alpha), 0, 1),
+        param<float>("beta", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Texture strength beta [L eq. 10]", FS_REF(params.common.beta), 0, 1),
+        param<float>("step-px", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "ISA/IBFVS: largest displacement per frame in pixels (dt)", FS_REF(params.common.stepPx), 0, 64),
+        param<float>("lic-step-px", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Hybrid: arc length per particle integration step in pixels ([W] dt)",
+                     FS_REF(params.hybrid.stepPx), 0.05, 64),
+        param<float>("speed-percentile", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Clamp advection speed at this percentile of the surface's speeds (100: no clamp)",
+                     FS_REF(params.common.speedPercentile), 1, 100),
+        onOff("normalize", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+              "on: unit-length vectors, uniform streaks; off: streak length shows speed",
+              FS_REF(params.common.normalize)),
+        param<float>("noise-scale", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Noise cell size s in pixels (papers: 1-10)", FS_REF(params.common.noise.scale), 1, 64),
+        param<float>("noise-period", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "Frames per cycle of each noise cell's profile", FS_REF(params.common.noise.period), 2, 10000),
+        choice("noise-profile", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Periodic profile w of the noise", methods::kNoiseProfileNames, FS_REF(params.common.noise.profile)),
+        param<uint32_t>("seed", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                        "Noise seed", FS_REF(params.common.noise.seed), 0, 4294967295.0),
+        param<int>("grid-res", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                   "ISA advection mesh resolution R (R x R cells)", FS_REF(params.isa.gridRes), 64, 1024),
+        choice("isa-warp", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "ISA texture advection: pixel (mesh interpolated per pixel) or mesh (draw the R x R grid)",
+               methods::kIsaWarpNames, FS_REF(params.isa.warp)),
+        choice("resample", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "ISA/IBFVS: resampling of the advected texture each frame: bicubic (Catmull-Rom, clamped) or "
+               "bilinear ([L])", methods::kResampleNames, FS_REF(params.common.resample)),
+        choice("noise-injection", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "ISA/IBFVS: noise G sampled at the pixel (point, [L]) or averaged along its motion over the frame "
+               "(swept)", methods::kNoiseInjectionNames, FS_REF(params.common.noiseInjection)),
+    };
+}
+
+// Where the GPU work runs, what a camera move does, and each method's own stages.
+std::vector<OptionSpec> stageRows() {
+    return {
+        flag("cull-back-faces", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+             "Skip back-facing triangles (closed, outward-oriented surfaces only)",
+             FS_REF(params.common.cullBackFaces)),
+        choice("gl-path", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Per-pixel passes as compute or fragment shaders (same images); auto picks per GL renderer",
+               methods::kGlPathNames, FS_REF(params.common.glPath)),
+        choice("surface-raster", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Who rasterises the surface (ISA's velocity image, the hybrid's seeds): gl, or compute shaders (a "
+               "visibility buffer; faster for many small triangles on a software renderer or on GPUs with few "
+               "graphics units); auto picks compute " + computeRasterRuleText(),
+               methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)),
+        choice("parallel", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Several processes on one view (ParaView under MPI): tiles (each runs the image stages on its own "
+               "screen tile) or replicate (each runs them on the whole image); the same image",
+               methods::kParallelModeNames, FS_REF(params.common.parallel)),
+        flag("edge-mask", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+             "IBFVS silhouette edge mask over the image [L §IV-E.2]", FS_REF(params.ibfvs.edgeMask)),
+        choice("on-camera-move", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "When the camera moves: translate (reproject the texture with the surface), freeze, none [L §IV-I]",
+               methods::kCameraMoveNames, FS_REF(params.common.onCameraMove)),
+        param<int>("filter-length", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                   "Hybrid LIC filter length L in samples ([W] 25-70)", FS_REF(params.hybrid.filterLength), 1, 1001),
+        choice("kernel", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Hybrid LIC kernel", methods::kKernelNames, FS_REF(params.hybrid.kernel)),
+        choice("integrator", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "Hybrid particle integrator (euler as in [W])", methods::kIntegratorNames,
+               FS_REF(params.hybrid.integrator)),
+        intChoice("noise-size", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                  "Hybrid solid noise texels per side", FS_REF(params.hybrid.noiseSize), {64, 128}),
+        param<float>("edge-epsilon", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                     "ISA edge detection eps [L eq. 14], depth range per pixel", FS_REF(params.isa.edgeEpsilon), 0, 10),
+        onOff("edge-blending", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+              "ISA edge blending [L §IV-E.1]", FS_REF(params.isa.edgeBlending)),
+        choice("edge-fill", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+               "ISA edge blending puts at edge points: noise (eq. 9's history, streaks start at full contrast) or "
+               "gray ([L])", methods::kEdgeFillNames, FS_REF(params.isa.edgeFill)),
+    };
+}
+
+}  // namespace
+
+std::vector<OptionSpec> methodRows() {
+    std::vector<OptionSpec> rows = noiseAndAdvectionRows();
+    for (OptionSpec& s : stageRows()) rows.push_back(std::move(s));
+    return rows;
+}
+
+}  // namespace flowsurf::session::rows
