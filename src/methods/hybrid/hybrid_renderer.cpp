@@ -54,25 +54,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
     }
-    if (tiled && (lastDynamic_ || tiles_->splitDue())) {
-        // The whole surface's seeds (and time levels) over this process's tile and the
-        // streaks' reach; the seeds' depth decides every layer's nearest fragment. Also
-        // when the measured costs call for a new split (a still camera).
-        timer_.begin("tile exchange");
-        if (!tileVelocity_)
-            tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
-        std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
-        if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
-            if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-            layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
-        }
-        if (unsteady) {
-            if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
-            for (int j = 0; j < levels_.count(); ++j)
-                layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
-        }
-        tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
-    }
+    if (tiled && (lastDynamic_ || tiles_->splitDue())) distributeTiles(in, unsteady);
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
 
@@ -82,6 +64,48 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 
     // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
     timer_.begin("particle tracing");
+    traceParticles(in, unsteady, tiled, speedRef);
+
+    // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
+    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
+    shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
+    if (overlay_.stretchesColor()) {
+        timer_.begin("contrast (colour)");
+        overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
+    }
+
+    // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
+    timer_.begin("overlay");
+    overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
+                   piecePixels(in, c, viewport_));
+    timer_.endFrame();
+}
+
+// The whole surface's seeds (and time levels) over this process's tile and the streaks'
+// reach; the seeds' depth decides every layer's nearest fragment. Also when the measured
+// costs call for a new split (a still camera).
+void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
+    timer_.begin("tile exchange");
+    if (!tileVelocity_)
+        tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
+    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
+    if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
+        if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+        layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
+    }
+    if (unsteady) {
+        if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
+        for (int j = 0; j < levels_.count(); ++j)
+            layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
+    }
+    tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
+}
+
+// Stage (3) into lic_: over the whole image, or (tiles) over this process's tile, whose
+// I then goes back to the processes whose fragments cover each pixel of it.
+void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef) {
+    const CommonParams& c = params_.common;
     TracingInput t;
     t.seedVelocity = tiled ? &tileVelocity_ : &seeds_.velocity();
     if (tiled) t.pixels = tiles_->tile().empty() ? PixelRect{0, 0, 0, 0} : tiles_->tile();
@@ -101,34 +125,18 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     }
     const auto traced = std::chrono::steady_clock::now();
     if (!tiled || !tiles_->tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
-    if (tiled) {
-        // The tile's cost (the return reads I back, so the wait costs nothing), then I back
-        // to the processes whose fragments cover each pixel of the tile.
-        glFinish();
-        tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
-        // (3b, tiles) the contrast histogram of this tile, summed over the processes
-        if (contrast_.enabled()) {
-            timer_.begin("contrast (texture)");
-            contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
-        }
-        timer_.begin("tile return");
-        tiles_->returnValues(*in.group, lic_.texture());
+    if (!tiled) return;
+    // The tile's cost (the return reads I back, so the wait costs nothing), then I back
+    // to the processes whose fragments cover each pixel of the tile.
+    glFinish();
+    tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
+    // (3b, tiles) the contrast histogram of this tile, summed over the processes
+    if (contrast_.enabled()) {
+        timer_.begin("contrast (texture)");
+        contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
     }
-
-    // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
-    if (contrast_.enabled()) timer_.begin("contrast (texture)");
-    if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
-    shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
-    if (overlay_.stretchesColor()) {
-        timer_.begin("contrast (colour)");
-        overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
-    }
-
-    // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
-    timer_.begin("overlay");
-    overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
-    timer_.endFrame();
+    timer_.begin("tile return");
+    tiles_->returnValues(*in.group, lic_.texture());
 }
 
 // The farthest a streak reads from its seed, in pixels: half the filter length in steps of

@@ -58,6 +58,9 @@ private:
     gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
     VelocityLevels::Volume tileLevels_;  // unsteady: the time levels merged over the tile
     int guardPx() const;
+    // Stages of renderFrame (hybrid_renderer.cpp).
+    void distributeTiles(const FrameInput& in, bool unsteady);
+    void traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef);
 };
 
 }  // namespace flowsurf::methods::hybrid

@@ -37,6 +37,11 @@ bool IsaRenderer::meshStale(const FrameInput& in, const MotionPlan& plan) const 
     return viewChanged(in) || !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
 }
 
+// The depth of the whole surface per velocity image: merged (tiles) or this render's.
+const gl::Texture2D& IsaRenderer::depthOf(int v, bool tiled) const {
+    return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
+}
+
 void IsaRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
@@ -46,113 +51,28 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     const MotionPlan plan = motion_.plan(in.camera);
     const bool tiled = tiledParallel(in, c);
     checkContrastParallel(in, c);
-    // The depth of the whole surface per velocity image: merged (tiles) or this render's.
-    const auto depthOf = [&](int v) -> const gl::Texture2D& {
-        return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
-    };
     if (plan.freezeStarts) {  // keep where the frozen texture was made
-        glCopyImageSubData(depthOf(vi_).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
+        glCopyImageSubData(depthOf(vi_, tiled).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
                            GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
         depthMadeWith_[2] = depthMadeWith_[vi_];
     }
     if (plan.advect || plan.freezeStarts) source_ = current_;
-    const int target = 1 - source_;
+    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
 
     // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
-    // source view changed). Static: reuse (1)-(2).
-    // Tiles: the whole surface's velocity and depth over this tile plus a grid cell; again
-    // from the same image when the measured costs call for a new split.
-    const auto distribute = [&] {
-        timer_.begin("tile exchange");
-        if (!tileVelocity_) {
-            tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
-            for (gl::Texture2D& d : mergedDepth_)
-                d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-        }
-        const SurfaceGBuffer& v = velocityImage_[vi_];
-        const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
-        tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
-        depthMadeWith_[vi_] = tiles_->tiles();
-    };
-    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
+    // source view changed), or the measured costs call for a new split of the tiles:
+    // (1) velocity image and (2) advection mesh. Static: reuse them.
     const bool resplit = tiled && tiles_->splitDue() && !viewChanged(in);
     lastDynamic_ = meshStale(in, plan) || resplit;
-    if (lastDynamic_) {
-        const int prevVi = vi_;
-        if (viewChanged(in)) {
-            vi_ = 1 - vi_;
-            // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
-            timer_.begin("velocity image");
-            velocityImage_[vi_].render(*in.surface, in.camera);
-            if (tiled) distribute();
-            else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
-        } else if (resplit) {
-            distribute();
-        }
-
-        // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
-        timer_.begin("advection mesh");
-        const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
-        const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
-        const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi);
-        const auto computeMesh = [&] {
-            advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth,
-                                   in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
-                                   params_.isa.edgeEpsilon);
-        };
-        computeMesh();
-        if (tiled) {
-            // The edge test reads the source depth where the flow came from: the mesh's
-            // footprint, known once it is computed (its coordinates do not depend on that
-            // depth); that part of the depth from its makers, then the mesh again.
-            footprint_ = footprint(tiles_->tile());
-            if (!depthMadeWith_[sourceVi].empty()) {
-                timer_.begin("tile exchange");
-                tiles_->pull(*in.group, sourceDepth, depthMadeWith_[sourceVi], footprint_);
-                timer_.begin("advection mesh");
-                computeMesh();
-            }
-        }
-        haveCache_ = true;
-        cachedGeneration_ = in.surface->generation();
-        cachedCamera_ = in.camera;
-        cachedSourceCamera_ = plan.sourceCamera;
-        cachedAdvect_ = plan.advect;
-    }
-    const SurfaceGBuffer& vel = velocityImage_[vi_];
+    if (lastDynamic_) updateMesh(in, plan, tiled, resplit);
 
     // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1] and
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
-    timer_.begin("texture advection");
-    const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    if (tiled && !madeWith_[source_].empty()) {
-        // The source F_a where this tile's pixels read it, from the processes that made it.
-        timer_.begin("tile exchange");
-        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
-    }
-    const auto advected = std::chrono::steady_clock::now();
-    if (!tiled || !tiles_->tile().empty())
-        textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
-                                flow_.fbo(target), params_.isa.edgeBlending, noise, tiled ? tiles_->tile() : PixelRect{});
-    current_ = target;
-    if (tiled) {
-        // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
-        glFinish();
-        tiles_->reportCost(*in.group,
-                           std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
-        madeWith_[target] = tiles_->tiles();
-        // (4b, tiles) the contrast histogram of this tile, summed over the processes
-        if (contrast_.enabled()) {
-            timer_.begin("contrast (texture)");
-            contrast_.measure(flow_.texture(target), depthOf(vi_), tiles_->tile(), in.group);
-        }
-        // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
-        timer_.begin("tile return");
-        tiles_->returnValues(*in.group, flow_.texture(target));
-    }
+    advectTexture(in, plan, tiled);
 
     // (4b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself
+    const SurfaceGBuffer& vel = velocityImage_[vi_];
     if (contrast_.enabled()) timer_.begin("contrast (texture)");
     if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());
     shown_ = &contrast_.stretch(flow_.texture(current_), vel.depth());
@@ -166,6 +86,100 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     overlay_.apply(*shown_, vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
+}
+
+// Tiles: the whole surface's velocity and depth over this tile plus a grid cell.
+void IsaRenderer::distributeTiles(const FrameInput& in) {
+    timer_.begin("tile exchange");
+    if (!tileVelocity_) {
+        tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
+        for (gl::Texture2D& d : mergedDepth_)
+            d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+    }
+    const SurfaceGBuffer& v = velocityImage_[vi_];
+    const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
+    tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
+    depthMadeWith_[vi_] = tiles_->tiles();
+}
+
+// Stages (1) and (2) of the dynamic case; `resplit`: the view is the same, only the tiles
+// are split again (from the same velocity image).
+void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit) {
+    const CommonParams& c = params_.common;
+    const int prevVi = vi_;
+    if (viewChanged(in)) {
+        vi_ = 1 - vi_;
+        // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
+        timer_.begin("velocity image");
+        velocityImage_[vi_].render(*in.surface, in.camera);
+        if (tiled) distributeTiles(in);
+        else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+    } else if (resplit) {
+        distributeTiles(in);
+    }
+
+    // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
+    timer_.begin("advection mesh");
+    const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
+    const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
+    const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi, tiled);
+    const auto computeMesh = [&] {
+        advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
+                               in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
+                               params_.isa.edgeEpsilon);
+    };
+    computeMesh();
+    if (tiled) {
+        // The edge test reads the source depth where the flow came from: the mesh's
+        // footprint, known once it is computed (its coordinates do not depend on that
+        // depth); that part of the depth from its makers, then the mesh again.
+        footprint_ = footprint(tiles_->tile());
+        if (!depthMadeWith_[sourceVi].empty()) {
+            timer_.begin("tile exchange");
+            tiles_->pull(*in.group, sourceDepth, depthMadeWith_[sourceVi], footprint_);
+            timer_.begin("advection mesh");
+            computeMesh();
+        }
+    }
+    haveCache_ = true;
+    cachedGeneration_ = in.surface->generation();
+    cachedCamera_ = in.camera;
+    cachedSourceCamera_ = plan.sourceCamera;
+    cachedAdvect_ = plan.advect;
+}
+
+// Stages (3) and (4): F_a(k) from F_a(k-1) through the advection mesh, with the noise.
+// Tiles: on this tile only, the source from its makers; the result returned to the
+// processes whose pieces cover each pixel.
+void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled) {
+    const CommonParams& c = params_.common;
+    const int target = 1 - source_;
+    timer_.begin("texture advection");
+    const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    if (tiled && !madeWith_[source_].empty()) {
+        timer_.begin("tile exchange");
+        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
+    }
+    const auto advected = std::chrono::steady_clock::now();
+    if (!tiled || !tiles_->tile().empty())
+        textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_, tiled),
+                                flow_.texture(target), flow_.fbo(target), params_.isa.edgeBlending, noise,
+                                tiled ? tiles_->tile() : PixelRect{});
+    current_ = target;
+    if (!tiled) return;
+    // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
+    glFinish();
+    tiles_->reportCost(*in.group,
+                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
+    madeWith_[target] = tiles_->tiles();
+    // (4b, tiles) the contrast histogram of this tile, summed over the processes
+    if (contrast_.enabled()) {
+        timer_.begin("contrast (texture)");
+        contrast_.measure(flow_.texture(target), depthOf(vi_, tiled), tiles_->tile(), in.group);
+    }
+    // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
+    timer_.begin("tile return");
+    tiles_->returnValues(*in.group, flow_.texture(target));
 }
 
 // Where the pixels of `tile` read the source F_a: the box of the advection mesh's source

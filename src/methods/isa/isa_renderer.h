@@ -33,6 +33,11 @@ public:
 private:
     bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
     bool meshStale(const FrameInput& in, const MotionPlan& plan) const;
+    // The stages of renderFrame (isa_renderer.cpp).
+    void updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit);
+    void advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled);
+    void distributeTiles(const FrameInput& in);
+    const gl::Texture2D& depthOf(int v, bool tiled) const;
 
     MethodParams params_;
     core::Viewport viewport_;
