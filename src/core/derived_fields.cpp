@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <queue>
 #include <sstream>
 
@@ -86,6 +87,72 @@ void vertexFrame(const glm::vec3& n, glm::vec3& u, glm::vec3& v) {
     v = glm::cross(n, u);
 }
 
+// (1) One face's second fundamental form (e, f, g) in its frame (uf, vf): least squares for
+// II from dn = II e along the three edges. nullopt for a degenerate face.
+std::optional<glm::vec3> faceTensor(const glm::vec3 (&p)[3], const glm::vec3 (&n)[3], const glm::vec3& uf,
+                                    const glm::vec3& vf) {
+    double m[3][3] = {}, r[3] = {};
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec3 e = p[(i + 2) % 3] - p[(i + 1) % 3], dn = n[(i + 2) % 3] - n[(i + 1) % 3];
+        const double eu = glm::dot(e, uf), ev = glm::dot(e, vf), du = glm::dot(dn, uf), dv = glm::dot(dn, vf);
+        // rows [eu ev 0] . (e f g) = du and [0 eu ev] . (e f g) = dv
+        const double rows[2][3] = {{eu, ev, 0}, {0, eu, ev}}, rhs[2] = {du, dv};
+        for (int k = 0; k < 2; ++k)
+            for (int a = 0; a < 3; ++a) {
+                r[a] += rows[k][a] * rhs[k];
+                for (int b = 0; b < 3; ++b) m[a][b] += rows[k][a] * rows[k][b];
+            }
+    }
+    // 3x3 normal equations by Cramer's rule
+    auto det3 = [](double a[3][3]) {
+        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double det = det3(m);
+    if (std::abs(det) < 1e-30) return std::nullopt;
+    double sol[3];
+    for (int c = 0; c < 3; ++c) {
+        double mc[3][3];
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) mc[a][b] = b == c ? r[a] : m[a][b];
+        sol[c] = det3(mc) / det;
+    }
+    return glm::vec3{float(sol[0]), float(sol[1]), float(sol[2])};
+}
+
+// (3) The area-weighted mean of the tensors within `radius` of each vertex (reached along
+// edges), each re-expressed in that vertex's frame.
+std::vector<glm::vec3> smoothTensors(const SurfaceMesh& mesh, const std::vector<glm::vec3>& up,
+                                     const std::vector<glm::vec3>& vp, const std::vector<glm::vec3>& tensor,
+                                     const std::vector<float>& weight, float radius) {
+    const size_t nv = mesh.vertexCount();
+    std::vector<std::vector<uint32_t>> adj(nv);
+    for (const auto& t : mesh.triangles)
+        for (int e = 0; e < 3; ++e) { adj[t[e]].push_back(t[(e + 1) % 3]); adj[t[(e + 1) % 3]].push_back(t[e]); }
+    std::vector<glm::vec3> smooth(nv);
+    std::vector<uint32_t> stamp(nv, UINT32_MAX), queue;
+    for (uint32_t i = 0; i < nv; ++i) {
+        glm::vec3 sum(0.0f);
+        float wsum = 0.0f;
+        queue.assign(1, i);
+        stamp[i] = i;
+        for (size_t q = 0; q < queue.size(); ++q) {
+            const uint32_t j = queue[q];
+            glm::vec3 u = up[j], v = vp[j];
+            rotateFrame(u, v, mesh.normals[j], mesh.normals[i]);
+            sum += weight[j] * reexpress(tensor[j], u, v, up[i], vp[i]);
+            wsum += weight[j];
+            for (uint32_t k : adj[j])
+                if (stamp[k] != i && glm::length(mesh.positions[k] - mesh.positions[i]) <= radius) {
+                    stamp[k] = i;
+                    queue.push_back(k);
+                }
+        }
+        smooth[i] = wsum > 0.0f ? sum / wsum : tensor[i];
+    }
+    return smooth;
+}
+
 }  // namespace
 
 Curvature principalCurvatures(const SurfaceMesh& mesh, float radius) {
@@ -94,7 +161,7 @@ Curvature principalCurvatures(const SurfaceMesh& mesh, float radius) {
     for (size_t i = 0; i < nv; ++i) vertexFrame(mesh.normals[i], up[i], vp[i]);
     std::vector<glm::vec3> tensor(nv, glm::vec3(0.0f));  // (e, f, g) in (up, vp)
     std::vector<float> weight(nv, 0.0f);
-    // (1) per face: least squares for II from dn = II e along the three edges
+    // (1) per face: the tensor in the face's frame
     for (const auto& t : mesh.triangles) {
         const glm::vec3 p[3] = {mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]};
         const glm::vec3 n[3] = {mesh.normals[t.x], mesh.normals[t.y], mesh.normals[t.z]};
@@ -103,71 +170,20 @@ Curvature principalCurvatures(const SurfaceMesh& mesh, float radius) {
         if (area <= 0.0f) continue;
         const glm::vec3 nf = cr / (2.0f * area);
         const glm::vec3 uf = glm::normalize(p[1] - p[0]), vf = glm::cross(nf, uf);
-        double m[3][3] = {}, r[3] = {};
-        for (int i = 0; i < 3; ++i) {
-            const glm::vec3 e = p[(i + 2) % 3] - p[(i + 1) % 3], dn = n[(i + 2) % 3] - n[(i + 1) % 3];
-            const double eu = glm::dot(e, uf), ev = glm::dot(e, vf), du = glm::dot(dn, uf), dv = glm::dot(dn, vf);
-            // rows [eu ev 0] . (e f g) = du and [0 eu ev] . (e f g) = dv
-            const double rows[2][3] = {{eu, ev, 0}, {0, eu, ev}}, rhs[2] = {du, dv};
-            for (int k = 0; k < 2; ++k)
-                for (int a = 0; a < 3; ++a) {
-                    r[a] += rows[k][a] * rhs[k];
-                    for (int b = 0; b < 3; ++b) m[a][b] += rows[k][a] * rows[k][b];
-                }
-        }
-        // 3x3 normal equations by Cramer's rule
-        auto det3 = [](double a[3][3]) {
-            return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                   a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-        };
-        const double det = det3(m);
-        if (std::abs(det) < 1e-30) continue;
-        double sol[3];
-        for (int c = 0; c < 3; ++c) {
-            double mc[3][3];
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) mc[a][b] = b == c ? r[a] : m[a][b];
-            sol[c] = det3(mc) / det;
-        }
-        const glm::vec3 tf{float(sol[0]), float(sol[1]), float(sol[2])};
+        const std::optional<glm::vec3> tf = faceTensor(p, n, uf, vf);
+        if (!tf) continue;
         // (2) into each corner's vertex frame, weighted by a third of the face area
         for (int i = 0; i < 3; ++i) {
             glm::vec3 u = up[t[i]], v = vp[t[i]];
             rotateFrame(u, v, mesh.normals[t[i]], nf);
-            tensor[t[i]] += area / 3.0f * reexpress(tf, uf, vf, u, v);
+            tensor[t[i]] += area / 3.0f * reexpress(*tf, uf, vf, u, v);
             weight[t[i]] += area / 3.0f;
         }
     }
     for (size_t i = 0; i < nv; ++i)
         if (weight[i] > 0.0f) tensor[i] /= weight[i];
-    // (3) optional smoothing: area-weighted mean of the tensors within `radius`
-    if (radius > 0.0f) {
-        std::vector<std::vector<uint32_t>> adj(nv);
-        for (const auto& t : mesh.triangles)
-            for (int e = 0; e < 3; ++e) { adj[t[e]].push_back(t[(e + 1) % 3]); adj[t[(e + 1) % 3]].push_back(t[e]); }
-        std::vector<glm::vec3> smooth(nv);
-        std::vector<uint32_t> stamp(nv, UINT32_MAX), queue;
-        for (uint32_t i = 0; i < nv; ++i) {
-            glm::vec3 sum(0.0f);
-            float wsum = 0.0f;
-            queue.assign(1, i);
-            stamp[i] = i;
-            for (size_t q = 0; q < queue.size(); ++q) {
-                const uint32_t j = queue[q];
-                glm::vec3 u = up[j], v = vp[j];
-                rotateFrame(u, v, mesh.normals[j], mesh.normals[i]);
-                sum += weight[j] * reexpress(tensor[j], u, v, up[i], vp[i]);
-                wsum += weight[j];
-                for (uint32_t k : adj[j])
-                    if (stamp[k] != i && glm::length(mesh.positions[k] - mesh.positions[i]) <= radius) {
-                        stamp[k] = i;
-                        queue.push_back(k);
-                    }
-            }
-            smooth[i] = wsum > 0.0f ? sum / wsum : tensor[i];
-        }
-        tensor.swap(smooth);
-    }
+    // (3) optional smoothing over `radius`
+    if (radius > 0.0f) tensor = smoothTensors(mesh, up, vp, tensor, weight, radius);
     // (4) eigen-decomposition of each 2x2 tensor
     Curvature c;
     c.k1.resize(nv), c.k2.resize(nv), c.dir1.resize(nv), c.dir2.resize(nv);
