@@ -99,8 +99,7 @@ bool isBelow(const std::string& path, const std::string& root) {
 
 // The reader's warnings that end every reply, printed as the library's own.
 void printWarnings(wire::Reader& r) {
-    for (uint64_t i = 0, n = r.count(1 << 16); i < n; ++i)
-        std::fprintf(stderr, "flowsurf: warning: %s\n", r.str().c_str());
+    for (const auto& text : r.get<std::vector<std::string>>()) std::fprintf(stderr, "flowsurf: warning: %s\n", text.c_str());
 }
 }  // namespace
 
@@ -160,9 +159,8 @@ ReaderProcess::ReaderProcess()
 ReaderProcess::~ReaderProcess() {
     if (pid_ <= 0) return;
     wire::Writer w(fd_);
-    w.u64(0);
-    w.u64(0);
-    w.u8(uint8_t(wire::Op::Quit));
+    const wire::Request quit;
+    wire::record(w, quit);
     w.flush();
     reap(false);
 }
@@ -232,19 +230,18 @@ std::string ReaderProcess::reap(bool kill) {
     return lastReason_;
 }
 
-template <typename Send, typename Parse>
-auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse) {
+template <typename Reply>
+Reply ReaderProcess::call(const std::string& label, const ReaderBudget& budget, wire::Request request) {
+    request.cpuSeconds = uint64_t(budget.cpuS);
+    request.memoryMb = budget.memoryMb;
     wire::Writer w(fd_);
-    w.u64(uint64_t(budget.cpuS));  // the child's budgets for this request
-    w.u64(budget.memoryMb);
-    send(w);
-    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(budget.wallS);
-    wire::Reader r(fd_, deadline);
+    wire::record(w, request);
+    wire::Reader r(fd_, wire::Reader::Clock::now() + std::chrono::seconds(budget.wallS));
     try {
         if (!w.flush()) throw wire::Broken{};
-        auto status = wire::Status(r.u8());
+        const auto status = r.get<wire::Status>();
         if (status != wire::Status::Ok) {
-            std::string what = r.str();
+            const auto what = r.get<std::string>();
             printWarnings(r);
             switch (status) {
                 case wire::Status::IoError: throw IoError(what);
@@ -254,9 +251,10 @@ auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, S
                 default: throw FormatError(label + ": " + what);
             }
         }
-        auto result = parse(r);
+        Reply reply;
+        wire::record(r, reply);
         printWarnings(r);
-        return result;
+        return reply;
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         reap(true);
@@ -291,19 +289,7 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
     lastOpen_.clear();  // the child drops its source before opening another
-    SourceInfo info = call(
-        path, openBudget_,
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Open));
-            w.str(path);
-            wire::record(w, options);
-        },
-        [](wire::Reader& r) {
-            SourceInfo s;
-            s.format = r.str();
-            r.field(s.times);
-            return s;
-        });
+    const auto info = call<SourceInfo>(path, openBudget_, {wire::Op::Open, path, options, 0, 0, 0});
     lastOpen_ = path;
     lastOptions_ = options;
     return info;
@@ -321,34 +307,13 @@ core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string&
         openLocked(path, options);
     }
     ensureChild(root_);
-    return call(
-        label, openBudget_,
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Step));
-            w.u64(index);
-        },
-        [](wire::Reader& r) {
-            core::SurfaceMesh m;
-            wire::record(r, m);
-            return m;
-        });
+    return call<core::SurfaceMesh>(label, openBudget_, {wire::Op::Step, {}, {}, index, 0, 0});
 }
 
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
     ensureChild(rootFor(path));
-    return call(
-        path, budgetFor(path),
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Inspect));
-            w.str(path);
-            wire::record(w, options);
-        },
-        [](wire::Reader& r) {
-            FileInfo info;
-            wire::record(r, info);
-            return info;
-        });
+    return call<FileInfo>(path, budgetFor(path), {wire::Op::Inspect, path, options, 0, 0, 0});
 }
 
 }  // namespace flowsurf::io::detail

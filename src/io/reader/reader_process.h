@@ -19,6 +19,7 @@
 
 #include "core/mesh.h"
 #include "io/dataset_reader.h"
+#include "io/reader/reader_wire.h"
 
 #include <sys/types.h>
 
@@ -63,21 +64,17 @@ public:
     core::Dataset readDataset(const std::string& path, size_t maxSteps);
     // Opens `path` as the child's current multi-step source: its format and times.
     // `options`: OpenFOAM's boundary patches and case layout.
-    struct SourceInfo {
-        std::string format;
-        std::vector<double> times;
-    };
+    using SourceInfo = wire::SourceInfo;
     SourceInfo open(const std::string& path, const SourceOptions& options = {});
     // Step `index` of the source opened last; `label` names it in errors.
     core::SurfaceMesh readStep(size_t index, const std::string& label);
     FileInfo inspect(const std::string& path, const SourceOptions& options = {});
 
 private:
-    // Sends a request, then parses the reply with `parse` (called with a wire::Reader
-    // after an Ok status); a typed error from the child is rethrown, a dead or hung
-    // child becomes a FormatError naming `label`.
-    template <typename Send, typename Parse>
-    auto call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse);
+    // Sends `request` with `budget`, then reads a Reply; a typed error from the child is
+    // rethrown, a dead or hung child becomes a FormatError naming `label`.
+    template <typename Reply>
+    Reply call(const std::string& label, const ReaderBudget& budget, wire::Request request);
     // A running child confined to `root` (a running one elsewhere is ended first).
     void ensureChild(const std::string& root);
     void spawn(const std::string& root);

@@ -15,19 +15,6 @@ void Writer::raw(const void* data, size_t bytes) {
     if (buf_.size() > (size_t(1) << 20)) flush();
 }
 
-void Writer::str(const std::string& s) {
-    u64(s.size());
-    raw(s.data(), s.size());
-}
-
-void Writer::field(const std::map<std::string, std::string>& m) {
-    u64(m.size());
-    for (const auto& [key, value] : m) {
-        str(key);
-        str(value);
-    }
-}
-
 bool Writer::flush() {
     size_t done = 0;
     bool ok = true;
@@ -64,32 +51,10 @@ void Reader::raw(void* data, size_t bytes) {
     }
 }
 
-uint8_t Reader::u8() {
-    uint8_t v;
-    raw(&v, 1);
-    return v;
-}
-uint64_t Reader::u64() {
-    uint64_t v;
-    raw(&v, 8);
-    return v;
-}
 uint64_t Reader::count(uint64_t limit) {
-    uint64_t n = u64();
+    const auto n = get<uint64_t>();
     if (n > limit) throw Broken{};
     return n;
-}
-std::string Reader::str() {
-    std::string s(size_t(count(kMaxBytes)), '\0');
-    raw(s.data(), s.size());
-    return s;
-}
-
-void Reader::field(std::map<std::string, std::string>& m) {
-    for (uint64_t i = 0, n = count(1 << 20); i < n; ++i) {
-        std::string key = str();
-        m[key] = str();
-    }
 }
 
 }  // namespace flowsurf::io::wire
