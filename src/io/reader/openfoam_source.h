@@ -13,18 +13,9 @@
 
 namespace flowsurf::io::detail {
 
-// Which layout `--foam-case auto` reads: the decomposed one when processor* directories
-// exist and the case folder has no mesh or fewer time directories than processor0 (a
-// case run in parallel and not, or only partly, reconstructed); else the reconstructed.
-// Throws ConfigError for a choice that is not auto/reconstructed/decomposed, or
-// "decomposed" without processor* directories.
-bool readsDecomposed(const std::string& casePath, const std::string& choice);
-
 // Throws IoError/FormatError as openSource, ConfigError for --patches or --foam-case.
-std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options);
-
-// "U [m/s]" -> "U" with units "m/s" (AddDimensionsToArrayNames' suffix); false when the
-// name carries no such suffix.
-bool splitUnitsSuffix(const std::string& name, std::string& bare, std::string& units);
+// `format` ("OpenFOAM case") names it in messages, with the layout read.
+std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                         const SourceOptions& options);
 
 }  // namespace flowsurf::io::detail

@@ -16,21 +16,27 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flowsurf::io::detail {
 
 class StepSource {
 public:
+    explicit StepSource(std::string format) : format_(std::move(format)) {}
     virtual ~StepSource() = default;
 
     // Human-readable format, e.g. "VTK XML PolyData".
-    virtual std::string format() const = 0;
+    const std::string& format() const { return format_; }
     // Sorted time values; empty when the file carries no time information (one step).
-    virtual const std::vector<double>& times() const = 0;
-    size_t stepCount() const { return times().empty() ? 1 : times().size(); }
+    const std::vector<double>& times() const { return times_; }
+    size_t stepCount() const { return times_.empty() ? 1 : times_.size(); }
     // The reader's output for step `index` (may be composite). Throws FormatError.
     virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
+
+protected:
+    std::string format_;
+    std::vector<double> times_;
 };
 
 // A VTK reader's output as steps (the reader's TIME_STEPS, or one step). Each step is a
@@ -39,8 +45,6 @@ public:
 class AlgorithmSource : public StepSource {
 public:
     AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap);
-    std::string format() const override { return format_; }
-    const std::vector<double>& times() const override { return times_; }
     vtkSmartPointer<vtkDataObject> readStep(size_t index) override;
 
 protected:
@@ -52,10 +56,13 @@ protected:
 
 private:
     vtkSmartPointer<vtkAlgorithm> reader_;
-    std::string path_, format_;
+    std::string path_;
     VtkMessageTrap& trap_;
-    std::vector<double> times_;
 };
+
+// Reads `reader`'s header (watched by `trap`; again after a selection that needs the
+// names the header lists); throws FormatError with what the reader reported.
+void readInformation(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap);
 
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
@@ -66,8 +73,5 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
 // "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
 // just the path for a single step.
 std::string stepLabel(const std::string& path, const StepSource& source, size_t index);
-
-// ".vtp .vtu ..." for messages.
-std::string supportedExtensions();
 
 }  // namespace flowsurf::io::detail
