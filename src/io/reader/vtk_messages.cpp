@@ -101,8 +101,7 @@ bool signalsBadData(const std::string& message) {
     return false;
 }
 
-}  // namespace
-
+// "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
 std::string cleanVtkMessage(const char* text) {
     std::string s = text ? text : "";
     // Drop the "ERROR: In FILE, line N" (or "Warning: In ...") source location line.
@@ -121,6 +120,8 @@ std::string cleanVtkMessage(const char* text) {
     }
     return printable(trim(s));
 }
+
+}  // namespace
 
 VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : previous_(gTrap) {
     static const bool installed = [] {

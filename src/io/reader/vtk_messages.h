@@ -49,7 +49,6 @@ public:
     void throwIfError(const std::string& path, const std::string& what) const;
 
     bool hasError() const { return !errors_.empty(); }
-    const std::vector<std::string>& errors() const { return errors_; }
     const std::vector<std::string>& warnings() const { return warnings_; }
     void clear();
 
@@ -70,8 +69,5 @@ private:
 // the reader process sends them with its next reply (the library prints them).
 void warnOnce(const std::string& message);
 std::vector<std::string> takeWarnings();
-
-// "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
-std::string cleanVtkMessage(const char* text);
 
 }  // namespace flowsurf::io::detail
