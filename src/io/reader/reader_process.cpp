@@ -101,6 +101,18 @@ bool isBelow(const std::string& path, const std::string& root) {
 void printWarnings(wire::Reader& r) {
     for (const auto& text : r.get<std::vector<std::string>>()) std::fprintf(stderr, "flowsurf: warning: %s\n", text.c_str());
 }
+// Where flowsurf-reader is (reader_process.h); throws IoError if nowhere.
+std::string readerExecutable() {
+    if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
+    // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
+    for (const fs::path& dir : core::programDirs())
+        for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
+            if (access(p.c_str(), X_OK) == 0) return p.string();
+#ifdef FLOWSURF_READER_BUILD_PATH
+    if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
+#endif
+    throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
+}
 }  // namespace
 
 ReaderBudget readerBudget(unsigned long long inputBytes) {
@@ -137,18 +149,6 @@ unsigned long long readerInputBytes(const std::string& path) {
         }
     }
     return bytes;
-}
-
-std::string readerExecutable() {
-    if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
-    // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
-    for (const fs::path& dir : core::programDirs())
-        for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
-            if (access(p.c_str(), X_OK) == 0) return p.string();
-#ifdef FLOWSURF_READER_BUILD_PATH
-    if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
-#endif
-    throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
 }
 
 ReaderProcess::ReaderProcess()
@@ -212,8 +212,8 @@ void ReaderProcess::spawn(const std::string& root) {
     lastStatus_ = 0;
 }
 
-std::string ReaderProcess::reap(bool kill) {
-    if (pid_ <= 0) return "is not running";
+void ReaderProcess::reap(bool kill) {
+    if (pid_ <= 0) return;
     if (kill) ::kill(pid_, SIGKILL);
     close(fd_);  // a child blocked on the socket sees the end of the stream
     fd_ = -1;
@@ -227,7 +227,6 @@ std::string ReaderProcess::reap(bool kill) {
     reasonFd_ = -1;
     lastStatus_ = status;
     lastReason_.assign(text, n > 0 ? size_t(n) : 0);
-    return lastReason_;
 }
 
 template <typename Reply>
@@ -288,10 +287,10 @@ ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const Sou
 ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
-    lastOpen_.clear();  // the child drops its source before opening another
-    const auto info = call<SourceInfo>(path, openBudget_, {wire::Op::Open, path, options, 0, 0, 0});
-    lastOpen_ = path;
-    lastOptions_ = options;
+    lastOpen_ = {};  // the child drops its source before opening another
+    const wire::Request request{wire::Op::Open, path, options, 0, 0, 0};
+    const auto info = call<SourceInfo>(path, openBudget_, request);
+    lastOpen_ = request;
     return info;
 }
 
@@ -301,10 +300,9 @@ core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label
 }
 
 core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
-    if (pid_ <= 0 && !lastOpen_.empty()) {  // the child died: restore its source
-        const std::string path = lastOpen_;
-        const SourceOptions options = lastOptions_;
-        openLocked(path, options);
+    if (pid_ <= 0 && lastOpen_.op == wire::Op::Open) {  // the child died: restore its source
+        const wire::Request again = lastOpen_;
+        openLocked(again.path, again.options);
     }
     ensureChild(root_);
     return call<core::SurfaceMesh>(label, openBudget_, {wire::Op::Step, {}, {}, index, 0, 0});

@@ -80,8 +80,8 @@ private:
     void spawn(const std::string& root);
     SourceInfo openLocked(const std::string& path, const SourceOptions& options);
     core::SurfaceMesh readStepLocked(size_t index, const std::string& label);
-    // Ends the child (killing it if needed) and returns why it died, for messages.
-    std::string reap(bool kill);
+    // Ends the child (killing it if needed); how it ended goes to lastStatus_ and lastReason_.
+    void reap(bool kill);
 
     std::mutex mutex_;  // the prefetch thread and the caller share a child
     std::string exe_;
@@ -92,15 +92,11 @@ private:
     std::string lastReason_;
     unsigned long long memoryHardMb_ = 0;
     ReaderBudget openBudget_;  // of the source opened last, for its step requests
-    std::string lastOpen_;    // re-opened after a restart, with these options
-    SourceOptions lastOptions_;
+    wire::Request lastOpen_;   // re-opened after a restart (none: op Quit)
 };
 
 // What a request on `path` may read: the file's size, and for formats whose file names
 // others (.case, .pvd, an OpenFOAM case's .foam) everything in its folder and below.
 unsigned long long readerInputBytes(const std::string& path);
-
-// Where flowsurf-reader is (see above); throws IoError if nowhere.
-std::string readerExecutable();
 
 }  // namespace flowsurf::io::detail

@@ -9,12 +9,7 @@
 
 namespace flowsurf::io::wire {
 
-void Writer::raw(const void* data, size_t bytes) {
-    const char* p = static_cast<const char*>(data);
-    buf_.insert(buf_.end(), p, p + bytes);
-    if (buf_.size() > (size_t(1) << 20)) flush();
-}
-
+template <>
 bool Writer::flush() {
     size_t done = 0;
     bool ok = true;
@@ -31,6 +26,14 @@ bool Writer::flush() {
     return ok;
 }
 
+template <>
+void Writer::raw(const void* data, size_t bytes) {
+    const char* p = static_cast<const char*>(data);
+    buf_.insert(buf_.end(), p, p + bytes);
+    if (buf_.size() > (size_t(1) << 20)) flush();
+}
+
+template <>
 void Reader::raw(void* data, size_t bytes) {
     char* p = static_cast<char*>(data);
     while (bytes > 0) {
@@ -49,12 +52,6 @@ void Reader::raw(void* data, size_t bytes) {
         p += n;
         bytes -= size_t(n);
     }
-}
-
-uint64_t Reader::count(uint64_t limit) {
-    const auto n = get<uint64_t>();
-    if (n > limit) throw Broken{};
-    return n;
 }
 
 }  // namespace flowsurf::io::wire

@@ -14,6 +14,7 @@
 #include <map>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace flowsurf::io::wire {
@@ -28,94 +29,80 @@ concept Plain = std::is_trivially_copyable_v<T>;
 template <typename T, typename Of>
 concept Is = std::same_as<std::remove_const_t<T>, Of>;
 
-// Buffered writes to a socket; flush() sends everything (no SIGPIPE: a dead peer is an
-// error the reader side reports).
-class Writer {
-public:
-    explicit Writer(int fd) : fd_(fd) {}
-    // False if the peer is gone.
-    bool flush();
-
-    template <Plain T>
-    void field(const T& v) { raw(&v, sizeof v); }
-    void field(const std::string& s) {
-        field(uint64_t(s.size()));
-        raw(s.data(), s.size());
-    }
-    template <typename T>
-    void field(const std::vector<T>& v) {
-        field(uint64_t(v.size()));
-        if constexpr (Plain<T>) raw(v.data(), v.size() * sizeof(T));
-        else for (const T& item : v) field(item);
-    }
-    void field(const std::map<std::string, std::string>& m) {
-        field(uint64_t(m.size()));
-        for (const auto& [key, value] : m) field(key), field(value);
-    }
-    template <typename T, typename Each>
-    void list(const std::vector<T>& v, Each each) {
-        field(uint64_t(v.size()));
-        for (const T& item : v) each(item);
-    }
-
-private:
-    void raw(const void* data, size_t bytes);
-    int fd_;
-    std::vector<char> buf_;
-};
-
-// Reads from a socket until `deadline`; every read throws wire::Broken on end of stream,
-// error or timeout (`timedOut` tells which), and on a count beyond any plausible size.
+// Thrown by every read on end of stream, error or timeout (`timedOut` tells which), and
+// on a count beyond any plausible size.
 struct Broken {
     bool timedOut = false;
 };
-class Reader {
+
+// One end of the socket: a Writer sends what field() is given (buffered; flush() sends it,
+// false if the peer is gone; no SIGPIPE); a Reader fills it, reading until `deadline`.
+// field() lays out each type the records use the same way in both directions: a plain
+// value as its bytes; a string, vector or map as a count, then its items.
+template <bool kWriting>
+class Channel {
 public:
     using Clock = std::chrono::steady_clock;
-    explicit Reader(int fd, Clock::time_point deadline = Clock::time_point::max()) : fd_(fd), deadline_(deadline) {}
+    explicit Channel(int fd, Clock::time_point deadline = Clock::time_point::max()) : fd_(fd), deadline_(deadline) {}
+    bool flush();  // a Writer's
 
     template <typename T>
-    T get() {
+    void field(T&& v) {
+        using U = std::remove_cvref_t<T>;
+        if constexpr (Plain<U>) {
+            raw(&v, sizeof v);
+        } else if constexpr (std::same_as<U, std::map<std::string, std::string>>) {
+            const uint64_t n = count(v.size(), kMaxItems);
+            if constexpr (kWriting)
+                for (const auto& [key, value] : v) field(key), field(value);
+            else
+                for (uint64_t i = 0; i < n; ++i) field(v[get<std::string>()]);
+        } else {  // a string or a vector
+            using Item = typename U::value_type;
+            const uint64_t n = count(v.size(), Plain<Item> ? kMaxBytes / sizeof(Item) : kMaxItems);
+            if constexpr (!kWriting) v.resize(size_t(n));
+            if constexpr (Plain<Item>) raw(v.data(), v.size() * sizeof(Item));
+            else for (auto& item : v) field(item);
+        }
+    }
+    // A vector whose items `each` lays out.
+    template <typename V, typename Each>
+    void list(V& v, Each each) {
+        const uint64_t n = count(v.size(), kMaxItems);
+        if constexpr (!kWriting) v.resize(size_t(n));
+        for (auto& item : v) each(item);
+    }
+    template <typename T>
+    T get() requires(!kWriting) {
         T v{};
         field(v);
         return v;
-    }
-    template <Plain T>
-    void field(T& v) { raw(&v, sizeof v); }
-    void field(std::string& s) {
-        s.resize(size_t(count(kMaxBytes)));
-        raw(s.data(), s.size());
-    }
-    template <typename T>
-    void field(std::vector<T>& v) {
-        if constexpr (Plain<T>) {
-            v.resize(size_t(count(kMaxBytes / sizeof(T))));
-            raw(v.data(), v.size() * sizeof(T));
-        } else {
-            list(v, [&](T& item) { field(item); });
-        }
-    }
-    void field(std::map<std::string, std::string>& m) {
-        for (uint64_t i = 0, n = count(kMaxItems); i < n; ++i) {
-            const auto key = get<std::string>();
-            m[key] = get<std::string>();
-        }
-    }
-    template <typename T, typename Each>
-    void list(std::vector<T>& v, Each each) {
-        v.resize(size_t(count(kMaxItems)));
-        for (T& item : v) each(item);
     }
 
     static constexpr uint64_t kMaxBytes = uint64_t(1) << 34;  // far above any real mesh
     static constexpr uint64_t kMaxItems = uint64_t(1) << 20;  // arrays, parts, warnings
 
 private:
-    uint64_t count(uint64_t limit);  // a count of at most `limit`
-    void raw(void* data, size_t bytes);
+    // Sends `n`, or reads one of at most `limit`.
+    uint64_t count(uint64_t n, uint64_t limit) {
+        raw(&n, sizeof n);
+        if (!kWriting && n > limit) throw Broken{};
+        return n;
+    }
+    void raw(std::conditional_t<kWriting, const void*, void*> data, size_t bytes);
+
     int fd_;
     Clock::time_point deadline_;
+    std::vector<char> buf_;  // what a Writer has not sent yet
 };
+using Writer = Channel<true>;
+using Reader = Channel<false>;
+template <>
+bool Writer::flush();
+template <>
+void Writer::raw(const void* data, size_t bytes);
+template <>
+void Reader::raw(void* data, size_t bytes);
 
 // One request: the op and its arguments (Open and Inspect: a path and its options; Step:
 // an index), and the child's budgets for it (CPU seconds, address space in MiB).

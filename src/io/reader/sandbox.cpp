@@ -32,9 +32,8 @@ void setLimit(int resource, rlim_t soft, rlim_t hard) {
     setrlimit(resource, &r);
 }
 
-}  // namespace
-
 // --- limits ----------------------------------------------------------------------------
+// The address space's hard limit: 0 leaves none (AddressSanitizer's shadow memory needs it).
 void limitProcess(unsigned long long memoryHardMb) {
     setLimit(RLIMIT_CORE, 0, 0);
     setLimit(RLIMIT_FSIZE, 0, 0);  // a write to any regular file fails (EFBIG)
@@ -45,6 +44,8 @@ void limitProcess(unsigned long long memoryHardMb) {
     mallopt(M_ARENA_MAX, 4);
     if (memoryHardMb > 0) setLimit(RLIMIT_AS, rlim_t(memoryHardMb) << 20, rlim_t(memoryHardMb) << 20);
 }
+
+}  // namespace
 
 void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds) {
     rlimit r{};
@@ -230,23 +231,11 @@ void installFilter() {
 
 }  // namespace
 
-void enter(const std::string& root) {
-    landlock(root);
-    installFilter();
-}
-
-const std::string& readableRoot() { return gReadableRoot; }
-
-bool isOutsideReadableRoot(const std::string& path) {
-    if (gReadableRoot.empty()) return false;
+std::string rootExcluding(const std::string& path) {
+    if (gReadableRoot.empty()) return {};
     std::error_code ec;
     const std::filesystem::path rel = std::filesystem::weakly_canonical(path, ec).lexically_relative(gReadableRoot);
-    return ec || rel.empty() || *rel.begin() == "..";
-}
-
-bool disabledByEnvironment() {
-    const char* v = std::getenv("FLOWSURF_READER_SANDBOX");
-    return v && (std::strcmp(v, "off") == 0 || std::strcmp(v, "0") == 0);
+    return ec || rel.empty() || *rel.begin() == ".." ? gReadableRoot : std::string();
 }
 
 // --- start -----------------------------------------------------------------------------
@@ -262,7 +251,10 @@ ChildArgs parseArgs(int argc, char** argv) {
 
 void start(const ChildArgs& args) {
     limitProcess(args.memoryHardMb);
-    if (!disabledByEnvironment()) enter(args.root);
+    const char* off = std::getenv("FLOWSURF_READER_SANDBOX");  // "off" or "0": limits only, for debugging
+    if (off && (std::strcmp(off, "off") == 0 || std::strcmp(off, "0") == 0)) return;
+    landlock(args.root);
+    installFilter();
 }
 
 }  // namespace flowsurf::io::sandbox

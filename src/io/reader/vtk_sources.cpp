@@ -61,8 +61,8 @@ void checkReadable(const std::string& path, bool allowEmpty) {
     if (!f) {
         const int error = errno;
         std::string why = std::system_category().message(error);
-        if (error == EACCES && sandbox::isOutsideReadableRoot(path))
-            why += "; the reader may read only below " + sandbox::readableRoot() + ", doc/reader_sandbox.md";
+        const std::string root = error == EACCES ? sandbox::rootExcluding(path) : "";
+        if (!root.empty()) why += "; the reader may read only below " + root + ", doc/reader_sandbox.md";
         throw IoError(path + ": cannot open (" + why + ")");
     }
     std::fclose(f);
