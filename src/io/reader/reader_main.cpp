@@ -48,7 +48,7 @@ void answer(const w::Request& request, w::Writer& out, std::unique_ptr<OpenSourc
             const uint64_t i = request.step;
             if (!open || i >= open->source->stepCount()) throw FormatError("reader: step request out of range");
             const core::SurfaceMesh m = io::detail::readSurfaceMesh(
-                open->source->readStep(size_t(i)), open->trap, io::detail::stepLabel(open->path, *open->source, i));
+                open->source->readStep(size_t(i)), open->trap, w::stepLabel(open->path, open->source->times(), i));
             out.field(w::Status::Ok);
             w::record(out, m);
             return;

@@ -267,24 +267,19 @@ Reply ReaderProcess::call(const std::string& label, const ReaderBudget& budget, 
 
 core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
     std::lock_guard lock(mutex_);
-    const SourceInfo info = openLocked(path, {});
+    const SourceInfo info = open(path, {});
     const size_t steps = info.times.empty() ? 1 : info.times.size();
     core::Dataset dataset;
     dataset.source = path;
     for (size_t i = 0; i < (maxSteps > 0 ? std::min(steps, maxSteps) : steps); ++i) {
-        const std::string label =
-            steps == 1 ? path : path + " (time step " + std::to_string(i + 1) + " of " + std::to_string(steps) + ")";
-        dataset.steps.push_back({info.times.empty() ? 0.0 : info.times[i], readStepLocked(i, label)});
+        const double t = info.times.empty() ? 0.0 : info.times[i];
+        dataset.steps.push_back({t, readStep(i, wire::stepLabel(path, info.times, i))});
     }
     return dataset;
 }
 
 ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
-    return openLocked(path, options);
-}
-
-ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
     lastOpen_ = {};  // the child drops its source before opening another
@@ -296,13 +291,9 @@ ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, con
 
 core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
     std::lock_guard lock(mutex_);
-    return readStepLocked(index, label);
-}
-
-core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
     if (pid_ <= 0 && lastOpen_.op == wire::Op::Open) {  // the child died: restore its source
         const wire::Request again = lastOpen_;
-        openLocked(again.path, again.options);
+        open(again.path, again.options);
     }
     ensureChild(root_);
     return call<core::SurfaceMesh>(label, openBudget_, {wire::Op::Step, {}, {}, index, 0, 0});

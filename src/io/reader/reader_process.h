@@ -78,12 +78,10 @@ private:
     // A running child confined to `root` (a running one elsewhere is ended first).
     void ensureChild(const std::string& root);
     void spawn(const std::string& root);
-    SourceInfo openLocked(const std::string& path, const SourceOptions& options);
-    core::SurfaceMesh readStepLocked(size_t index, const std::string& label);
     // Ends the child (killing it if needed); how it ended goes to lastStatus_ and lastReason_.
     void reap(bool kill);
 
-    std::mutex mutex_;  // the prefetch thread and the caller share a child
+    std::recursive_mutex mutex_;  // the prefetch thread and the caller share a child
     std::string exe_;
     pid_t pid_ = -1;
     int fd_ = -1, reasonFd_ = -1;  // the socket; the reasons pipe's read end

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <sstream>
 
 namespace flowsurf::io::wire {
 
@@ -52,6 +53,13 @@ void Reader::raw(void* data, size_t bytes) {
         p += n;
         bytes -= size_t(n);
     }
+}
+
+std::string stepLabel(const std::string& path, const std::vector<double>& times, size_t index) {
+    if (times.size() <= 1) return path;
+    std::ostringstream s;
+    s << path << " (time step " << index + 1 << " of " << times.size() << ", t = " << times[index] << ")";
+    return s.str();
 }
 
 }  // namespace flowsurf::io::wire

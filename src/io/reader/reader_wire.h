@@ -119,6 +119,10 @@ struct SourceInfo {
     std::vector<double> times;
 };
 
+// "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many (`times`
+// empty or of one: just the path), as both sides name a step.
+std::string stepLabel(const std::string& path, const std::vector<double>& times, size_t index);
+
 // Each record's layout, written once and run both ways: with a Writer on a const object,
 // with a Reader on one to fill.
 template <typename Io, Is<Request> R>

@@ -34,7 +34,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
 
 namespace flowsurf::io::detail {
@@ -301,14 +300,6 @@ const Format kFormats[] = {
 };
 
 }  // namespace
-
-std::string stepLabel(const std::string& path, const StepSource& source, size_t index) {
-    if (source.stepCount() <= 1) return path;
-    std::ostringstream s;
-    s << path << " (time step " << index + 1 << " of " << source.stepCount()
-      << ", t = " << source.times()[index] << ")";
-    return s.str();
-}
 
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options) {
     VtkMessageTrap::Active active(trap);

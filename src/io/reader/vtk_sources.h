@@ -70,8 +70,4 @@ void readInformation(vtkAlgorithm* reader, const std::string& path, const std::s
 // `options`: OpenFOAM's boundary patches and case layout (openfoam_source.h).
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options = {});
 
-// "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
-// just the path for a single step.
-std::string stepLabel(const std::string& path, const StepSource& source, size_t index);
-
 }  // namespace flowsurf::io::detail
