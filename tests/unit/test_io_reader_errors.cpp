@@ -2,7 +2,7 @@
 // prints nothing (VTK's own reports are captured, not shown).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
-#include "io/reader/ply_reader.h"
+#include "io/reader/parsers.h"
 
 #include "test_io_common.h"
 

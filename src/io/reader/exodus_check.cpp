@@ -1,7 +1,7 @@
 // The NetCDF classic layout (CDF1/2/5), big-endian throughout:
 //   magic numrecs dim_list gatt_list var_list, var := name dimids vatts type vsize begin
 // (https://docs.unidata.ucar.edu/netcdf-c/current/file_format_specifications.html).
-#include "io/reader/exodus_check.h"
+#include "io/reader/checks.h"
 
 #include "core/errors.h"
 
@@ -54,7 +54,6 @@ public:
         skip((n + 3) / 4 * 4);
         return s;
     }
-    size_t pos() const { return pos_; }
 
 private:
     void need(uint64_t bytes) const {
@@ -80,7 +79,7 @@ uint64_t mul(uint64_t a, uint64_t b, const std::string& path) {
 struct Variable {
     std::string name;
     std::vector<uint64_t> dims;
-    uint64_t type = 0, vsize = 0, begin = 0;
+    uint64_t type = 0, begin = 0;
 };
 
 using Dims = std::vector<std::pair<std::string, uint64_t>>;
@@ -101,7 +100,6 @@ struct Header {
     uint64_t numRecs = 0;
     Dims dims;
     std::vector<Variable> vars;
-    size_t end = 0;  // first byte after the header
 
     bool isRecord(const Variable& v) const { return !v.dims.empty() && dims[v.dims[0]].second == 0; }
 };
@@ -135,11 +133,10 @@ Header parseHeader(const Mapping& m, const std::string& path, int version) {
         skipAttributes(c, path);
         v.type = c.u32();
         if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
-        v.vsize = c.count();
+        c.count();  // vsize: recomputed from the dimensions below
         v.begin = c.offset();
         h.vars.push_back(std::move(v));
     }
-    h.end = c.pos();
     return h;
 }
 

@@ -1,7 +1,7 @@
 // Legacy layout (www.vtk.org/VTK/img/file-formats.pdf): 4 header lines, then keywords
 // with their counts, each followed by data: ASCII tokens, or big-endian binary that
 // starts on the next line.
-#include "io/reader/legacy_check.h"
+#include "io/reader/checks.h"
 
 #include "core/errors.h"
 

@@ -1,4 +1,4 @@
-#include "io/reader/obj_reader.h"
+#include "io/reader/parsers.h"
 
 #include "core/errors.h"
 

@@ -1,5 +1,5 @@
 // Sections: scalar types · header · body values · readPly.
-#include "io/reader/ply_reader.h"
+#include "io/reader/parsers.h"
 
 #include "core/errors.h"
 

@@ -2,7 +2,7 @@
 #include "io/reader/surface_pipeline.h"
 
 #include "core/errors.h"
-#include "io/reader/dataset_check.h"
+#include "io/reader/checks.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
@@ -246,12 +246,7 @@ core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where) 
     const vtkIdType points = surface->GetNumberOfPoints();
     if (points > static_cast<vtkIdType>(std::numeric_limits<uint32_t>::max()))
         throw FormatError(where + ": " + std::to_string(points) + " points is more than 32-bit indices allow");
-    mesh.positions.resize(static_cast<size_t>(points));
-    double p[3];
-    for (vtkIdType i = 0; i < points; ++i) {
-        surface->GetPoint(i, p);
-        mesh.positions[static_cast<size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
-    }
+    if (points > 0) mesh.positions = copyVectors(surface->GetPoints()->GetData());
 
     vtkCellArray* polys = surface->GetPolys();
     mesh.triangles.reserve(static_cast<size_t>(polys->GetNumberOfCells()));

@@ -2,11 +2,9 @@
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
-#include "io/reader/exodus_check.h"
-#include "io/reader/legacy_check.h"
-#include "io/reader/obj_reader.h"
+#include "io/reader/checks.h"
 #include "io/reader/openfoam_source.h"
-#include "io/reader/ply_reader.h"
+#include "io/reader/parsers.h"
 #include "io/reader/sandbox.h"
 
 #include <vtkAlgorithm.h>
