@@ -25,7 +25,6 @@ namespace {
 
 // The open multi-step source of Open/Step requests.
 struct OpenSource {
-    std::string path;
     io::detail::VtkMessageTrap trap;
     std::unique_ptr<io::detail::StepSource> source;
 };
@@ -36,7 +35,6 @@ void answer(const w::Request& request, w::Writer& out, std::unique_ptr<OpenSourc
         case w::Op::Open: {
             open.reset();  // one source at a time: the previous one's data goes first
             auto s = std::make_unique<OpenSource>();
-            s->path = request.path;
             s->source = io::detail::openSource(request.path, s->trap, request.options);
             out.field(w::Status::Ok);
             const w::SourceInfo info{s->source->format(), s->source->times()};
@@ -45,10 +43,11 @@ void answer(const w::Request& request, w::Writer& out, std::unique_ptr<OpenSourc
             return;
         }
         case w::Op::Step: {
-            const uint64_t i = request.step;
-            if (!open || i >= open->source->stepCount()) throw FormatError("reader: step request out of range");
-            const core::SurfaceMesh m = io::detail::readSurfaceMesh(
-                open->source->readStep(size_t(i)), open->trap, w::stepLabel(open->path, open->source->times(), i));
+            if (!open || request.step >= open->source->stepCount()) throw FormatError("reader: step request out of range");
+            io::detail::StepSource& source = *open->source;
+            const size_t i = size_t(request.step);
+            const core::SurfaceMesh m =
+                io::detail::readSurfaceMesh(source.readStep(i), open->trap, w::stepLabel(source.path(), source.times(), i));
             out.field(w::Status::Ok);
             w::record(out, m);
             return;

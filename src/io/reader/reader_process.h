@@ -1,20 +1,14 @@
 // flowsurf — files are read in a child process (private to src/io). VTK's readers (and
 // our PLY/OBJ parsers) run in `flowsurf-reader`, started with posix_spawn (never fork:
 // the step prefetch thread makes it unsafe) with only its socket and reasons pipe open,
-// inside a sandbox (sandbox.h: no network, no writes, no programs, reads only below the
-// input's folder) and, per request, budgets that grow with the input (readerBudget):
-// a wall-clock deadline kept here, CPU time and address space limited in the child. The
-// surface comes back over the socket. A crash, abort, hang, allocation bomb or refused
-// system call ends the child and becomes a one-line FormatError naming the file and what
-// was hit. One ReaderProcess serves many requests (a time series keeps its child alive);
-// a request below another folder gets a fresh child confined to that folder.
-//
-// Environment: FLOWSURF_READER (the executable; default: next to the library or program, in
-// its ../libexec/flowsurf/ (core/program_dirs.h), else the build tree's),
-// FLOWSURF_READER_MEMORY_MB (a fixed address-space limit instead of the size-based one),
-// FLOWSURF_READER_TIMEOUT_S (a fixed wall-clock and CPU budget in seconds per request
-// instead of the size-based ones), FLOWSURF_READER_SANDBOX=off (limits only; for
-// debugging). doc/reader_sandbox.md says more.
+// inside a sandbox (sandbox.h) and, per request, budgets that grow with the input
+// (readerBudget): a wall-clock deadline kept here, CPU time and address space limited in
+// the child. The surface comes back over the socket (reader_wire.h). A crash, abort, hang,
+// allocation bomb or refused system call ends the child and becomes a one-line FormatError
+// naming the file and what was hit. One ReaderProcess serves many requests (a time series
+// keeps its child alive); a request below another folder gets a fresh child confined to
+// that folder. The limits and the environment variables that set them, the executable
+// (FLOWSURF_READER) and FLOWSURF_READER_SANDBOX=off: doc/reader_sandbox.md.
 #pragma once
 
 #include "core/mesh.h"
@@ -29,15 +23,14 @@
 
 namespace flowsurf::io::detail {
 
-// What one request on an input of `inputBytes` may use. The wall clock (kept by the
-// library) is kReaderBaseS, for starting the child and a small file on a busy machine, plus
-// kReaderSecondsPerMb per MiB: the slowest reader measured (legacy ASCII .vtk, 70 MB in 9 s
-// on a loaded 2-core machine: 8 MB/s; ASCII EnSight 23 MB/s) is 4x faster than this
-// allows. CPU time: a second (the child rounds what it used so far up to whole seconds,
-// so a request gets between 1 and 2 s; small files need milliseconds) plus twice the wall
-// clock's allowance per MiB (VTK's filters run on several threads), so a small file that
-// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb
-// (the libraries, thread stacks and arenas; a small file needs under 400) plus
+// What one request on an input of `inputBytes` may use (doc/reader_sandbox.md has the
+// table). The wall clock (kept by the library) is kReaderBaseS, for starting the child and
+// a small file on a busy machine, plus kReaderSecondsPerMb per MiB: 4x what the slowest
+// reader measured needs (legacy ASCII .vtk, 70 MB in 9 s on a loaded 2-core machine). CPU
+// time: a second (the child rounds what it used so far up to whole seconds, so a small file
+// that spins a reader is stopped within two seconds) plus twice the wall clock's allowance
+// per MiB (VTK's filters run on several threads). Address space: kReaderMemoryBaseMb (the
+// libraries, thread stacks and arenas; a small file needs under 400) plus
 // kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times are
 // capped at a week (an unbounded folder).
 struct ReaderBudget {

@@ -48,20 +48,20 @@ void limitProcess(unsigned long long memoryHardMb) {
 }  // namespace
 
 void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds) {
-    rlimit r{};
-    if (memoryMb > 0 && getrlimit(RLIMIT_AS, &r) == 0) {
-        r.rlim_cur = rlim_t(memoryMb) << 20;
-        if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
-        setrlimit(RLIMIT_AS, &r);
-    }
-    if (cpuSeconds > 0 && getrlimit(RLIMIT_CPU, &r) == 0) {
+    // Soft limits, at most the hard ones.
+    const auto setSoft = [](int resource, rlim_t value) {
+        rlimit r{};
+        if (getrlimit(resource, &r) != 0) return;
+        r.rlim_cur = r.rlim_max != RLIM_INFINITY && value > r.rlim_max ? r.rlim_max : value;
+        setrlimit(resource, &r);
+    };
+    if (memoryMb > 0) setSoft(RLIMIT_AS, rlim_t(memoryMb) << 20);
+    if (cpuSeconds > 0) {
         rusage u{};
         getrusage(RUSAGE_SELF, &u);
         const long usedUs =
             (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1000000L + u.ru_utime.tv_usec + u.ru_stime.tv_usec;
-        r.rlim_cur = rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds);  // used, rounded up, + budget
-        if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
-        setrlimit(RLIMIT_CPU, &r);
+        setSoft(RLIMIT_CPU, rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds));  // used, rounded up, + budget
     }
 }
 

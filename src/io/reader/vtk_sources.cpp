@@ -94,7 +94,7 @@ void checkBinaryStlSize(const std::string& path) {
 
 // --- reader-backed sources ------------------------------------------------------------
 AlgorithmSource::AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap)
-    : StepSource(std::move(format)), reader_(reader), path_(std::move(path)), trap_(trap) {
+    : StepSource(std::move(path), std::move(format)), reader_(reader), trap_(trap) {
     vtkInformation* info = reader_->GetOutputInformation(0);
     auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
     if (info && info->Has(key)) {
@@ -129,8 +129,8 @@ namespace {
 // A data object read without a VTK reader (PLY, OBJ): one step, already in memory.
 class ReadySource : public StepSource {
 public:
-    ReadySource(vtkSmartPointer<vtkDataObject> data, std::string format)
-        : StepSource(std::move(format)), data_(std::move(data)) {}
+    ReadySource(vtkSmartPointer<vtkDataObject> data, std::string path, std::string format)
+        : StepSource(std::move(path), std::move(format)), data_(std::move(data)) {}
     vtkSmartPointer<vtkDataObject> readStep(size_t) override { return data_; }
 
 private:
@@ -161,7 +161,7 @@ std::unique_ptr<StepSource> openVtk(const std::string& path, const std::string& 
 template <vtkSmartPointer<vtkPolyData> (*parse)(const std::string&)>
 std::unique_ptr<StepSource> openParsed(const std::string& path, const std::string& format, VtkMessageTrap&,
                                        const SourceOptions&) {
-    return std::make_unique<ReadySource>(parse(path), format);
+    return std::make_unique<ReadySource>(parse(path), path, format);
 }
 
 std::unique_ptr<StepSource> openStl(const std::string& path, const std::string& format, VtkMessageTrap& trap,
@@ -199,7 +199,7 @@ std::unique_ptr<StepSource> openExodus(const std::string& path, const std::strin
 class PvdSource : public StepSource {
 public:
     PvdSource(const std::string& path, const std::string& format, VtkMessageTrap& trap)
-        : StepSource(format), path_(path), trap_(trap) {
+        : StepSource(path, format), trap_(trap) {
         auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
         trap.watch(parser);
         parser->SetFileName(path.c_str());
@@ -266,7 +266,6 @@ private:
         }
     }
 
-    std::string path_;
     VtkMessageTrap& trap_;
     std::vector<std::vector<std::string>> stepFiles_;
 };

@@ -23,9 +23,10 @@ namespace flowsurf::io::detail {
 
 class StepSource {
 public:
-    explicit StepSource(std::string format) : format_(std::move(format)) {}
+    StepSource(std::string path, std::string format) : path_(std::move(path)), format_(std::move(format)) {}
     virtual ~StepSource() = default;
 
+    const std::string& path() const { return path_; }
     // Human-readable format, e.g. "VTK XML PolyData".
     const std::string& format() const { return format_; }
     // Sorted time values; empty when the file carries no time information (one step).
@@ -35,7 +36,7 @@ public:
     virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
 
 protected:
-    std::string format_;
+    std::string path_, format_;
     std::vector<double> times_;
 };
 
@@ -52,11 +53,9 @@ protected:
     virtual void afterUpdate(VtkMessageTrap& /*trap*/) {}
     // On the copy handed out.
     virtual void adapt(vtkDataObject& /*step*/) {}
-    const std::string& path() const { return path_; }
 
 private:
     vtkSmartPointer<vtkAlgorithm> reader_;
-    std::string path_;
     VtkMessageTrap& trap_;
 };
 
