@@ -55,10 +55,10 @@ ReaderBudget budgetFor(const std::string& path) {
     return b;
 }
 
-// Which variable sets another value, for messages.
-std::string overrideHint(bool fixed, const char* variable) {
-    return fixed ? std::string(variable)
-                 : std::string("its limit for this input's size; ") + variable + " sets another";
+// Which variable sets another time budget, for messages.
+std::string timeoutHint() {
+    return fixedSeconds() > 0 ? "FLOWSURF_READER_TIMEOUT_S"
+                              : "its limit for this input's size; FLOWSURF_READER_TIMEOUT_S sets another";
 }
 
 // Why the child ended, from its exit status and what it wrote to the reasons pipe.
@@ -68,8 +68,7 @@ std::string deathText(int status, const std::string& reason, const ReaderBudget&
             case SIGSYS:
                 return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
             case SIGXCPU:
-                return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
-                       overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
+                return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" + timeoutHint() + ")";
             case SIGSEGV:
             case SIGBUS:
             case SIGFPE:
@@ -172,13 +171,12 @@ void ReaderProcess::ensureChild(const std::string& root) {
 }
 
 void ReaderProcess::spawn(const std::string& root) {
-    int sv[2], reasons[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
-        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
-    if (pipe2(reasons, O_CLOEXEC) != 0) {
-        close(sv[0]);
-        close(sv[1]);
-        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
+    int sv[2] = {-1, -1}, reasons[2] = {-1, -1};
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0 || pipe2(reasons, O_CLOEXEC) != 0) {
+        const int error = errno;
+        for (int fd : {sv[0], sv[1]})
+            if (fd >= 0) close(fd);
+        throw IoError(std::string("cannot start the reader process: ") + std::strerror(error));
     }
     fcntl(reasons[0], F_SETFL, O_NONBLOCK);
     posix_spawn_file_actions_t actions;
@@ -257,10 +255,8 @@ Reply ReaderProcess::call(const std::string& label, const ReaderBudget& budget, 
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         reap(true);
-        const std::string why =
-            b.timedOut ? "took longer than " + std::to_string(budget.wallS) + " s (" +
-                             overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")"
-                       : deathText(lastStatus_, lastReason_, budget);
+        const std::string why = b.timedOut ? "took longer than " + std::to_string(budget.wallS) + " s (" + timeoutHint() + ")"
+                                           : deathText(lastStatus_, lastReason_, budget);
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }

@@ -37,10 +37,10 @@ public:
     void DisplayText(const char*) override {}
     void DisplayDebugText(const char*) override {}
     void DisplayErrorText(const char* text) override {
-        if (VtkMessageTrap* trap = trapHere()) trap->addError(text);
+        if (VtkMessageTrap* trap = trapHere()) trap->add(true, text);
     }
     void DisplayWarningText(const char* text) override {
-        if (VtkMessageTrap* trap = trapHere()) trap->addWarning(text);
+        if (VtkMessageTrap* trap = trapHere()) trap->add(false, text);
     }
     void DisplayGenericWarningText(const char* text) override { DisplayWarningText(text); }
 };
@@ -56,8 +56,7 @@ bool isExecutiveFailure(const std::string& message) {
 void onVtkEvent(vtkObject*, unsigned long eventId, void* clientData, void* callData) {
     auto* trap = static_cast<VtkMessageTrap*>(clientData);
     const char* text = static_cast<const char*>(callData);
-    if (eventId == vtkCommand::ErrorEvent) trap->addError(text);
-    else trap->addWarning(text);
+    trap->add(eventId == vtkCommand::ErrorEvent, text);
 }
 
 std::string trim(const std::string& s) {
@@ -157,16 +156,11 @@ void VtkMessageTrap::watch(vtkObject* object) {
     if (auto* algorithm = vtkAlgorithm::SafeDownCast(object)) watch(algorithm->GetExecutive());
 }
 
-void VtkMessageTrap::addError(const char* text) {
-    std::string s = cleanVtkMessage(text);
-    errors_.push_back(s.empty() ? std::string("unspecified VTK error") : s);
-}
-
-void VtkMessageTrap::addWarning(const char* text) {
-    std::string s = cleanVtkMessage(text);
-    if (s.empty()) return;
-    if (signalsBadData(s)) errors_.push_back(s);
-    else warnings_.push_back(s);
+void VtkMessageTrap::add(bool error, const char* text) {
+    const std::string s = cleanVtkMessage(text);
+    if (error) errors_.push_back(s.empty() ? std::string("unspecified VTK error") : s);
+    else if (signalsBadData(s)) errors_.push_back(s);
+    else if (!s.empty()) warnings_.push_back(s);
 }
 
 void VtkMessageTrap::clear() {

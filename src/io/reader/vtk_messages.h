@@ -53,8 +53,7 @@ public:
     void clear();
 
     // Called by the observers and the output window; the text is cleaned first.
-    void addError(const char* text);
-    void addWarning(const char* text);
+    void add(bool error, const char* text);
 
 private:
     std::vector<std::string> errors_, warnings_;
