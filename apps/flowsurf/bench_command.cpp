@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include "bench.h"
+#include "transfers.h"
 #include "core/errors.h"
 #include "gl/context.h"
 #include "cli_options.h"
@@ -88,6 +89,10 @@ int runBench(const BenchOptions& o) {
     // The driver and its version, for figures from several machines (bench/gpu/run.sh).
     std::printf("GL driver: %s; %s\n", reinterpret_cast<const char*>(glGetString(GL_VENDOR)),
                 reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+    if (o.transfers) {
+        bench::runTransfers(b.imageSizes, std::max(o.frames, 5));
+        return 0;
+    }
     if (b.slowdownFactor > 1)
         std::printf("--slowdown: every frame of %s rendered %d times (a test of the speed check, not a measurement)\n",
                     b.slowdownMethod.c_str(), b.slowdownFactor);

@@ -43,6 +43,7 @@ struct BenchOptions {
     std::vector<std::string> enhanceContrast{"off"};  // --enhance-contrast: each variant a row
     bool noStageTimes = false;
     bool calibration = false;
+    bool transfers = false;   // --transfers: only the host transfer timings (bench/transfers.h)
     std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails
 };
 int runBench(const BenchOptions& options);

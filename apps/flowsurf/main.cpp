@@ -146,6 +146,8 @@ int main(int argc, char** argv) {
                        "Time whole frames only (skips the second, synchronised pass per stage)");
     benchCmd->add_flag("--calibration", bench.calibration, "Also time a fixed GL frame no flowsurf change touches "
                                                             "(the machine's speed; scripts/bench-check.sh)");
+    benchCmd->add_flag("--transfers", bench.transfers, "Only time host read-backs and uploads of full-image layers "
+                                                        "at --sizes (what the tiled parallel mode adds per frame)");
     benchCmd->add_option("--slowdown", bench.slowdown, "METHOD:K renders each frame of METHOD K times (tests the "
                                                        "speed check, scripts/bench-check.sh)")
         ->group("");  // hidden: not a measurement

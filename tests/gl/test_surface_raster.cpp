@@ -143,16 +143,21 @@ TEST_P(SurfaceRasterSameImage, Tori) {
     EXPECT_EQ(c.rgb, c2.rgb) << "the compute rasteriser must not depend on the order triangles run in";
 }
 
-// The rule behind auto: compute only on a software renderer and only for many triangles
-// per pixel; an explicit choice is taken as given.
+// The rule behind auto: compute only on a listed renderer (a software one, or a GPU with few
+// graphics units) and only from its triangles per pixel on; an explicit choice is taken as given.
 TEST(SurfaceRaster, AutoRule) {
     using methods::SurfaceRaster;
-    const std::string llvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)", nvidia = "NVIDIA H100 80GB HBM3/PCIe/SSE2";
+    const std::string llvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)", h100 = "NVIDIA H100 80GB HBM3/PCIe/SSE2",
+                      h200 = "NVIDIA H200/PCIe/SSE2", desktop = "NVIDIA GeForce RTX 4090/PCIe/SSE2";
     const size_t pixels = 512 * 512;
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 10000, pixels));
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 1000000, pixels));
-    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, nvidia, 1000000, pixels));
-    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, nvidia, 10, pixels));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 100000, pixels));  // 0.38 per pixel
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, h100, 100000, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, h200, 1000000, 1920 * 1080));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, h200, 1000000, 3840 * 2160));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, desktop, 1000000, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, desktop, 10, pixels));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Gl, llvmpipe, 1000000, pixels));
 }
 

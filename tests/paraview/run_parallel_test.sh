@@ -64,6 +64,17 @@ errors=$(grep -c "FlowSurf needs OpenGL 4.5; ParaView's context is 3.3.* (on pro
 echo "glerror: exit $rc, the error reported $errors time(s)"
 [ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/glerror.log" ||
   { echo "glerror: expected rank 1's error on both ranks and a render after it"; cat "$OUT/glerror.log"; exit 1; }
+# A rank whose shaders fail to build (Mesa told to accept only GLSL 3.30 on rank 1, its GL
+# still 4.5): both ranks report rank 1's shader error, neither hangs, ParaView renders on.
+echo "== shadererror: rank 1 cannot build FlowSurf's shaders"
+xrun "$OUT/shadererror.log" "${MPI[@]}" -np 1 pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" glerror : \
+  -np 1 -x MESA_GL_VERSION_OVERRIDE=4.5 -x MESA_GLSL_VERSION_OVERRIDE=330 \
+  pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" glerror
+rc=$?
+errors=$(grep -c "program .* failed to \(link\|compile\).* (on process 1 of 2)" "$OUT/shadererror.log")
+echo "shadererror: exit $rc, the error reported $errors time(s)"
+[ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/shadererror.log" ||
+  { echo "shadererror: expected rank 1's shader error on both ranks and a render after it"; cat "$OUT/shadererror.log"; exit 1; }
 # Inputs that differ between the ranks (the vector array missing on rank 1; rank 1's piece
 # of another data time): both ranks report the same error naming rank 1, neither hangs,
 # and FlowSurf renders again once the input is whole.

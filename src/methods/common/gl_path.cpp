@@ -38,8 +38,10 @@ GlPath resolveGlPath(GlPath requested) {
 
 bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels) {
     if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
-    return renderer.find("llvmpipe") != std::string_view::npos &&
-           double(triangles) >= kComputeRasterTrianglesPerPixel * double(pixels);
+    for (const ComputeRasterRule& rule : kComputeRasterRule)
+        if (renderer.find(rule.renderer) != std::string_view::npos)
+            return double(triangles) >= rule.trianglesPerPixel * double(pixels);
+    return false;
 }
 
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels) {

@@ -142,7 +142,8 @@ std::string VtkProcessGroup::agree(const std::string& error)
   {
     if (lengths[size_t(q)] > 0)
     {
-      const std::string text(all.data() + offsets[size_t(q)], size_t(lengths[size_t(q)]));
+      std::string text(all.data() + offsets[size_t(q)], size_t(lengths[size_t(q)]));
+      text.erase(text.find_last_not_of(" \n\r\t") + 1);  // a driver's log ends in a newline
       return n > 1 ? text + " (on process " + std::to_string(q) + " of " + std::to_string(n) + ")" : text;
     }
   }

@@ -39,6 +39,15 @@ T checkedNumber(const std::string& name, const std::string& t, double lo, double
     return T(v);
 }
 
+// "on llvmpipe when triangles >= 0.5 x pixels, on H100 when ..." from the auto rule itself.
+std::string computeRasterRuleText() {
+    std::string text;
+    for (const methods::ComputeRasterRule& rule : methods::kComputeRasterRule)
+        text += std::string(text.empty() ? "on " : ", on ") + std::string(rule.renderer) + " when triangles >= " +
+                formatDouble(rule.trianglesPerPixel) + " x pixels";
+    return text;
+}
+
 std::string vec3Text(const glm::vec3& v) {
     return formatFloat(v.x) + "," + formatFloat(v.y) + "," + formatFloat(v.z);
 }
@@ -342,8 +351,7 @@ std::vector<OptionSpec> buildTable() {
                "per GL renderer", methods::kGlPathNames, FS_REF(params.common.glPath)));
     add(choice("surface-raster", gMethod, "Who rasterises the surface (ISA's velocity image, the hybrid's seeds): "
                "gl, or compute shaders (a visibility buffer; faster for many small triangles on a software "
-               "renderer); auto picks compute on llvmpipe when triangles >= " +
-                   formatDouble(methods::kComputeRasterTrianglesPerPixel) + " x pixels",
+               "renderer or on GPUs with few graphics units); auto picks compute " + computeRasterRuleText(),
                methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)));
     add(choice("parallel", gMethod, "Several processes on one view (ParaView under MPI): tiles (each runs the "
                "image stages on its own screen tile) or replicate (each runs them on the whole image); the same "
