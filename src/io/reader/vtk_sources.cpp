@@ -15,6 +15,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
+#include <vtkTrivialProducer.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -126,17 +127,6 @@ void readInformation(vtkAlgorithm* reader, const std::string& path, const std::s
 
 namespace {
 
-// A data object read without a VTK reader (PLY, OBJ): one step, already in memory.
-class ReadySource : public StepSource {
-public:
-    ReadySource(vtkSmartPointer<vtkDataObject> data, std::string path, std::string format)
-        : StepSource(std::move(path), std::move(format)), data_(std::move(data)) {}
-    vtkSmartPointer<vtkDataObject> readStep(size_t) override { return data_; }
-
-private:
-    vtkSmartPointer<vtkDataObject> data_;
-};
-
 // How each format is opened: `format` names it in messages; `options` are OpenFOAM's.
 using Opener = std::unique_ptr<StepSource> (*)(const std::string& path, const std::string& format,
                                                VtkMessageTrap& trap, const SourceOptions& options);
@@ -158,10 +148,13 @@ std::unique_ptr<StepSource> openVtk(const std::string& path, const std::string& 
     return std::make_unique<AlgorithmSource>(vtkReader<Reader>(path, format, trap), path, format, trap);
 }
 
+// Our own parser's surface (PLY, OBJ), handed out as a reader's one step.
 template <vtkSmartPointer<vtkPolyData> (*parse)(const std::string&)>
-std::unique_ptr<StepSource> openParsed(const std::string& path, const std::string& format, VtkMessageTrap&,
+std::unique_ptr<StepSource> openParsed(const std::string& path, const std::string& format, VtkMessageTrap& trap,
                                        const SourceOptions&) {
-    return std::make_unique<ReadySource>(parse(path), path, format);
+    auto producer = vtkSmartPointer<vtkTrivialProducer>::New();
+    producer->SetOutput(parse(path));
+    return std::make_unique<AlgorithmSource>(producer, path, format, trap);
 }
 
 std::unique_ptr<StepSource> openStl(const std::string& path, const std::string& format, VtkMessageTrap& trap,
