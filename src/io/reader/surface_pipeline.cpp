@@ -194,7 +194,6 @@ vtkSmartPointer<vtkPolyData> triangulate(vtkPolyData* data, VtkMessageTrap& trap
 // Stages 1–5. Point arrays win over converted cell arrays of the same name.
 vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap, const std::string& where) {
     VtkMessageTrap::Active active(trap);
-    trap.clear();
     // (1) check, (2) surface per block
     std::vector<vtkSmartPointer<vtkPolyData>> parts;
     std::vector<std::string> names;

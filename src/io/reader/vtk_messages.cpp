@@ -131,6 +131,8 @@ VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : previous_(gTrap) {
     (void)installed;
     gTrap = &trap;
     gTrapThread = std::this_thread::get_id();
+    trap.errors_.clear();
+    trap.warnings_.clear();
 }
 
 VtkMessageTrap::Active::~Active() { gTrap = previous_; }
@@ -161,11 +163,6 @@ void VtkMessageTrap::add(bool error, const char* text) {
     if (error) errors_.push_back(s.empty() ? std::string("unspecified VTK error") : s);
     else if (signalsBadData(s)) errors_.push_back(s);
     else if (!s.empty()) warnings_.push_back(s);
-}
-
-void VtkMessageTrap::clear() {
-    errors_.clear();
-    warnings_.clear();
 }
 
 void VtkMessageTrap::throwIfError(const std::string& path, const std::string& what) const {

@@ -106,7 +106,6 @@ AlgorithmSource::AlgorithmSource(vtkAlgorithm* reader, std::string path, std::st
 
 vtkSmartPointer<vtkDataObject> AlgorithmSource::readStep(size_t index) {
     VtkMessageTrap::Active active(trap_);
-    trap_.clear();
     if (times_.empty()) reader_->Update();
     else reader_->UpdateTimeStep(times_.at(index));
     trap_.throwIfError(path_, "cannot read " + format_);
@@ -303,7 +302,6 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     // The .foam file is an empty marker in the case folder: only its presence counts.
     checkReadable(path, ext == ".foam");
     if (!format) throw FormatError(path + ": unknown file extension '" + ext + "' (supported: " + supported + ")");
-    trap.clear();
     return format->open(path, format->name, trap, options);
 }
 
