@@ -56,7 +56,7 @@ std::string misbehave(const std::string& what, const std::string& input) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    sandbox::start(sandbox::parseArgs(argc, argv));
+    sandbox::start(argc, argv);
     wire::Reader in(sandbox::kSocketFd);
     wire::Request request;  // Open: a path and its options
     wire::record(in, request);

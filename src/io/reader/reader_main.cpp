@@ -76,7 +76,7 @@ w::Status statusOf(const std::exception& e) {
 
 int main(int argc, char** argv) {
     try {
-        sandbox::start(sandbox::parseArgs(argc, argv));
+        sandbox::start(argc, argv);
     } catch (const std::exception& e) {
         const std::string why = std::string("could not enter its sandbox: ") + e.what();
         [[maybe_unused]] ssize_t n = ::write(sandbox::kReasonFd, why.data(), why.size());

@@ -239,21 +239,18 @@ std::string rootExcluding(const std::string& path) {
 }
 
 // --- start -----------------------------------------------------------------------------
-ChildArgs parseArgs(int argc, char** argv) {
-    ChildArgs args;
+void start(int argc, char** argv) {
+    unsigned long long memoryHardMb = 0;
+    std::string root;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i];
-        if (key == "--memory-mb") args.memoryHardMb = std::strtoull(argv[i + 1], nullptr, 10);
-        else if (key == "--root") args.root = argv[i + 1];
+        if (key == "--memory-mb") memoryHardMb = std::strtoull(argv[i + 1], nullptr, 10);
+        else if (key == "--root") root = argv[i + 1];
     }
-    return args;
-}
-
-void start(const ChildArgs& args) {
-    limitProcess(args.memoryHardMb);
+    limitProcess(memoryHardMb);
     const char* off = std::getenv("FLOWSURF_READER_SANDBOX");  // "off" or "0": limits only, for debugging
     if (off && (std::strcmp(off, "off") == 0 || std::strcmp(off, "0") == 0)) return;
-    landlock(args.root);
+    landlock(root);
     installFilter();
 }
 

@@ -24,19 +24,13 @@ constexpr bool kSanitized = __has_feature(address_sanitizer);
 constexpr bool kSanitized = false;
 #endif
 
-// The command line the library starts the child with: --memory-mb N --root DIR.
-struct ChildArgs {
-    unsigned long long memoryHardMb = 0;  // the address space's hard limit; 0: none
-    std::string root;                     // the folder the child may read below
-};
-ChildArgs parseArgs(int argc, char** argv);
-
-// The whole setup, in order: no core dumps, no file written (RLIMIT_FSIZE 0), few
-// descriptors and the address space's hard limit; then (unless FLOWSURF_READER_SANDBOX=off)
-// Landlock below the root (where the kernel has it) and the system-call filter. Call once
-// the readers' libraries are loaded and initialised. Throws std::runtime_error if the
-// filter cannot be installed.
-void start(const ChildArgs& args);
+// The whole setup, from the command line the library starts the child with (--memory-mb
+// N: the address space's hard limit, 0 for none; --root DIR: the folder the child may read
+// below), in order: no core dumps, no file written (RLIMIT_FSIZE 0), few descriptors and
+// the hard limit; then (unless FLOWSURF_READER_SANDBOX=off) Landlock below the root (where
+// the kernel has it) and the system-call filter. Call once the readers' libraries are
+// loaded and initialised. Throws std::runtime_error if the filter cannot be installed.
+void start(int argc, char** argv);
 
 // Per request: the soft address-space limit (clamped to the hard one; 0 leaves it) and
 // `cpuSeconds` more CPU time than used so far (RLIMIT_CPU counts the process's life).
