@@ -98,8 +98,10 @@ bool isBelow(const std::string& path, const std::string& root) {
 
 // The reader's warnings that end every reply, printed as the library's own.
 void printWarnings(wire::Reader& r) {
-    for (const auto& text : r.get<std::vector<std::string>>()) std::fprintf(stderr, "flowsurf: warning: %s\n", text.c_str());
+    for (const auto& text : r.get<std::vector<std::string>>())
+        std::fprintf(stderr, "flowsurf: warning: %s\n", text.c_str());
 }
+
 // Where flowsurf-reader is (reader_process.h); throws IoError if nowhere.
 std::string readerExecutable() {
     if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
@@ -112,6 +114,7 @@ std::string readerExecutable() {
 #endif
     throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
 }
+
 }  // namespace
 
 ReaderBudget readerBudget(unsigned long long inputBytes) {
