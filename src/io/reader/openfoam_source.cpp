@@ -165,9 +165,7 @@ void warnMissingPatchEntries(const std::vector<std::string>& warnings, const std
 // and the units moved from the array names to the labels.
 class OpenFoamSource final : public AlgorithmSource {
 public:
-    OpenFoamSource(vtkSmartPointer<vtkOpenFOAMReader> reader, std::string path, std::string format,
-                   VtkMessageTrap& trap)
-        : AlgorithmSource(reader, std::move(path), std::move(format), trap) {}
+    using AlgorithmSource::AlgorithmSource;
 
 protected:
     void afterUpdate(VtkMessageTrap& trap) override { warnMissingPatchEntries(trap.warnings(), path()); }
