@@ -155,7 +155,8 @@ private:
         }
         pos_ += type.size;
         const unsigned bits = 8 * type.size;
-        if (type.kind == 'f') value = type.size == 4 ? double(std::bit_cast<float>(uint32_t(u))) : std::bit_cast<double>(u);
+        if (type.kind == 'f')
+            value = type.size == 4 ? double(std::bit_cast<float>(uint32_t(u))) : std::bit_cast<double>(u);
         else if (type.kind == 'i' && u >> (bits - 1)) value = double(int64_t(u) - (int64_t(1) << bits));
         else value = double(u);
         return true;

@@ -43,11 +43,12 @@ void answer(const w::Request& request, w::Writer& out, std::unique_ptr<OpenSourc
             return;
         }
         case w::Op::Step: {
-            if (!open || request.step >= open->source->stepCount()) throw FormatError("reader: step request out of range");
+            if (!open || request.step >= open->source->stepCount())
+                throw FormatError("reader: step request out of range");
             io::detail::StepSource& source = *open->source;
             const size_t i = size_t(request.step);
-            const core::SurfaceMesh m =
-                io::detail::readSurfaceMesh(source.readStep(i), open->trap, w::stepLabel(source.path(), source.times(), i));
+            const std::string label = w::stepLabel(source.path(), source.times(), i);
+            const core::SurfaceMesh m = io::detail::readSurfaceMesh(source.readStep(i), open->trap, label);
             out.field(w::Status::Ok);
             w::record(out, m);
             return;

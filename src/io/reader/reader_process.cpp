@@ -258,8 +258,9 @@ Reply ReaderProcess::call(const std::string& label, const ReaderBudget& budget, 
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         reap(true);
-        const std::string why = b.timedOut ? "took longer than " + std::to_string(budget.wallS) + " s (" + timeoutHint() + ")"
-                                           : deathText(lastStatus_, lastReason_, budget);
+        const std::string why = b.timedOut
+                                    ? "took longer than " + std::to_string(budget.wallS) + " s (" + timeoutHint() + ")"
+                                    : deathText(lastStatus_, lastReason_, budget);
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }
