@@ -1,5 +1,10 @@
+// OpenFOAM cases through VTK's reader: the boundary patches (--patches) of a reconstructed
+// case or of a decomposed one (processor* directories, --foam-case), every time directory a
+// step (0/ included), points re-read for time directories that have polyMesh/points (moving
+// meshes), and each field's units from its `dimensions` (VTK's "m/s" notation, kept on the
+// arrays as UNITS_LABEL).
 // Sections: case layout · units and VTK's warnings · the source · openOpenFoam.
-#include "io/reader/openfoam_source.h"
+#include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
 #include "io/reader/surface_pipeline.h"

@@ -3,7 +3,6 @@
 
 #include "core/errors.h"
 #include "io/reader/checks.h"
-#include "io/reader/openfoam_source.h"
 #include "io/reader/parsers.h"
 #include "io/reader/sandbox.h"
 

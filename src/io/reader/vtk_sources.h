@@ -1,8 +1,8 @@
 // flowsurf — one reader per file extension, seen as a list of time steps (private to
 // src/io). VTK readers for most formats (where one crashes or loops on bad input, the
 // reader process's limits and sandbox stop it), behind checks of what VTK would read
-// silently wrong (legacy_check, exodus_check, a truncated binary STL); our own parsers for
-// PLY and OBJ.
+// silently wrong (checks.h, a truncated binary STL); our own parsers for PLY and OBJ
+// (parsers.h); OpenFOAM cases in openfoam_source.cpp.
 // A StepSource hands out the raw output per step; surface_pipeline.h turns that into
 // a triangle surface.
 #pragma once
@@ -63,10 +63,15 @@ private:
 // names the header lists); throws FormatError with what the reader reported.
 void readInformation(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap);
 
+// OpenFOAM cases (openfoam_source.cpp); `format` ("OpenFOAM case") names them in messages,
+// with the layout read. Throws as openSource, ConfigError for --patches or --foam-case.
+std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                         const SourceOptions& options);
+
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
 // empty file, header the reader refuses). Every reader is watched by `trap`.
-// `options`: OpenFOAM's boundary patches and case layout (openfoam_source.h).
+// `options`: OpenFOAM's boundary patches and case layout.
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options = {});
 
 }  // namespace flowsurf::io::detail
