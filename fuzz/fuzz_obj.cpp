@@ -1,7 +1,7 @@
 // OBJ parser: any input gives a mesh or a typed error, nothing else.
 #include "core/errors.h"
 #include "fuzz_input.h"
-#include "io/reader/obj_reader.h"
+#include "io/reader/parsers.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <optional>
 
 using namespace flowsurf;
 
@@ -41,49 +42,51 @@ int reportCurrentError() {
     }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA, IBFVS [L]; hybrid LIC [W])", "flowsurf"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", "flowsurf 0.1.0");
-
-    app::RenderOptions render;
-    CLI::App* renderCmd = app.add_subcommand("render", "Render a flow texture image or animation");
-    app::addRenderOptions(*renderCmd, render);
-
-    app::RenderOptions compare;
-    std::string compareMethods = "isa,ibfvs,hybrid";
-    CLI::App* compareCmd = app.add_subcommand("compare", "Methods side by side on one camera, labelled with ms/frame");
-    app::addRenderOptions(*compareCmd, compare);
-    compareCmd->add_option("--methods", compareMethods, "Comma-separated methods to compare")->capture_default_str();
-
-    // Quality reports (doc/algorithms.md, "Quality metrics"): `quality`, and --quality on
-    // render and compare.
-    app::RenderOptions quality;
-    std::string qualityMethods = "isa,ibfvs,hybrid";
+// The subcommands, and what parsing the command line fills in for each.
+struct Commands {
+    app::RenderOptions render, compare, quality, view;
+    std::string compareMethods = "isa,ibfvs,hybrid", qualityMethods = "isa,ibfvs,hybrid";
     app::QualityOutput renderQuality, compareQuality, qualityOut;
-    qualityOut.every = 5;
-    CLI::App* qualityCmd = app.add_subcommand("quality", "How faithful each method's texture is to the field: "
-                                                         "orientation error, frame correlation, contrast, feature size");
-    app::addRenderOptions(*qualityCmd, quality);
-    qualityCmd->add_option("--methods", qualityMethods, "Comma-separated methods to measure")->capture_default_str();
     bool autoTune = false;
-    qualityCmd->add_flag("--auto-tune", autoTune, "Try a small grid of each method's parameters (step, alpha, "
-                                                  "filter length, noise scale) on this view; print the trade-off "
-                                                  "between orientation error, frame correlation and ms/frame");
-    for (auto [cmd, out] : {std::pair{renderCmd, &renderQuality}, {compareCmd, &compareQuality}, {qualityCmd, &qualityOut}}) {
+    app::view::ViewOptions viewOpts;
+    std::string infoPath;
+    session::RenderOptions infoRead;  // how info reads the file
+    app::BenchOptions bench;
+    CLI::App *renderCmd = nullptr, *compareCmd = nullptr, *qualityCmd = nullptr, *viewCmd = nullptr,
+             *infoCmd = nullptr, *benchCmd = nullptr;
+};
+
+// render, compare and quality, each with --quality (doc/algorithms.md, "Quality metrics").
+void addRenderingCommands(CLI::App& app, Commands& c) {
+    c.renderCmd = app.add_subcommand("render", "Render a flow texture image or animation");
+    app::addRenderOptions(*c.renderCmd, c.render);
+
+    c.compareCmd = app.add_subcommand("compare", "Methods side by side on one camera, labelled with ms/frame");
+    app::addRenderOptions(*c.compareCmd, c.compare);
+    c.compareCmd->add_option("--methods", c.compareMethods, "Comma-separated methods to compare")->capture_default_str();
+
+    c.qualityOut.every = 5;
+    c.qualityCmd = app.add_subcommand("quality", "How faithful each method's texture is to the field: "
+                                                 "orientation error, frame correlation, contrast, feature size");
+    app::addRenderOptions(*c.qualityCmd, c.quality);
+    c.qualityCmd->add_option("--methods", c.qualityMethods, "Comma-separated methods to measure")->capture_default_str();
+    c.qualityCmd->add_flag("--auto-tune", c.autoTune, "Try a small grid of each method's parameters (step, alpha, "
+                                                      "filter length, noise scale) on this view; print the trade-off "
+                                                      "between orientation error, frame correlation and ms/frame");
+    for (auto [cmd, out] : {std::pair{c.renderCmd, &c.renderQuality}, {c.compareCmd, &c.compareQuality},
+                            {c.qualityCmd, &c.qualityOut}}) {
         cmd->add_option("--quality", out->file, "Write the quality report (per method: median, worst and every "
                                                 "measured frame; the options and the GL renderer) as JSON")
             ->group("Output")->type_name("PATH");
         cmd->add_option("--quality-every", out->every, "Measure every N-th animation frame (a PNG: its last frame)")
             ->group("Output")->capture_default_str()->check(CLI::Range(1, 100000));
     }
+}
 
-    app::RenderOptions view;
-    app::view::ViewOptions viewOpts;
-    CLI::App* viewCmd = app.add_subcommand("view", "Interactive viewer: turn, zoom, switch methods, play time");
-    app::addRenderOptions(*viewCmd, view);
+void addViewCommand(CLI::App& app, Commands& c) {
+    CLI::App* viewCmd = c.viewCmd = app.add_subcommand("view", "Interactive viewer: turn, zoom, switch methods, play time");
+    app::view::ViewOptions& viewOpts = c.viewOpts;
+    app::addRenderOptions(*viewCmd, c.view);
     const std::string gView = "Viewer";
     viewCmd->add_option("--compare", viewOpts.compare, "Methods side by side sharing one camera, e.g. isa,ibfvs,hybrid")
         ->group(gView);
@@ -92,25 +95,25 @@ int main(int argc, char** argv) {
     viewCmd->add_option("--stats", viewOpts.stats, "Write per-frame times as JSON on exit")->group(gView);
     viewCmd->add_flag("--headless", viewOpts.headless, "No window: EGL, driven by --play (tests, batch replays)")
         ->group(gView);
-    {
-        std::string keys = "\nMouse: left drag rotates (turntable; trackball with t), middle drag or shift+left drag "
-                           "pans, the wheel zooms towards the cursor, right drag zooms; drop a file to open it.\nKeys:\n";
-        for (const auto& k : app::view::keyTable()) keys += "  " + std::string(k.name) + "\t" + k.description + "\n";
-        viewCmd->footer(keys);
-    }
+    std::string keys = "\nMouse: left drag rotates (turntable; trackball with t), middle drag or shift+left drag "
+                       "pans, the wheel zooms towards the cursor, right drag zooms; drop a file to open it.\nKeys:\n";
+    for (const auto& k : app::view::keyTable()) keys += "  " + std::string(k.name) + "\t" + k.description + "\n";
+    viewCmd->footer(keys);
+}
 
-    std::string infoPath;
-    CLI::App* infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, time steps, "
-                                                   "bounds, OpenFOAM patches with their fields");
-    infoCmd->add_option("file", infoPath, "Surface file or builtin:NAME")->required();
+void addInfoCommand(CLI::App& app, Commands& c) {
+    CLI::App* infoCmd = c.infoCmd = app.add_subcommand("info", "List what a file holds: points, triangles, arrays, "
+                                                               "time steps, bounds, OpenFOAM patches with their fields");
+    infoCmd->add_option("file", c.infoPath, "Surface file or builtin:NAME")->required();
     // How info reads the file: the table's options of reading an input.
-    session::RenderOptions infoRead;
+    session::RenderOptions& infoRead = c.infoRead;
     for (const auto& spec : session::renderOptionTable())
         if (spec.takes(session::FrontEnd::Read))
             infoCmd->add_option_function<std::string>(
                 "--" + spec.name, [&infoRead, s = &spec](const std::string& v) { s->set(infoRead, v); }, spec.help);
+}
 
-    app::BenchOptions bench;
+CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
     CLI::App* benchCmd = app.add_subcommand("bench", "Print ms/frame per stage, static and dynamic case");
     benchCmd->add_option("--csv", bench.csv, "Also write the table as CSV to this file");
     benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
@@ -151,17 +154,21 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--slowdown", bench.slowdown, "METHOD:K renders each frame of METHOD K times (tests the "
                                                        "speed check, scripts/bench-check.sh)")
         ->group("");  // hidden: not a measurement
+    return benchCmd;
+}
 
-    // --config FILE: the file's options first, the command line's on top of them.
-    for (CLI::App* cmd : {renderCmd, compareCmd, viewCmd, qualityCmd})
+// The config file (--config FILE: its options first, the command line's on top of them),
+// then the command line; an exit code when the program is done (help, version, an error).
+std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
+    for (CLI::App* cmd : {c.renderCmd, c.compareCmd, c.viewCmd, c.qualityCmd})
         cmd->add_option("--config", "JSON config (e.g. saved by the viewer); options given here override it")
             ->group("Output");
     try {
         if (auto config = app::findConfigArgument(argc, argv)) {
-            app::applyConfigFile(*config, render);
-            compare = render;
-            view = render;
-            quality = render;
+            app::applyConfigFile(*config, c.render);
+            c.compare = c.render;
+            c.view = c.render;
+            c.quality = c.render;
         }
     } catch (const std::exception&) {
         return reportCurrentError();
@@ -184,28 +191,49 @@ int main(int argc, char** argv) {
     } catch (const std::exception&) {  // a file an option reads (--colormap-file, --dye-file)
         return reportCurrentError();
     }
+    return std::nullopt;
+}
 
-    try {
-        if (*renderCmd) return app::runRender(render, renderQuality);
-        if (*infoCmd) return app::runInfo(infoPath, session::sourceOptions(infoRead));
-        if (*viewCmd) {
+// Runs the subcommand given.
+int run(Commands& c) {
+    if (*c.renderCmd) return app::runRender(c.render, c.renderQuality);
+    if (*c.infoCmd) return app::runInfo(c.infoPath, session::sourceOptions(c.infoRead));
+    if (*c.viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
-            if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");
-            const core::Viewport standard = app::RenderOptions{}.size;
-            viewOpts.sizeGiven = viewCmd->count("--size") > 0 || view.size.width != standard.width ||
-                                 view.size.height != standard.height;
-            return app::view::runView(view, viewOpts);
+        const app::RenderOptions& view = c.view;
+        if (view.input.empty()) throw ConfigError("view: an input file or builtin:NAME is required");
+        const core::Viewport standard = app::RenderOptions{}.size;
+        c.viewOpts.sizeGiven = c.viewCmd->count("--size") > 0 || view.size.width != standard.width ||
+                               view.size.height != standard.height;
+        return app::view::runView(view, c.viewOpts);
 #else
-            throw ConfigError("view: this flowsurf was built without the viewer (FLOWSURF_BUILD_VIEWER=OFF)");
+        throw ConfigError("view: this flowsurf was built without the viewer (FLOWSURF_BUILD_VIEWER=OFF)");
 #endif
-        }
-        if (*compareCmd) return app::runCompare(compare, compareMethods, compareQuality);
-        if (*qualityCmd)
-            return autoTune ? app::runAutoTune(quality, qualityMethods, qualityOut)
-                            : app::runQuality(quality, qualityMethods, qualityOut);
-        if (*benchCmd) return app::runBench(bench);
+    }
+    if (*c.compareCmd) return app::runCompare(c.compare, c.compareMethods, c.compareQuality);
+    if (*c.qualityCmd)
+        return c.autoTune ? app::runAutoTune(c.quality, c.qualityMethods, c.qualityOut)
+                          : app::runQuality(c.quality, c.qualityMethods, c.qualityOut);
+    if (*c.benchCmd) return app::runBench(c.bench);
+    return app::kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"flowsurf — dense, animated flow textures on triangle-mesh surfaces (ISA, IBFVS [L]; hybrid LIC [W])", "flowsurf"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "flowsurf 0.1.0");
+
+    Commands c;
+    addRenderingCommands(app, c);
+    addViewCommand(app, c);
+    addInfoCommand(app, c);
+    c.benchCmd = addBenchCommand(app, c.bench);
+    if (const std::optional<int> done = parse(app, c, argc, argv)) return *done;
+    try {
+        return run(c);
     } catch (const std::exception&) {
         return reportCurrentError();
     }
-    return app::kOk;
 }

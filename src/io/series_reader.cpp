@@ -23,12 +23,7 @@ public:
     size_t count() const override { return info_.times.empty() ? 1 : info_.times.size(); }
     double time(size_t i) const override { return info_.times.empty() ? 0.0 : info_.times[i]; }
     core::SurfaceMesh load(size_t i) override { return reader_.readStep(i, label(i)); }
-    std::string label(size_t i) const override {
-        if (count() <= 1) return path_;
-        std::ostringstream s;
-        s << path_ << " (time step " << i + 1 << " of " << count() << ", t = " << info_.times[i] << ")";
-        return s.str();
-    }
+    std::string label(size_t i) const override { return wire::stepLabel(path_, info_.times, i); }
 
 private:
     std::string path_;

@@ -56,14 +56,12 @@ std::string misbehave(const std::string& what, const std::string& input) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    sandbox::start(sandbox::parseArgs(argc, argv));
+    sandbox::start(argc, argv);
     wire::Reader in(sandbox::kSocketFd);
-    const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
-    in.u8();  // the op: Open (path, source options)
-    const std::string path = in.str();
-    flowsurf::io::SourceOptions options;
-    wire::record(in, options);
-    sandbox::limitRequest(memoryMb, cpuSeconds);
+    wire::Request request;  // Open: a path and its options
+    wire::record(in, request);
+    sandbox::limitRequest(request.memoryMb, request.cpuSeconds);
+    const std::string& path = request.path;
     const char* what = std::getenv("FLOWSURF_TEST_HOSTILE");
     wire::Writer out(sandbox::kSocketFd);
     std::string result;
@@ -72,9 +70,9 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
         result = "needed more than " + std::to_string(sandbox::memoryLimitMb()) + " MiB";
     }
-    out.u8(uint8_t(wire::Status::FormatError));
-    out.str(path + ": " + (what ? what : "") + " was not stopped: " + result);
-    out.u64(0);  // no warnings
+    out.field(wire::Status::FormatError);
+    out.field(path + ": " + (what ? what : "") + " was not stopped: " + result);
+    out.field(std::vector<std::string>{});  // no warnings
     out.flush();
     return 0;
 }

@@ -3,7 +3,7 @@
 // variables): fed to the reader process as they are, each is refused within 5 s with a
 // typed error naming the file, whatever VTK's reader does with it (an error, a crash, a
 // runaway allocation or loop stopped by the child's limits). Old-layout legacy cell lists
-// are still checked before VTK (legacy_check.h says why) and refused the same way.
+// are still checked before VTK (checks.h says why) and refused the same way.
 // "Within 5 s" is asserted on the reader's CPU time, which a loaded machine does not
 // stretch; the wall clock only has to stay under the library's deadline (30 s).
 #include "core/errors.h"

@@ -2,18 +2,22 @@
 // prints nothing (VTK's own reports are captured, not shown).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
-#include "io/reader/ply_reader.h"
+#include "io/reader/parsers.h"
 
 #include "test_io_common.h"
 
 #include <vtkAppendFilter.h>
+#include <vtkCellArray.h>
 #include <vtkExodusIIWriter.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -190,6 +194,54 @@ TEST(IoReaders, PlyElementWithoutPropertiesAndHugeCountReadsAtOnce) {
     const auto poly = io::detail::readPly(dir.file("empty_element.ply"));
     EXPECT_EQ(poly->GetNumberOfPoints(), 3);
     EXPECT_EQ(poly->GetNumberOfPolys(), 1);
+}
+
+// Binary PLY in both byte orders: signed, unsigned and floating-point types decode to the
+// values written (the host's bytes, reversed for big-endian).
+TEST(IoReaders, BinaryPlyDecodesEveryScalarTypeInBothByteOrders) {
+    ScratchDir dir;
+    const int8_t x[3] = {-3, 0, 5};
+    const int16_t y[3] = {-300, 2, 7};
+    const double z[3] = {-0.5, 1.25, 1e10};
+    const float nz = -1.0f;
+    const uint32_t extra = 4000000000u;
+    for (const char* order : {"binary_little_endian", "binary_big_endian"}) {
+        SCOPED_TRACE(order);
+        std::string body;
+        const auto put = [&](const void* p, size_t n) {
+            std::string bytes(static_cast<const char*>(p), n);
+            if (order[7] == 'b') std::reverse(bytes.begin(), bytes.end());
+            body += bytes;
+        };
+        for (int i = 0; i < 3; ++i) {
+            put(&x[i], 1), put(&y[i], 2), put(&z[i], 8), put(&extra, 4);
+            for (float n : {0.0f, 0.0f, nz}) put(&n, 4);
+        }
+        const uint16_t corners = 3;
+        put(&corners, 2);
+        for (int32_t id : {2, 1, 0}) put(&id, 4);
+        writeText(dir.file("binary.ply"), std::string("ply\nformat ") + order +
+                                              " 1.0\nelement vertex 3\nproperty char x\nproperty int16 y\n"
+                                              "property float64 z\nproperty uint extra\nproperty float nx\n"
+                                              "property float ny\nproperty float32 nz\nelement face 1\n"
+                                              "property list ushort int vertex_indices\nend_header\n" + body);
+        const auto poly = io::detail::readPly(dir.file("binary.ply"));
+        ASSERT_EQ(poly->GetNumberOfPoints(), 3);
+        for (int i = 0; i < 3; ++i) {
+            double p[3];
+            poly->GetPoint(i, p);
+            EXPECT_EQ(p[0], x[i]);
+            EXPECT_EQ(p[1], y[i]);
+            EXPECT_EQ(p[2], z[i]);
+            EXPECT_EQ(poly->GetPointData()->GetNormals()->GetComponent(i, 2), nz);
+        }
+        vtkIdType n;
+        const vtkIdType* ids;
+        poly->GetPolys()->InitTraversal();
+        ASSERT_TRUE(poly->GetPolys()->GetNextCell(n, ids));
+        EXPECT_EQ(n, 3);
+        EXPECT_EQ(ids[0], 2);
+    }
 }
 
 TEST(IoReaders, MalformedObjNamesTheLine) {

@@ -1,4 +1,4 @@
-#include "io/reader/dataset_check.h"
+#include "io/reader/checks.h"
 
 #include "core/errors.h"
 

@@ -1,18 +1,15 @@
 // The NetCDF classic layout (CDF1/2/5), big-endian throughout:
 //   magic numrecs dim_list gatt_list var_list, var := name dimids vatts type vsize begin
 // (https://docs.unidata.ucar.edu/netcdf-c/current/file_format_specifications.html).
-#include "io/reader/exodus_check.h"
+#include "io/reader/checks.h"
 
 #include "core/errors.h"
-
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <vector>
 
@@ -20,24 +17,18 @@ namespace flowsurf::io::detail {
 
 namespace {
 
-struct Mapping {
-    const unsigned char* data = nullptr;
-    size_t size = 0;
-    ~Mapping() {
-        if (data) ::munmap(const_cast<unsigned char*>(data), size);
-    }
-};
-
+// Reads the header from the file (a truncated one ends early); `size` is the file's.
 class Cursor {
 public:
-    Cursor(const Mapping& m, const std::string& path, int version)
-        : m_(m), path_(path), version_(version) {}
+    Cursor(std::ifstream& in, uint64_t size, const std::string& path, int version)
+        : in_(in), size_(size), path_(path), version_(version) {}
 
     uint64_t be(size_t bytes) {
+        unsigned char b[8];
         need(bytes);
+        in_.read(reinterpret_cast<char*>(b), std::streamsize(bytes));
         uint64_t v = 0;
-        for (size_t i = 0; i < bytes; ++i) v = (v << 8) | m_.data[pos_ + i];
-        pos_ += bytes;
+        for (size_t i = 0; i < bytes; ++i) v = (v << 8) | b[i];
         return v;
     }
     uint64_t u32() { return be(4); }
@@ -45,25 +36,26 @@ public:
     uint64_t offset() { return be(version_ == 1 ? 4 : 8); }  // OFFSET
     void skip(uint64_t bytes) {
         need(bytes);
-        pos_ += bytes;
+        in_.seekg(std::streamoff(bytes), std::ios::cur);
     }
     std::string name() {
-        uint64_t n = count();
+        const uint64_t n = count();
         need(n);
-        std::string s(reinterpret_cast<const char*>(m_.data + pos_), n);
-        skip((n + 3) / 4 * 4);
+        std::string s(size_t(n), '\0');
+        in_.read(s.data(), std::streamsize(n));
+        skip((n + 3) / 4 * 4 - n);
         return s;
     }
-    size_t pos() const { return pos_; }
 
 private:
     void need(uint64_t bytes) const {
-        if (bytes > m_.size - pos_) throw FormatError(path_ + ": truncated Exodus II (NetCDF) header");
+        if (!in_ || bytes > size_ - uint64_t(in_.tellg()))
+            throw FormatError(path_ + ": truncated Exodus II (NetCDF) header");
     }
-    const Mapping& m_;
+    std::ifstream& in_;
+    uint64_t size_;
     const std::string& path_;
     int version_;
-    size_t pos_ = 4;  // after the magic
 };
 
 uint64_t typeSize(uint64_t type) {
@@ -80,7 +72,7 @@ uint64_t mul(uint64_t a, uint64_t b, const std::string& path) {
 struct Variable {
     std::string name;
     std::vector<uint64_t> dims;
-    uint64_t type = 0, vsize = 0, begin = 0;
+    uint64_t type = 0, begin = 0;
 };
 
 using Dims = std::vector<std::pair<std::string, uint64_t>>;
@@ -101,14 +93,12 @@ struct Header {
     uint64_t numRecs = 0;
     Dims dims;
     std::vector<Variable> vars;
-    size_t end = 0;  // first byte after the header
 
     bool isRecord(const Variable& v) const { return !v.dims.empty() && dims[v.dims[0]].second == 0; }
 };
 
-Header parseHeader(const Mapping& m, const std::string& path, int version) {
+Header parseHeader(Cursor& c, const std::string& path, int version) {
     Header h;
-    Cursor c(m, path, version);
     h.numRecs = c.count();
     if (h.numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) h.numRecs = 0;  // streaming
     uint64_t tag = c.u32(), n = c.count();
@@ -135,18 +125,17 @@ Header parseHeader(const Mapping& m, const std::string& path, int version) {
         skipAttributes(c, path);
         v.type = c.u32();
         if (typeSize(v.type) == 0) throw FormatError(path + ": variable '" + v.name + "' has an unknown type");
-        v.vsize = c.count();
+        c.count();  // vsize: recomputed from the dimensions below
         v.begin = c.offset();
         h.vars.push_back(std::move(v));
     }
-    h.end = c.pos();
     return h;
 }
 
 // Every variable's data inside the file (the netCDF library checks the header, not the
 // file's length). A record variable's first dimension is the unlimited one (length 0);
 // its numRecs records interleave with the other record variables'.
-void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
+void checkExtents(const Header& h, uint64_t fileSize, const std::string& path) {
     auto bytesPerRecord = [&](const Variable& v) {
         uint64_t b = typeSize(v.type);
         for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]].second, path);
@@ -164,32 +153,29 @@ void checkExtents(const Header& h, const Mapping& m, const std::string& path) {
         if (h.isRecord(v))
             end = h.numRecs == 0 ? v.begin
                                  : v.begin + mul(h.numRecs - 1, recordVars == 1 ? size : recordSize, path) + size;
-        if (end > m.size || end < v.begin)
+        if (end > fileSize || end < v.begin)
             throw FormatError(path + ": truncated Exodus II file: variable '" + v.name + "' needs " +
-                              std::to_string(end) + " bytes, the file has " + std::to_string(m.size));
+                              std::to_string(end) + " bytes, the file has " + std::to_string(fileSize));
     }
 }
 
 }  // namespace
 
 void checkExodusFile(const std::string& path) {
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
-    struct stat st {};
-    ::fstat(fd, &st);
-    Mapping m;
-    m.size = static_cast<size_t>(st.st_size);
-    void* p = m.size >= 8 ? ::mmap(nullptr, m.size, PROT_READ, MAP_PRIVATE, fd, 0) : MAP_FAILED;
-    ::close(fd);
-    if (p == MAP_FAILED) throw FormatError(path + ": not an Exodus II file (too short or unreadable)");
-    m.data = static_cast<const unsigned char*>(p);
-
-    if (std::memcmp(m.data, "\x89HDF\r\n\x1a\n", 8) == 0) return;  // netCDF-4: left to VTK
-    const int version = m.data[3];
-    if (std::memcmp(m.data, "CDF", 3) != 0 || (version != 1 && version != 2 && version != 5))
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(path, ec);
+    char magic[8] = {};
+    if (ec || size < 8 || !in.read(magic, 8))
+        throw FormatError(path + ": not an Exodus II file (too short or unreadable)");
+    if (std::memcmp(magic, "\x89HDF\r\n\x1a\n", 8) == 0) return;  // netCDF-4: left to VTK
+    const int version = magic[3];
+    if (std::memcmp(magic, "CDF", 3) != 0 || (version != 1 && version != 2 && version != 5))
         throw FormatError(path + ": not an Exodus II file (neither NetCDF nor HDF5)");
-    const Header header = parseHeader(m, path, version);
-    checkExtents(header, m, path);
+    in.seekg(4);
+    Cursor cursor(in, size, path, version);
+    checkExtents(parseHeader(cursor, path, version), size, path);
 }
 
 }  // namespace flowsurf::io::detail

@@ -3,6 +3,7 @@
 // are of the surface readDataset would produce for the first time step.
 #include "io/reader/file_inspect.h"
 
+#include "io/reader/reader_wire.h"
 #include "io/reader/surface_pipeline.h"
 #include "io/reader/vtk_messages.h"
 #include "io/reader/vtk_sources.h"
@@ -68,7 +69,7 @@ FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) 
     const std::map<std::string, std::string> units = arrayUnits(raw);
     for (auto& a : info.arrays)
         if (auto it = units.find(a.name); it != units.end()) a.units = it->second;
-    core::SurfaceMesh mesh = readSurfaceMesh(raw, trap, stepLabel(path, *source, 0));
+    core::SurfaceMesh mesh = readSurfaceMesh(raw, trap, wire::stepLabel(path, source->times(), 0));
     info.points = mesh.vertexCount();
     info.triangles = mesh.triangleCount();
     info.bounds = mesh.bounds();

@@ -1,7 +1,7 @@
 // Legacy layout (www.vtk.org/VTK/img/file-formats.pdf): 4 header lines, then keywords
 // with their counts, each followed by data: ASCII tokens, or big-endian binary that
 // starts on the next line.
-#include "io/reader/legacy_check.h"
+#include "io/reader/checks.h"
 
 #include "core/errors.h"
 
@@ -23,19 +23,6 @@ std::string upper(std::string s) {
 
 // VTK compares only a keyword's length ("CELLS\x1c30" is CELLS to it), so do we.
 bool is(const std::string& token, const char* keyword) { return token.rfind(keyword, 0) == 0; }
-
-// Bytes per value in BINARY files; 0 for types this check does not skip.
-size_t binaryWidth(const std::string& type) {
-    const std::string t = upper(type);
-    if (t == "UNSIGNED_CHAR" || t == "CHAR" || t == "SIGNED_CHAR") return 1;
-    if (t == "SHORT" || t == "UNSIGNED_SHORT") return 2;
-    if (t == "INT" || t == "UNSIGNED_INT" || t == "FLOAT" || t == "VTKIDTYPE" || t == "VTKTYPEINT32" ||
-        t == "VTKTYPEUINT32")
-        return 4;
-    if (t == "LONG" || t == "UNSIGNED_LONG" || t == "DOUBLE" || t == "VTKTYPEINT64" || t == "VTKTYPEUINT64")
-        return 8;
-    return 0;
-}
 
 // What `istream >> int` / `>> float` accept in full; VTK's reader loses its place (and
 // later crashes) on anything else, "nan" and ".9" as an index included.
@@ -104,10 +91,14 @@ public:
     // skipped here). Anything else is refused: VTK matches type names by prefix, so a
     // garbled "float\xdd0" would shift every later count.
     size_t dataType(const std::string& section) {
-        const std::string type = word(section);
-        if (size_t width = binaryWidth(type)) return width;
-        const std::string t = upper(type);
-        if (t == "STRING" || t == "UTF8_STRING" || t == "BIT" || t == "VARIANT") return 0;
+        static const std::pair<const char*, size_t> kTypes[] = {
+            {"UNSIGNED_CHAR", 1}, {"CHAR", 1}, {"SIGNED_CHAR", 1}, {"SHORT", 2}, {"UNSIGNED_SHORT", 2},
+            {"INT", 4}, {"UNSIGNED_INT", 4}, {"FLOAT", 4}, {"VTKIDTYPE", 4}, {"VTKTYPEINT32", 4},
+            {"VTKTYPEUINT32", 4}, {"LONG", 8}, {"UNSIGNED_LONG", 8}, {"DOUBLE", 8}, {"VTKTYPEINT64", 8},
+            {"VTKTYPEUINT64", 8}, {"STRING", 0}, {"UTF8_STRING", 0}, {"BIT", 0}, {"VARIANT", 0}};
+        const std::string type = word(section), upperType = upper(type);
+        for (const auto& [name, width] : kTypes)
+            if (upperType == name) return width;
         throw FormatError(path_ + ": VTK legacy " + section + " has an unknown data type '" + shown(type) + "'");
     }
 

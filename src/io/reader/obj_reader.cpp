@@ -1,4 +1,4 @@
-#include "io/reader/obj_reader.h"
+#include "io/reader/parsers.h"
 
 #include "core/errors.h"
 
@@ -6,6 +6,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>
@@ -20,14 +21,12 @@ namespace {
 
 // Splits a line into whitespace-separated words (views into `line`).
 std::vector<std::string_view> words(std::string_view line) {
+    constexpr std::string_view kSpace = " \t\r";
     std::vector<std::string_view> out;
-    size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-        size_t j = i;
-        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-        if (j > i) out.push_back(line.substr(i, j - i));
-        i = j;
+    for (size_t i = line.find_first_not_of(kSpace); i != std::string_view::npos;) {
+        const size_t end = std::min(line.find_first_of(kSpace, i), line.size());
+        out.push_back(line.substr(i, end - i));
+        i = line.find_first_not_of(kSpace, end);
     }
     return out;
 }

@@ -1,5 +1,10 @@
+// OpenFOAM cases through VTK's reader: the boundary patches (--patches) of a reconstructed
+// case or of a decomposed one (processor* directories, --foam-case), every time directory a
+// step (0/ included), points re-read for time directories that have polyMesh/points (moving
+// meshes), and each field's units from its `dimensions` (VTK's "m/s" notation, kept on the
+// arrays as UNITS_LABEL).
 // Sections: case layout · units and VTK's warnings · the source · openOpenFoam.
-#include "io/reader/openfoam_source.h"
+#include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
 #include "io/reader/surface_pipeline.h"
@@ -74,7 +79,35 @@ fs::path caseDir(const std::string& casePath) {
     return dir.empty() ? fs::path(".") : dir;
 }
 
+// Which layout `--foam-case auto` reads: the decomposed one when processor* directories
+// exist and the case folder has no mesh or fewer time directories than processor0 (a
+// case run in parallel and not, or only partly, reconstructed); else the reconstructed.
+bool readsDecomposed(const std::string& casePath, const std::string& choice) {
+    if (choice != "auto" && choice != "reconstructed" && choice != "decomposed")
+        throw ConfigError("--foam-case: '" + choice + "' is not one of auto, reconstructed, decomposed");
+    if (choice == "reconstructed") return false;
+    const fs::path dir = caseDir(casePath);
+    const std::vector<fs::path> procs = processorDirs(dir);
+    if (choice == "decomposed") {
+        if (procs.empty())
+            throw ConfigError(casePath + ": --foam-case decomposed: no processor* directories in " + dir.string());
+        return true;
+    }
+    if (procs.empty()) return false;
+    return !hasMesh(dir) || countTimeDirs(procs.front()) > countTimeDirs(dir);
+}
+
 // --- units and VTK's warnings -----------------------------------------------------------
+
+// "U [m/s]" -> "U" with units "m/s" (AddDimensionsToArrayNames' suffix); false when the
+// name carries no such suffix.
+bool splitUnitsSuffix(const std::string& name, std::string& bare, std::string& units) {
+    const size_t open = name.rfind(" [");
+    if (open == std::string::npos || open == 0 || name.back() != ']') return false;
+    bare = name.substr(0, open);
+    units = name.substr(open + 2, name.size() - open - 3);
+    return true;
+}
 
 // Moves AddDimensionsToArrayNames' " [m/s]" suffix of every array into the array's
 // UNITS_LABEL. The arrays are replaced by renamed shallow copies in a copied tree: the
@@ -137,9 +170,7 @@ void warnMissingPatchEntries(const std::vector<std::string>& warnings, const std
 // and the units moved from the array names to the labels.
 class OpenFoamSource final : public AlgorithmSource {
 public:
-    OpenFoamSource(vtkSmartPointer<vtkOpenFOAMReader> reader, std::string path, std::string format,
-                   VtkMessageTrap& trap)
-        : AlgorithmSource(reader, std::move(path), std::move(format), trap) {}
+    using AlgorithmSource::AlgorithmSource;
 
 protected:
     void afterUpdate(VtkMessageTrap& trap) override { warnMissingPatchEntries(trap.warnings(), path()); }
@@ -175,35 +206,12 @@ void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::str
 
 }  // namespace
 
-bool splitUnitsSuffix(const std::string& name, std::string& bare, std::string& units) {
-    const size_t open = name.rfind(" [");
-    if (open == std::string::npos || open == 0 || name.back() != ']') return false;
-    bare = name.substr(0, open);
-    units = name.substr(open + 2, name.size() - open - 3);
-    return true;
-}
-
-bool readsDecomposed(const std::string& casePath, const std::string& choice) {
-    if (choice != "auto" && choice != "reconstructed" && choice != "decomposed")
-        throw ConfigError("--foam-case: '" + choice + "' is not one of auto, reconstructed, decomposed");
-    if (choice == "reconstructed") return false;
-    const fs::path dir = caseDir(casePath);
-    const std::vector<fs::path> procs = processorDirs(dir);
-    if (choice == "decomposed") {
-        if (procs.empty())
-            throw ConfigError(casePath + ": --foam-case decomposed: no processor* directories in " + dir.string());
-        return true;
-    }
-    if (procs.empty()) return false;
-    return !hasMesh(dir) || countTimeDirs(procs.front()) > countTimeDirs(dir);
-}
-
 // --- openOpenFoam -------------------------------------------------------------------------
-std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options) {
-    const bool decomposed = readsDecomposed(path, options.foamCase);
+std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& caseFormat, VtkMessageTrap& trap,
+                                         const SourceOptions& options) {
     vtkSmartPointer<vtkOpenFOAMReader> r;
-    std::string format = "OpenFOAM case";
-    if (decomposed) {
+    std::string format = caseFormat;
+    if (readsDecomposed(path, options.foamCase)) {
         // One reader per processor directory, appended patch by patch; VTK's parallel
         // reader wants a controller even in one process.
         auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
@@ -224,14 +232,12 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, VtkMessageTrap
     // polyMesh/points are re-read (VTK compares the points' time instance per step).
     r->CacheMeshOn();
     trap.watch(r);
-    r->UpdateInformation();
-    trap.throwIfError(path, "cannot read " + format);
+    readInformation(r, path, format, trap);
     selectPatches(r, path, options.patches);
     r->EnableAllCellArrays();
     r->EnableAllPointArrays();
     r->DisableAllLagrangianArrays();
-    r->UpdateInformation();
-    trap.throwIfError(path, "cannot read " + format);
+    readInformation(r, path, format, trap);
     return std::make_unique<OpenFoamSource>(r, path, format, trap);
 }
 

@@ -1,5 +1,5 @@
 // Sections: scalar types · header · body values · readPly.
-#include "io/reader/ply_reader.h"
+#include "io/reader/parsers.h"
 
 #include "core/errors.h"
 
@@ -16,7 +16,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -28,39 +27,29 @@ namespace flowsurf::io::detail {
 namespace {
 
 // --- scalar types ----------------------------------------------------------------------
-enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+// Each PLY scalar type by its two names, its size in bytes and its kind.
+struct Scalar {
+    const char* names[2];
+    unsigned size;
+    char kind;  // 'i' signed integer, 'u' unsigned integer, 'f' IEEE floating point
+};
+constexpr Scalar kScalars[] = {
+    {{"char", "int8"}, 1, 'i'}, {{"uchar", "uint8"}, 1, 'u'},  {{"short", "int16"}, 2, 'i'},
+    {{"ushort", "uint16"}, 2, 'u'}, {{"int", "int32"}, 4, 'i'}, {{"uint", "uint32"}, 4, 'u'},
+    {{"float", "float32"}, 4, 'f'}, {{"double", "float64"}, 8, 'f'}};
 
-bool parseScalar(const std::string& name, Scalar& out) {
-    static const std::pair<const char*, Scalar> kNames[] = {
-        {"char", Scalar::Int8},     {"int8", Scalar::Int8},      {"uchar", Scalar::UInt8},
-        {"uint8", Scalar::UInt8},   {"short", Scalar::Int16},    {"int16", Scalar::Int16},
-        {"ushort", Scalar::UInt16}, {"uint16", Scalar::UInt16},  {"int", Scalar::Int32},
-        {"int32", Scalar::Int32},   {"uint", Scalar::UInt32},    {"uint32", Scalar::UInt32},
-        {"float", Scalar::Float32}, {"float32", Scalar::Float32}, {"double", Scalar::Float64},
-        {"float64", Scalar::Float64}};
-    for (const auto& [n, s] : kNames)
-        if (name == n) {
-            out = s;
-            return true;
-        }
-    return false;
-}
-
-size_t sizeOf(Scalar s) {
-    switch (s) {
-        case Scalar::Int8: case Scalar::UInt8: return 1;
-        case Scalar::Int16: case Scalar::UInt16: return 2;
-        case Scalar::Float64: return 8;
-        default: return 4;
-    }
+const Scalar* parseScalar(const std::string& name) {
+    for (const Scalar& s : kScalars)
+        if (name == s.names[0] || name == s.names[1]) return &s;
+    return nullptr;
 }
 
 // --- header ----------------------------------------------------------------------------
 struct Property {
     std::string name;
-    Scalar type = Scalar::Float32;
+    const Scalar* type = nullptr;
     bool isList = false;
-    Scalar countType = Scalar::UInt8;
+    const Scalar* countType = nullptr;
 };
 struct Element {
     std::string name;
@@ -111,10 +100,13 @@ Header parseHeader(const std::string& bytes, const std::string& path) {
             if (a == "list") {
                 p.isList = true;
                 line >> b >> c >> p.name;
-                if (!parseScalar(b, p.countType) || !parseScalar(c, p.type)) throw bad("unknown list types");
+                p.countType = parseScalar(b);
+                p.type = parseScalar(c);
+                if (!p.countType || !p.type) throw bad("unknown list types");
             } else {
                 line >> p.name;
-                if (!parseScalar(a, p.type)) throw bad("unknown property type '" + a + "'");
+                p.type = parseScalar(a);
+                if (!p.type) throw bad("unknown property type '" + a + "'");
             }
             if (p.name.empty()) throw bad("property without a name");
             h.elements.back().properties.push_back(p);
@@ -135,7 +127,7 @@ public:
         : bytes_(bytes), pos_(pos), encoding_(encoding) {}
 
     // False at the end of the data or on a token that is not a number.
-    bool read(Scalar type, double& value) {
+    bool read(const Scalar& type, double& value) {
         return encoding_ == Encoding::Ascii ? readAscii(value) : readBinary(type, value);
     }
     size_t remaining() const { return bytes_.size() - pos_; }
@@ -153,31 +145,20 @@ private:
         return true;
     }
 
-    template <class T>
-    double take() {
-        T v;
-        std::memcpy(&v, bytes_.data() + pos_, sizeof v);
-        const bool swap = (encoding_ == Encoding::BigEndian) != (std::endian::native == std::endian::big);
-        if (swap && sizeof v > 1) {
-            auto* b = reinterpret_cast<unsigned char*>(&v);
-            std::reverse(b, b + sizeof v);
+    // The bytes in the file's order, assembled as an unsigned value, then taken as the type.
+    bool readBinary(const Scalar& type, double& value) {
+        if (remaining() < type.size) return false;
+        uint64_t u = 0;
+        for (unsigned i = 0; i < type.size; ++i) {
+            const size_t at = pos_ + (encoding_ == Encoding::BigEndian ? type.size - 1 - i : i);
+            u |= uint64_t(static_cast<unsigned char>(bytes_[at])) << (8 * i);
         }
-        pos_ += sizeof v;
-        return static_cast<double>(v);
-    }
-
-    bool readBinary(Scalar type, double& value) {
-        if (remaining() < sizeOf(type)) return false;
-        switch (type) {
-            case Scalar::Int8: value = take<int8_t>(); break;
-            case Scalar::UInt8: value = take<uint8_t>(); break;
-            case Scalar::Int16: value = take<int16_t>(); break;
-            case Scalar::UInt16: value = take<uint16_t>(); break;
-            case Scalar::Int32: value = take<int32_t>(); break;
-            case Scalar::UInt32: value = take<uint32_t>(); break;
-            case Scalar::Float32: value = take<float>(); break;
-            case Scalar::Float64: value = take<double>(); break;
-        }
+        pos_ += type.size;
+        const unsigned bits = 8 * type.size;
+        if (type.kind == 'f')
+            value = type.size == 4 ? double(std::bit_cast<float>(uint32_t(u))) : std::bit_cast<double>(u);
+        else if (type.kind == 'i' && u >> (bits - 1)) value = double(int64_t(u) - (int64_t(1) << bits));
+        else value = double(u);
         return true;
     }
 
@@ -202,7 +183,7 @@ int indexOf(const Element& e, const char* name) {
 uint64_t minItemBytes(const Element& e, Encoding encoding) {
     uint64_t n = 0;
     for (const auto& p : e.properties)
-        n += encoding == Encoding::Ascii ? 2 : sizeOf(p.isList ? p.countType : p.type);
+        n += encoding == Encoding::Ascii ? 2 : (p.isList ? p.countType : p.type)->size;
     return n;
 }
 
@@ -232,18 +213,18 @@ void readElement(const Element& e, bool isVertex, Body& body, const std::string&
         for (size_t k = 0; k < e.properties.size(); ++k) {
             const Property& p = e.properties[k];
             if (!p.isList) {
-                if (!body.read(p.type, values[k])) throw fail(p, "truncated or not a number");
+                if (!body.read(*p.type, values[k])) throw fail(p, "truncated or not a number");
                 continue;
             }
             double count;
-            if (!body.read(p.countType, count)) throw fail(p, "truncated or not a number");
+            if (!body.read(*p.countType, count)) throw fail(p, "truncated or not a number");
             if (count < 0 || count != std::floor(count) || count > double(body.remaining()))
                 throw fail(p, "bad list length " + number(count));
             const bool keep = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
             ids.clear();
             for (uint64_t i = 0; i < uint64_t(count); ++i) {
                 double v;
-                if (!body.read(p.type, v)) throw fail(p, "truncated or not a number");
+                if (!body.read(*p.type, v)) throw fail(p, "truncated or not a number");
                 if (keep && (v < 0 || v != std::floor(v) || v > 9.0e15)) throw fail(p, "bad vertex index " + number(v));
                 if (keep) ids.push_back(static_cast<vtkIdType>(v));
             }

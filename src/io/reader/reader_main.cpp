@@ -25,61 +25,59 @@ namespace {
 
 // The open multi-step source of Open/Step requests.
 struct OpenSource {
-    std::string path;
     io::detail::VtkMessageTrap trap;
     std::unique_ptr<io::detail::StepSource> source;
 };
 
 // Answers one request into `out` (status Ok and the payload). Throws what the reader throws.
-bool answer(w::Op op, w::Reader& in, w::Writer& out, std::unique_ptr<OpenSource>& open) {
-    switch (op) {
+void answer(const w::Request& request, w::Writer& out, std::unique_ptr<OpenSource>& open) {
+    switch (request.op) {
         case w::Op::Open: {
-            std::string path = in.str();
-            io::SourceOptions options;
-            w::record(in, options);
             open.reset();  // one source at a time: the previous one's data goes first
             auto s = std::make_unique<OpenSource>();
-            s->path = path;
-            s->source = io::detail::openSource(path, s->trap, options);
-            out.u8(uint8_t(w::Status::Ok));
-            out.str(s->source->format());
-            out.field(s->source->times());
+            s->source = io::detail::openSource(request.path, s->trap, request.options);
+            out.field(w::Status::Ok);
+            const w::SourceInfo info{s->source->format(), s->source->times()};
+            w::record(out, info);
             open = std::move(s);
-            return true;
+            return;
         }
         case w::Op::Step: {
-            uint64_t i = in.u64();
-            if (!open || i >= open->source->stepCount()) throw FormatError("reader: step request out of range");
-            core::SurfaceMesh m = io::detail::readSurfaceMesh(open->source->readStep(size_t(i)), open->trap,
-                                                              io::detail::stepLabel(open->path, *open->source, i));
-            out.u8(uint8_t(w::Status::Ok));
+            if (!open || request.step >= open->source->stepCount())
+                throw FormatError("reader: step request out of range");
+            io::detail::StepSource& source = *open->source;
+            const size_t i = size_t(request.step);
+            const std::string label = w::stepLabel(source.path(), source.times(), i);
+            const core::SurfaceMesh m = io::detail::readSurfaceMesh(source.readStep(i), open->trap, label);
+            out.field(w::Status::Ok);
             w::record(out, m);
-            return true;
+            return;
         }
         case w::Op::Inspect: {
-            const std::string path = in.str();
-            io::SourceOptions options;
-            w::record(in, options);
-            const io::FileInfo info = io::detail::inspectFileHere(path, options);
-            out.u8(uint8_t(w::Status::Ok));
+            const io::FileInfo info = io::detail::inspectFileHere(request.path, request.options);
+            out.field(w::Status::Ok);
             w::record(out, info);
-            return true;
+            return;
         }
-        case w::Op::Quit: return false;
+        case w::Op::Quit: break;
     }
     throw FormatError("reader: unknown request");
 }
 
-void error(w::Writer& out, w::Status status, const char* what) {
-    out.u8(uint8_t(status));
-    out.str(what);
+// The status a reply carries for what the reader threw.
+w::Status statusOf(const std::exception& e) {
+    if (dynamic_cast<const IoError*>(&e)) return w::Status::IoError;
+    if (dynamic_cast<const FormatError*>(&e)) return w::Status::FormatError;
+    if (dynamic_cast<const FieldError*>(&e)) return w::Status::FieldError;
+    if (dynamic_cast<const ConfigError*>(&e)) return w::Status::ConfigError;
+    return w::Status::Other;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
-        sandbox::start(sandbox::parseArgs(argc, argv));
+        sandbox::start(argc, argv);
     } catch (const std::exception& e) {
         const std::string why = std::string("could not enter its sandbox: ") + e.what();
         [[maybe_unused]] ssize_t n = ::write(sandbox::kReasonFd, why.data(), why.size());
@@ -89,40 +87,28 @@ int main(int argc, char** argv) {
     w::Writer out(sandbox::kSocketFd);
     for (;;) {
         w::Reader in(sandbox::kSocketFd);
-        w::Op op;
+        w::Request request;
         try {
-            const uint64_t cpuSeconds = in.u64(), memoryMb = in.u64();
-            op = w::Op(in.u8());
-            sandbox::limitRequest(memoryMb, cpuSeconds);
+            w::record(in, request);
         } catch (const w::Broken&) {
             return 0;  // the library closed the socket
         }
+        if (request.op == w::Op::Quit) return 0;
+        sandbox::limitRequest(request.memoryMb, request.cpuSeconds);
         try {
-            if (!answer(op, in, out, open)) return 0;
-        } catch (const w::Broken&) {
-            return 0;
-        } catch (const IoError& e) {
-            error(out, w::Status::IoError, e.what());
-        } catch (const FormatError& e) {
-            error(out, w::Status::FormatError, e.what());
-        } catch (const FieldError& e) {
-            error(out, w::Status::FieldError, e.what());
-        } catch (const ConfigError& e) {
-            error(out, w::Status::ConfigError, e.what());
+            answer(request, out, open);
         } catch (const std::bad_alloc&) {
             const unsigned long long mb = sandbox::memoryLimitMb();
-            error(out, w::Status::Other,
-                  mb > 0 ? ("the reader needed more than " + std::to_string(mb) +
-                            " MiB (its memory limit for this input; FLOWSURF_READER_MEMORY_MB sets another)")
-                               .c_str()
-                         : "the reader ran out of memory");
+            out.field(w::Status::Other);
+            out.field(mb > 0 ? "the reader needed more than " + std::to_string(mb) +
+                                   " MiB (its memory limit for this input; FLOWSURF_READER_MEMORY_MB sets another)"
+                             : std::string("the reader ran out of memory"));
         } catch (const std::exception& e) {
-            error(out, w::Status::Other, e.what());
+            out.field(statusOf(e));
+            out.field(std::string(e.what()));
         }
         // Every reply ends with the warnings raised while answering.
-        const std::vector<std::string> warnings = io::detail::takeWarnings();
-        out.u64(warnings.size());
-        for (const auto& text : warnings) out.str(text);
+        out.field(io::detail::takeWarnings());
         if (!out.flush()) return 0;
     }
 }

@@ -55,10 +55,10 @@ ReaderBudget budgetFor(const std::string& path) {
     return b;
 }
 
-// Which variable sets another value, for messages.
-std::string overrideHint(bool fixed, const char* variable) {
-    return fixed ? std::string(variable)
-                 : std::string("its limit for this input's size; ") + variable + " sets another";
+// Which variable sets another time budget, for messages.
+std::string timeoutHint() {
+    return fixedSeconds() > 0 ? "FLOWSURF_READER_TIMEOUT_S"
+                              : "its limit for this input's size; FLOWSURF_READER_TIMEOUT_S sets another";
 }
 
 // Why the child ended, from its exit status and what it wrote to the reasons pipe.
@@ -68,8 +68,7 @@ std::string deathText(int status, const std::string& reason, const ReaderBudget&
             case SIGSYS:
                 return "was stopped by its sandbox: it " + (reason.empty() ? "made a forbidden system call" : reason);
             case SIGXCPU:
-                return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" +
-                       overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")";
+                return "used more than " + std::to_string(budget.cpuS) + " s of CPU (" + timeoutHint() + ")";
             case SIGSEGV:
             case SIGBUS:
             case SIGFPE:
@@ -99,9 +98,23 @@ bool isBelow(const std::string& path, const std::string& root) {
 
 // The reader's warnings that end every reply, printed as the library's own.
 void printWarnings(wire::Reader& r) {
-    for (uint64_t i = 0, n = r.count(1 << 16); i < n; ++i)
-        std::fprintf(stderr, "flowsurf: warning: %s\n", r.str().c_str());
+    for (const auto& text : r.get<std::vector<std::string>>())
+        std::fprintf(stderr, "flowsurf: warning: %s\n", text.c_str());
 }
+
+// Where flowsurf-reader is (reader_process.h); throws IoError if nowhere.
+std::string readerExecutable() {
+    if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
+    // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
+    for (const fs::path& dir : core::programDirs())
+        for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
+            if (access(p.c_str(), X_OK) == 0) return p.string();
+#ifdef FLOWSURF_READER_BUILD_PATH
+    if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
+#endif
+    throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
+}
+
 }  // namespace
 
 ReaderBudget readerBudget(unsigned long long inputBytes) {
@@ -140,18 +153,6 @@ unsigned long long readerInputBytes(const std::string& path) {
     return bytes;
 }
 
-std::string readerExecutable() {
-    if (const char* env = std::getenv("FLOWSURF_READER"); env && *env) return env;
-    // Next to the binary or library this code is linked into, or in ../libexec/flowsurf/.
-    for (const fs::path& dir : core::programDirs())
-        for (const fs::path& p : {dir / "flowsurf-reader", dir.parent_path() / "libexec/flowsurf/flowsurf-reader"})
-            if (access(p.c_str(), X_OK) == 0) return p.string();
-#ifdef FLOWSURF_READER_BUILD_PATH
-    if (access(FLOWSURF_READER_BUILD_PATH, X_OK) == 0) return FLOWSURF_READER_BUILD_PATH;
-#endif
-    throw IoError("cannot find flowsurf-reader (the process files are read in); set FLOWSURF_READER");
-}
-
 ReaderProcess::ReaderProcess()
     : exe_(readerExecutable()), memoryHardMb_(fixedMemoryMb() > 0 ? fixedMemoryMb() : defaultMemoryMb()) {
     if (sandbox::kSanitized) memoryHardMb_ = 0;
@@ -160,9 +161,8 @@ ReaderProcess::ReaderProcess()
 ReaderProcess::~ReaderProcess() {
     if (pid_ <= 0) return;
     wire::Writer w(fd_);
-    w.u64(0);
-    w.u64(0);
-    w.u8(uint8_t(wire::Op::Quit));
+    const wire::Request quit;
+    wire::record(w, quit);
     w.flush();
     reap(false);
 }
@@ -174,13 +174,12 @@ void ReaderProcess::ensureChild(const std::string& root) {
 }
 
 void ReaderProcess::spawn(const std::string& root) {
-    int sv[2], reasons[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
-        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
-    if (pipe2(reasons, O_CLOEXEC) != 0) {
-        close(sv[0]);
-        close(sv[1]);
-        throw IoError(std::string("cannot start the reader process: ") + std::strerror(errno));
+    int sv[2] = {-1, -1}, reasons[2] = {-1, -1};
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0 || pipe2(reasons, O_CLOEXEC) != 0) {
+        const int error = errno;
+        for (int fd : {sv[0], sv[1]})
+            if (fd >= 0) close(fd);
+        throw IoError(std::string("cannot start the reader process: ") + std::strerror(error));
     }
     fcntl(reasons[0], F_SETFL, O_NONBLOCK);
     posix_spawn_file_actions_t actions;
@@ -214,8 +213,8 @@ void ReaderProcess::spawn(const std::string& root) {
     lastStatus_ = 0;
 }
 
-std::string ReaderProcess::reap(bool kill) {
-    if (pid_ <= 0) return "is not running";
+void ReaderProcess::reap(bool kill) {
+    if (pid_ <= 0) return;
     if (kill) ::kill(pid_, SIGKILL);
     close(fd_);  // a child blocked on the socket sees the end of the stream
     fd_ = -1;
@@ -229,22 +228,20 @@ std::string ReaderProcess::reap(bool kill) {
     reasonFd_ = -1;
     lastStatus_ = status;
     lastReason_.assign(text, n > 0 ? size_t(n) : 0);
-    return lastReason_;
 }
 
-template <typename Send, typename Parse>
-auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse) {
+template <typename Reply>
+Reply ReaderProcess::call(const std::string& label, const ReaderBudget& budget, wire::Request request) {
+    request.cpuSeconds = uint64_t(budget.cpuS);
+    request.memoryMb = budget.memoryMb;
     wire::Writer w(fd_);
-    w.u64(uint64_t(budget.cpuS));  // the child's budgets for this request
-    w.u64(budget.memoryMb);
-    send(w);
-    const auto deadline = wire::Reader::Clock::now() + std::chrono::seconds(budget.wallS);
-    wire::Reader r(fd_, deadline);
+    wire::record(w, request);
+    wire::Reader r(fd_, wire::Reader::Clock::now() + std::chrono::seconds(budget.wallS));
     try {
         if (!w.flush()) throw wire::Broken{};
-        auto status = wire::Status(r.u8());
+        const auto status = r.get<wire::Status>();
         if (status != wire::Status::Ok) {
-            std::string what = r.str();
+            const auto what = r.get<std::string>();
             printWarnings(r);
             switch (status) {
                 case wire::Status::IoError: throw IoError(what);
@@ -254,101 +251,58 @@ auto ReaderProcess::call(const std::string& label, const ReaderBudget& budget, S
                 default: throw FormatError(label + ": " + what);
             }
         }
-        auto result = parse(r);
+        Reply reply;
+        wire::record(r, reply);
         printWarnings(r);
-        return result;
+        return reply;
     } catch (const wire::Broken& b) {
         // Killed on a timeout; otherwise the child died or spoke nonsense: stop it either way.
         reap(true);
-        const std::string why =
-            b.timedOut ? "took longer than " + std::to_string(budget.wallS) + " s (" +
-                             overrideHint(fixedSeconds() > 0, "FLOWSURF_READER_TIMEOUT_S") + ")"
-                       : deathText(lastStatus_, lastReason_, budget);
+        const std::string why = b.timedOut
+                                    ? "took longer than " + std::to_string(budget.wallS) + " s (" + timeoutHint() + ")"
+                                    : deathText(lastStatus_, lastReason_, budget);
         throw FormatError(label + ": the reader " + why + "; the file is malformed or not supported");
     }
 }
 
 core::Dataset ReaderProcess::readDataset(const std::string& path, size_t maxSteps) {
     std::lock_guard lock(mutex_);
-    const SourceInfo info = openLocked(path, {});
+    const SourceInfo info = open(path, {});
     const size_t steps = info.times.empty() ? 1 : info.times.size();
     core::Dataset dataset;
     dataset.source = path;
     for (size_t i = 0; i < (maxSteps > 0 ? std::min(steps, maxSteps) : steps); ++i) {
-        const std::string label =
-            steps == 1 ? path : path + " (time step " + std::to_string(i + 1) + " of " + std::to_string(steps) + ")";
-        dataset.steps.push_back({info.times.empty() ? 0.0 : info.times[i], readStepLocked(i, label)});
+        const double t = info.times.empty() ? 0.0 : info.times[i];
+        dataset.steps.push_back({t, readStep(i, wire::stepLabel(path, info.times, i))});
     }
     return dataset;
 }
 
 ReaderProcess::SourceInfo ReaderProcess::open(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
-    return openLocked(path, options);
-}
-
-ReaderProcess::SourceInfo ReaderProcess::openLocked(const std::string& path, const SourceOptions& options) {
     ensureChild(rootFor(path));
     openBudget_ = budgetFor(path);
-    lastOpen_.clear();  // the child drops its source before opening another
-    SourceInfo info = call(
-        path, openBudget_,
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Open));
-            w.str(path);
-            wire::record(w, options);
-        },
-        [](wire::Reader& r) {
-            SourceInfo s;
-            s.format = r.str();
-            r.field(s.times);
-            return s;
-        });
-    lastOpen_ = path;
-    lastOptions_ = options;
+    lastOpen_ = {};  // the child drops its source before opening another
+    const wire::Request request{wire::Op::Open, path, options, 0, 0, 0};
+    const auto info = call<SourceInfo>(path, openBudget_, request);
+    lastOpen_ = request;
     return info;
 }
 
 core::SurfaceMesh ReaderProcess::readStep(size_t index, const std::string& label) {
     std::lock_guard lock(mutex_);
-    return readStepLocked(index, label);
-}
-
-core::SurfaceMesh ReaderProcess::readStepLocked(size_t index, const std::string& label) {
-    if (pid_ <= 0 && !lastOpen_.empty()) {  // the child died: restore its source
-        const std::string path = lastOpen_;
-        const SourceOptions options = lastOptions_;
-        openLocked(path, options);
+    if (pid_ <= 0 && lastOpen_.op == wire::Op::Open) {  // the child died: restore its source
+        const wire::Request again = lastOpen_;
+        open(again.path, again.options);
     }
     ensureChild(root_);
-    return call(
-        label, openBudget_,
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Step));
-            w.u64(index);
-        },
-        [](wire::Reader& r) {
-            core::SurfaceMesh m;
-            wire::record(r, m);
-            return m;
-        });
+    return call<core::SurfaceMesh>(label, openBudget_, {wire::Op::Step, {}, {}, index, 0, 0});
 }
 
 FileInfo ReaderProcess::inspect(const std::string& path, const SourceOptions& options) {
     std::lock_guard lock(mutex_);
     ensureChild(rootFor(path));
-    return call(
-        path, budgetFor(path),
-        [&](wire::Writer& w) {
-            w.u8(uint8_t(wire::Op::Inspect));
-            w.str(path);
-            wire::record(w, options);
-        },
-        [](wire::Reader& r) {
-            FileInfo info;
-            wire::record(r, info);
-            return info;
-        });
+    return call<FileInfo>(path, budgetFor(path), {wire::Op::Inspect, path, options, 0, 0, 0});
 }
 
 }  // namespace flowsurf::io::detail

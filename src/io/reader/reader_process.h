@@ -1,24 +1,19 @@
 // flowsurf — files are read in a child process (private to src/io). VTK's readers (and
 // our PLY/OBJ parsers) run in `flowsurf-reader`, started with posix_spawn (never fork:
 // the step prefetch thread makes it unsafe) with only its socket and reasons pipe open,
-// inside a sandbox (sandbox.h: no network, no writes, no programs, reads only below the
-// input's folder) and, per request, budgets that grow with the input (readerBudget):
-// a wall-clock deadline kept here, CPU time and address space limited in the child. The
-// surface comes back over the socket. A crash, abort, hang, allocation bomb or refused
-// system call ends the child and becomes a one-line FormatError naming the file and what
-// was hit. One ReaderProcess serves many requests (a time series keeps its child alive);
-// a request below another folder gets a fresh child confined to that folder.
-//
-// Environment: FLOWSURF_READER (the executable; default: next to the library or program, in
-// its ../libexec/flowsurf/ (core/program_dirs.h), else the build tree's),
-// FLOWSURF_READER_MEMORY_MB (a fixed address-space limit instead of the size-based one),
-// FLOWSURF_READER_TIMEOUT_S (a fixed wall-clock and CPU budget in seconds per request
-// instead of the size-based ones), FLOWSURF_READER_SANDBOX=off (limits only; for
-// debugging). doc/reader_sandbox.md says more.
+// inside a sandbox (sandbox.h) and, per request, budgets that grow with the input
+// (readerBudget): a wall-clock deadline kept here, CPU time and address space limited in
+// the child. The surface comes back over the socket (reader_wire.h). A crash, abort, hang,
+// allocation bomb or refused system call ends the child and becomes a one-line FormatError
+// naming the file and what was hit. One ReaderProcess serves many requests (a time series
+// keeps its child alive); a request below another folder gets a fresh child confined to
+// that folder. The limits and the environment variables that set them, the executable
+// (FLOWSURF_READER) and FLOWSURF_READER_SANDBOX=off: doc/reader_sandbox.md.
 #pragma once
 
 #include "core/mesh.h"
 #include "io/dataset_reader.h"
+#include "io/reader/reader_wire.h"
 
 #include <sys/types.h>
 
@@ -28,15 +23,14 @@
 
 namespace flowsurf::io::detail {
 
-// What one request on an input of `inputBytes` may use. The wall clock (kept by the
-// library) is kReaderBaseS, for starting the child and a small file on a busy machine, plus
-// kReaderSecondsPerMb per MiB: the slowest reader measured (legacy ASCII .vtk, 70 MB in 9 s
-// on a loaded 2-core machine: 8 MB/s; ASCII EnSight 23 MB/s) is 4x faster than this
-// allows. CPU time: a second (the child rounds what it used so far up to whole seconds,
-// so a request gets between 1 and 2 s; small files need milliseconds) plus twice the wall
-// clock's allowance per MiB (VTK's filters run on several threads), so a small file that
-// spins a reader is stopped within two seconds of CPU. Address space: kReaderMemoryBaseMb
-// (the libraries, thread stacks and arenas; a small file needs under 400) plus
+// What one request on an input of `inputBytes` may use (doc/reader_sandbox.md has the
+// table). The wall clock (kept by the library) is kReaderBaseS, for starting the child and
+// a small file on a busy machine, plus kReaderSecondsPerMb per MiB: 4x what the slowest
+// reader measured needs (legacy ASCII .vtk, 70 MB in 9 s on a loaded 2-core machine). CPU
+// time: a second (the child rounds what it used so far up to whole seconds, so a small file
+// that spins a reader is stopped within two seconds) plus twice the wall clock's allowance
+// per MiB (VTK's filters run on several threads). Address space: kReaderMemoryBaseMb (the
+// libraries, thread stacks and arenas; a small file needs under 400) plus
 // kReaderMemoryPerMb per MiB, at most the hard limit (3/4 of physical memory). Times are
 // capped at a week (an unbounded folder).
 struct ReaderBudget {
@@ -63,30 +57,24 @@ public:
     core::Dataset readDataset(const std::string& path, size_t maxSteps);
     // Opens `path` as the child's current multi-step source: its format and times.
     // `options`: OpenFOAM's boundary patches and case layout.
-    struct SourceInfo {
-        std::string format;
-        std::vector<double> times;
-    };
+    using SourceInfo = wire::SourceInfo;
     SourceInfo open(const std::string& path, const SourceOptions& options = {});
     // Step `index` of the source opened last; `label` names it in errors.
     core::SurfaceMesh readStep(size_t index, const std::string& label);
     FileInfo inspect(const std::string& path, const SourceOptions& options = {});
 
 private:
-    // Sends a request, then parses the reply with `parse` (called with a wire::Reader
-    // after an Ok status); a typed error from the child is rethrown, a dead or hung
-    // child becomes a FormatError naming `label`.
-    template <typename Send, typename Parse>
-    auto call(const std::string& label, const ReaderBudget& budget, Send send, Parse parse);
+    // Sends `request` with `budget`, then reads a Reply; a typed error from the child is
+    // rethrown, a dead or hung child becomes a FormatError naming `label`.
+    template <typename Reply>
+    Reply call(const std::string& label, const ReaderBudget& budget, wire::Request request);
     // A running child confined to `root` (a running one elsewhere is ended first).
     void ensureChild(const std::string& root);
     void spawn(const std::string& root);
-    SourceInfo openLocked(const std::string& path, const SourceOptions& options);
-    core::SurfaceMesh readStepLocked(size_t index, const std::string& label);
-    // Ends the child (killing it if needed) and returns why it died, for messages.
-    std::string reap(bool kill);
+    // Ends the child (killing it if needed); how it ended goes to lastStatus_ and lastReason_.
+    void reap(bool kill);
 
-    std::mutex mutex_;  // the prefetch thread and the caller share a child
+    std::recursive_mutex mutex_;  // the prefetch thread and the caller share a child
     std::string exe_;
     pid_t pid_ = -1;
     int fd_ = -1, reasonFd_ = -1;  // the socket; the reasons pipe's read end
@@ -95,15 +83,11 @@ private:
     std::string lastReason_;
     unsigned long long memoryHardMb_ = 0;
     ReaderBudget openBudget_;  // of the source opened last, for its step requests
-    std::string lastOpen_;    // re-opened after a restart, with these options
-    SourceOptions lastOptions_;
+    wire::Request lastOpen_;   // re-opened after a restart (none: op Quit)
 };
 
 // What a request on `path` may read: the file's size, and for formats whose file names
 // others (.case, .pvd, an OpenFOAM case's .foam) everything in its folder and below.
 unsigned long long readerInputBytes(const std::string& path);
-
-// Where flowsurf-reader is (see above); throws IoError if nowhere.
-std::string readerExecutable();
 
 }  // namespace flowsurf::io::detail

@@ -6,28 +6,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <sstream>
 
 namespace flowsurf::io::wire {
 
-void Writer::raw(const void* data, size_t bytes) {
-    const char* p = static_cast<const char*>(data);
-    buf_.insert(buf_.end(), p, p + bytes);
-    if (buf_.size() > (size_t(1) << 20)) flush();
-}
-
-void Writer::str(const std::string& s) {
-    u64(s.size());
-    raw(s.data(), s.size());
-}
-
-void Writer::field(const std::map<std::string, std::string>& m) {
-    u64(m.size());
-    for (const auto& [key, value] : m) {
-        str(key);
-        str(value);
-    }
-}
-
+template <>
 bool Writer::flush() {
     size_t done = 0;
     bool ok = true;
@@ -44,6 +27,14 @@ bool Writer::flush() {
     return ok;
 }
 
+template <>
+void Writer::raw(const void* data, size_t bytes) {
+    const char* p = static_cast<const char*>(data);
+    buf_.insert(buf_.end(), p, p + bytes);
+    if (buf_.size() > (size_t(1) << 20)) flush();
+}
+
+template <>
 void Reader::raw(void* data, size_t bytes) {
     char* p = static_cast<char*>(data);
     while (bytes > 0) {
@@ -64,32 +55,11 @@ void Reader::raw(void* data, size_t bytes) {
     }
 }
 
-uint8_t Reader::u8() {
-    uint8_t v;
-    raw(&v, 1);
-    return v;
-}
-uint64_t Reader::u64() {
-    uint64_t v;
-    raw(&v, 8);
-    return v;
-}
-uint64_t Reader::count(uint64_t limit) {
-    uint64_t n = u64();
-    if (n > limit) throw Broken{};
-    return n;
-}
-std::string Reader::str() {
-    std::string s(size_t(count(kMaxBytes)), '\0');
-    raw(s.data(), s.size());
-    return s;
-}
-
-void Reader::field(std::map<std::string, std::string>& m) {
-    for (uint64_t i = 0, n = count(1 << 20); i < n; ++i) {
-        std::string key = str();
-        m[key] = str();
-    }
+std::string stepLabel(const std::string& path, const std::vector<double>& times, size_t index) {
+    if (times.size() <= 1) return path;
+    std::ostringstream s;
+    s << path << " (time step " << index + 1 << " of " << times.size() << ", t = " << times[index] << ")";
+    return s.str();
 }
 
 }  // namespace flowsurf::io::wire

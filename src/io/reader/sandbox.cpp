@@ -32,9 +32,8 @@ void setLimit(int resource, rlim_t soft, rlim_t hard) {
     setrlimit(resource, &r);
 }
 
-}  // namespace
-
 // --- limits ----------------------------------------------------------------------------
+// The address space's hard limit: 0 leaves none (AddressSanitizer's shadow memory needs it).
 void limitProcess(unsigned long long memoryHardMb) {
     setLimit(RLIMIT_CORE, 0, 0);
     setLimit(RLIMIT_FSIZE, 0, 0);  // a write to any regular file fails (EFBIG)
@@ -46,21 +45,23 @@ void limitProcess(unsigned long long memoryHardMb) {
     if (memoryHardMb > 0) setLimit(RLIMIT_AS, rlim_t(memoryHardMb) << 20, rlim_t(memoryHardMb) << 20);
 }
 
+}  // namespace
+
 void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds) {
-    rlimit r{};
-    if (memoryMb > 0 && getrlimit(RLIMIT_AS, &r) == 0) {
-        r.rlim_cur = rlim_t(memoryMb) << 20;
-        if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
-        setrlimit(RLIMIT_AS, &r);
-    }
-    if (cpuSeconds > 0 && getrlimit(RLIMIT_CPU, &r) == 0) {
+    // Soft limits, at most the hard ones.
+    const auto setSoft = [](int resource, rlim_t value) {
+        rlimit r{};
+        if (getrlimit(resource, &r) != 0) return;
+        r.rlim_cur = r.rlim_max != RLIM_INFINITY && value > r.rlim_max ? r.rlim_max : value;
+        setrlimit(resource, &r);
+    };
+    if (memoryMb > 0) setSoft(RLIMIT_AS, rlim_t(memoryMb) << 20);
+    if (cpuSeconds > 0) {
         rusage u{};
         getrusage(RUSAGE_SELF, &u);
         const long usedUs =
             (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1000000L + u.ru_utime.tv_usec + u.ru_stime.tv_usec;
-        r.rlim_cur = rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds);  // used, rounded up, + budget
-        if (r.rlim_max != RLIM_INFINITY && r.rlim_cur > r.rlim_max) r.rlim_cur = r.rlim_max;
-        setrlimit(RLIMIT_CPU, &r);
+        setSoft(RLIMIT_CPU, rlim_t((usedUs + 999999) / 1000000) + rlim_t(cpuSeconds));  // used, rounded up, + budget
     }
 }
 
@@ -230,39 +231,27 @@ void installFilter() {
 
 }  // namespace
 
-void enter(const std::string& root) {
-    landlock(root);
-    installFilter();
-}
-
-const std::string& readableRoot() { return gReadableRoot; }
-
-bool isOutsideReadableRoot(const std::string& path) {
-    if (gReadableRoot.empty()) return false;
+std::string rootExcluding(const std::string& path) {
+    if (gReadableRoot.empty()) return {};
     std::error_code ec;
     const std::filesystem::path rel = std::filesystem::weakly_canonical(path, ec).lexically_relative(gReadableRoot);
-    return ec || rel.empty() || *rel.begin() == "..";
-}
-
-bool disabledByEnvironment() {
-    const char* v = std::getenv("FLOWSURF_READER_SANDBOX");
-    return v && (std::strcmp(v, "off") == 0 || std::strcmp(v, "0") == 0);
+    return ec || rel.empty() || *rel.begin() == ".." ? gReadableRoot : std::string();
 }
 
 // --- start -----------------------------------------------------------------------------
-ChildArgs parseArgs(int argc, char** argv) {
-    ChildArgs args;
+void start(int argc, char** argv) {
+    unsigned long long memoryHardMb = 0;
+    std::string root;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i];
-        if (key == "--memory-mb") args.memoryHardMb = std::strtoull(argv[i + 1], nullptr, 10);
-        else if (key == "--root") args.root = argv[i + 1];
+        if (key == "--memory-mb") memoryHardMb = std::strtoull(argv[i + 1], nullptr, 10);
+        else if (key == "--root") root = argv[i + 1];
     }
-    return args;
-}
-
-void start(const ChildArgs& args) {
-    limitProcess(args.memoryHardMb);
-    if (!disabledByEnvironment()) enter(args.root);
+    limitProcess(memoryHardMb);
+    const char* off = std::getenv("FLOWSURF_READER_SANDBOX");  // "off" or "0": limits only, for debugging
+    if (off && (std::strcmp(off, "off") == 0 || std::strcmp(off, "0") == 0)) return;
+    landlock(root);
+    installFilter();
 }
 
 }  // namespace flowsurf::io::sandbox

@@ -24,35 +24,21 @@ constexpr bool kSanitized = __has_feature(address_sanitizer);
 constexpr bool kSanitized = false;
 #endif
 
-// The command line the library starts the child with: --memory-mb N --root DIR.
-struct ChildArgs {
-    unsigned long long memoryHardMb = 0;  // the address space's hard limit; 0: none
-    std::string root;                     // the folder the child may read below
-};
-ChildArgs parseArgs(int argc, char** argv);
+// The whole setup, from the command line the library starts the child with (--memory-mb
+// N: the address space's hard limit, 0 for none; --root DIR: the folder the child may read
+// below), in order: no core dumps, no file written (RLIMIT_FSIZE 0), few descriptors and
+// the hard limit; then (unless FLOWSURF_READER_SANDBOX=off) Landlock below the root (where
+// the kernel has it) and the system-call filter. Call once the readers' libraries are
+// loaded and initialised. Throws std::runtime_error if the filter cannot be installed.
+void start(int argc, char** argv);
 
-// The whole setup, in order: limitProcess, then (unless FLOWSURF_READER_SANDBOX=off)
-// enter. Call once the readers' libraries are loaded and initialised. Throws
-// std::runtime_error if the filter cannot be installed.
-void start(const ChildArgs& args);
-
-// No core dumps, no file written (RLIMIT_FSIZE 0), few descriptors, and the address
-// space's hard limit (0: none, as under AddressSanitizer, whose shadow memory needs it).
-void limitProcess(unsigned long long memoryHardMb);
 // Per request: the soft address-space limit (clamped to the hard one; 0 leaves it) and
 // `cpuSeconds` more CPU time than used so far (RLIMIT_CPU counts the process's life).
 void limitRequest(unsigned long long memoryMb, unsigned long long cpuSeconds);
 // The soft address-space limit in MiB, for messages (0: none).
 unsigned long long memoryLimitMb();
 
-// Landlock below `root` (skipped where the kernel lacks it), then the system-call filter.
-void enter(const std::string& root);
-// The folder Landlock confines reading to (empty when it does not), and whether `path`
-// lies outside it.
-const std::string& readableRoot();
-bool isOutsideReadableRoot(const std::string& path);
-
-// FLOWSURF_READER_SANDBOX=off: limits only, no Landlock, no filter (for debugging).
-bool disabledByEnvironment();
+// The folder Landlock confines reading to when `path` lies outside it; else empty.
+std::string rootExcluding(const std::string& path);
 
 }  // namespace flowsurf::io::sandbox

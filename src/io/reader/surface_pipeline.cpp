@@ -2,8 +2,9 @@
 #include "io/reader/surface_pipeline.h"
 
 #include "core/errors.h"
-#include "io/reader/dataset_check.h"
+#include "io/reader/checks.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -31,10 +32,6 @@ namespace flowsurf::io::detail {
 
 // --- leaves -------------------------------------------------------------------
 
-void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit) {
-    forEachNamedLeaf(data, [&](vtkDataSet* ds, const std::string&) { visit(ds); });
-}
-
 void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*, const std::string&)>& visit) {
     if (auto* ds = vtkDataSet::SafeDownCast(data)) {
         if (ds->GetNumberOfPoints() > 0) visit(ds, "");
@@ -57,15 +54,19 @@ void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*,
 
 namespace {
 
-vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, VtkMessageTrap& trap,
-                                       const std::string& where) {
+// Runs `filter` (its input set) watched by `trap`; its output, or a FormatError "WHERE: WHAT: why".
+vtkSmartPointer<vtkPolyData> run(vtkAlgorithm* filter, VtkMessageTrap& trap, const std::string& where, const char* what) {
+    trap.watch(filter);
+    filter->Update();
+    trap.throwIfError(where, what);
+    return vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+}
+
+vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, VtkMessageTrap& trap, const std::string& where) {
     if (auto* pd = vtkPolyData::SafeDownCast(data)) return pd;
     auto filter = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    trap.watch(filter);
     filter->SetInputData(data);
-    filter->Update();
-    trap.throwIfError(where, "cannot extract the surface");
-    return filter->GetOutput();
+    return run(filter, trap, where, "cannot extract the surface");
 }
 
 // VTK's append keeps only arrays present in every block; a CFD field written on some
@@ -119,11 +120,8 @@ vtkSmartPointer<vtkPolyData> mergeBlocks(std::vector<vtkSmartPointer<vtkPolyData
     padPartialArrays(parts, names, where);
     // Only arrays present in every block survive the append (VTK's rule).
     auto append = vtkSmartPointer<vtkAppendPolyData>::New();
-    trap.watch(append);
     for (const auto& p : parts) append->AddInputData(p);
-    append->Update();
-    trap.throwIfError(where, "cannot merge the blocks");
-    return append->GetOutput();
+    return run(append, trap, where, "cannot merge the blocks");
 }
 
 // The name of the normals array, if any: "Normals", else the active normals.
@@ -164,16 +162,12 @@ bool hasNonFinite(vtkDataArray* a) {
     return false;
 }
 
-vtkSmartPointer<vtkPolyData> cellToPoint(vtkPolyData* data, VtkMessageTrap& trap,
-                                         const std::string& where) {
+vtkSmartPointer<vtkPolyData> cellToPoint(vtkPolyData* data, VtkMessageTrap& trap, const std::string& where) {
     if (data->GetCellData()->GetNumberOfArrays() == 0) return data;
     auto filter = vtkSmartPointer<vtkCellDataToPointData>::New();
-    trap.watch(filter);
     filter->SetInputData(data);
     filter->PassCellDataOff();
-    filter->Update();
-    trap.throwIfError(where, "cannot convert cell data to point data");
-    vtkSmartPointer<vtkPolyData> out = filter->GetPolyDataOutput();
+    vtkSmartPointer<vtkPolyData> out = run(filter, trap, where, "cannot convert cell data to point data");
     vtkCellData* cd = data->GetCellData();
     for (int i = 0; i < cd->GetNumberOfArrays(); ++i) {
         vtkDataArray* a = cd->GetArray(i);
@@ -189,24 +183,17 @@ vtkSmartPointer<vtkPolyData> cellToPoint(vtkPolyData* data, VtkMessageTrap& trap
     return out;
 }
 
-vtkSmartPointer<vtkPolyData> triangulate(vtkPolyData* data, VtkMessageTrap& trap,
-                                         const std::string& where) {
+vtkSmartPointer<vtkPolyData> triangulate(vtkPolyData* data, VtkMessageTrap& trap, const std::string& where) {
     auto filter = vtkSmartPointer<vtkTriangleFilter>::New();
-    trap.watch(filter);
     filter->SetInputData(data);
     filter->PassVertsOff();
     filter->PassLinesOff();
-    filter->Update();
-    trap.throwIfError(where, "cannot triangulate");
-    return filter->GetOutput();
+    return run(filter, trap, where, "cannot triangulate");
 }
 
-}  // namespace
-
-vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
-                                            const std::string& where) {
+// Stages 1–5. Point arrays win over converted cell arrays of the same name.
+vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap, const std::string& where) {
     VtkMessageTrap::Active active(trap);
-    trap.clear();
     // (1) check, (2) surface per block
     std::vector<vtkSmartPointer<vtkPolyData>> parts;
     std::vector<std::string> names;
@@ -229,8 +216,6 @@ vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap&
 
 // --- copy into core::SurfaceMesh --------------------------------------------------------------
 
-namespace {
-
 std::vector<glm::vec3> copyVectors(vtkDataArray* a) {
     std::vector<glm::vec3> v(static_cast<size_t>(a->GetNumberOfTuples()));
     double t[3];
@@ -252,19 +237,15 @@ std::vector<glm::vec3> usableNormals(vtkDataArray* a) {
     return n;
 }
 
-}  // namespace
-
+// Stage 6: positions, triangles, normals ("Normals" or the active normals, dropped if
+// any is zero or non-finite), every other 3-component point array as a field and every
+// 1-component point array (converted cell arrays included) as a scalar.
 core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where) {
     core::SurfaceMesh mesh;
     const vtkIdType points = surface->GetNumberOfPoints();
     if (points > static_cast<vtkIdType>(std::numeric_limits<uint32_t>::max()))
         throw FormatError(where + ": " + std::to_string(points) + " points is more than 32-bit indices allow");
-    mesh.positions.resize(static_cast<size_t>(points));
-    double p[3];
-    for (vtkIdType i = 0; i < points; ++i) {
-        surface->GetPoint(i, p);
-        mesh.positions[static_cast<size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
-    }
+    if (points > 0) mesh.positions = copyVectors(surface->GetPoints()->GetData());
 
     vtkCellArray* polys = surface->GetPolys();
     mesh.triangles.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
@@ -296,6 +277,8 @@ core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where) 
     return mesh;
 }
 
+}  // namespace
+
 std::map<std::string, std::string> arrayUnits(vtkDataObject* data) {
     std::map<std::string, std::string> units;
     auto collect = [&units](vtkFieldData* fd) {
@@ -305,15 +288,14 @@ std::map<std::string, std::string> arrayUnits(vtkDataObject* data) {
                 units[a->GetName()] = a->GetInformation()->Get(vtkDataArray::UNITS_LABEL());
         }
     };
-    forEachLeaf(data, [&](vtkDataSet* ds) {
+    forEachNamedLeaf(data, [&](vtkDataSet* ds, const std::string&) {
         collect(ds->GetPointData());
         collect(ds->GetCellData());
     });
     return units;
 }
 
-core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap,
-                                  const std::string& where) {
+core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap, const std::string& where) {
     vtkSmartPointer<vtkPolyData> surface = extractSurface(data, trap, where);
     core::SurfaceMesh mesh = toSurfaceMesh(surface, where);
     mesh.units = arrayUnits(data);

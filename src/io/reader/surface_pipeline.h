@@ -7,38 +7,24 @@
 #include "core/mesh.h"
 #include "io/reader/vtk_messages.h"
 
-#include <vtkSmartPointer.h>
-
 #include <functional>
 #include <map>
 #include <string>
 
 class vtkDataObject;
 class vtkDataSet;
-class vtkPolyData;
 
 namespace flowsurf::io::detail {
 
-// Calls `visit` for every non-empty data set: `data` itself or the leaves of a composite.
-void forEachLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit);
-// The same with each block's name (an OpenFOAM patch name; "block N" when unnamed).
+// Calls `visit` for every non-empty data set, `data` itself or the leaves of a composite,
+// with its block's name (an OpenFOAM patch name; "block N" when unnamed; empty for `data`).
 void forEachNamedLeaf(vtkDataObject* data, const std::function<void(vtkDataSet*, const std::string&)>& visit);
 
 // The units of the arrays of `data`'s leaves (their UNITS_LABEL, set by the OpenFOAM
 // source from the fields' dimensions), by array name.
 std::map<std::string, std::string> arrayUnits(vtkDataObject* data);
 
-// Stages 1–5. Point arrays win over converted cell arrays of the same name.
-vtkSmartPointer<vtkPolyData> extractSurface(vtkDataObject* data, VtkMessageTrap& trap,
-                                            const std::string& where);
-
-// Stage 6: positions, triangles, normals ("Normals" or the active normals, dropped if
-// any is zero or non-finite), every other 3-component point array as a field and every
-// 1-component point array (converted cell arrays included) as a scalar.
-core::SurfaceMesh toSurfaceMesh(vtkPolyData* surface, const std::string& where);
-
 // All stages, validation included; the mesh's fields carry arrayUnits(data).
-core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap,
-                                  const std::string& where);
+core::SurfaceMesh readSurfaceMesh(vtkDataObject* data, VtkMessageTrap& trap, const std::string& where);
 
 }  // namespace flowsurf::io::detail

@@ -37,10 +37,10 @@ public:
     void DisplayText(const char*) override {}
     void DisplayDebugText(const char*) override {}
     void DisplayErrorText(const char* text) override {
-        if (VtkMessageTrap* trap = trapHere()) trap->addError(text);
+        if (VtkMessageTrap* trap = trapHere()) trap->add(true, text);
     }
     void DisplayWarningText(const char* text) override {
-        if (VtkMessageTrap* trap = trapHere()) trap->addWarning(text);
+        if (VtkMessageTrap* trap = trapHere()) trap->add(false, text);
     }
     void DisplayGenericWarningText(const char* text) override { DisplayWarningText(text); }
 };
@@ -56,8 +56,7 @@ bool isExecutiveFailure(const std::string& message) {
 void onVtkEvent(vtkObject*, unsigned long eventId, void* clientData, void* callData) {
     auto* trap = static_cast<VtkMessageTrap*>(clientData);
     const char* text = static_cast<const char*>(callData);
-    if (eventId == vtkCommand::ErrorEvent) trap->addError(text);
-    else trap->addWarning(text);
+    trap->add(eventId == vtkCommand::ErrorEvent, text);
 }
 
 std::string trim(const std::string& s) {
@@ -101,8 +100,7 @@ bool signalsBadData(const std::string& message) {
     return false;
 }
 
-}  // namespace
-
+// "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
 std::string cleanVtkMessage(const char* text) {
     std::string s = text ? text : "";
     // Drop the "ERROR: In FILE, line N" (or "Warning: In ...") source location line.
@@ -122,6 +120,8 @@ std::string cleanVtkMessage(const char* text) {
     return printable(trim(s));
 }
 
+}  // namespace
+
 VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : previous_(gTrap) {
     static const bool installed = [] {
         vtkOutputWindow::SetInstance(vtkSmartPointer<CapturingOutputWindow>::New());
@@ -131,6 +131,8 @@ VtkMessageTrap::Active::Active(VtkMessageTrap& trap) : previous_(gTrap) {
     (void)installed;
     gTrap = &trap;
     gTrapThread = std::this_thread::get_id();
+    trap.errors_.clear();
+    trap.warnings_.clear();
 }
 
 VtkMessageTrap::Active::~Active() { gTrap = previous_; }
@@ -156,21 +158,11 @@ void VtkMessageTrap::watch(vtkObject* object) {
     if (auto* algorithm = vtkAlgorithm::SafeDownCast(object)) watch(algorithm->GetExecutive());
 }
 
-void VtkMessageTrap::addError(const char* text) {
-    std::string s = cleanVtkMessage(text);
-    errors_.push_back(s.empty() ? std::string("unspecified VTK error") : s);
-}
-
-void VtkMessageTrap::addWarning(const char* text) {
-    std::string s = cleanVtkMessage(text);
-    if (s.empty()) return;
-    if (signalsBadData(s)) errors_.push_back(s);
-    else warnings_.push_back(s);
-}
-
-void VtkMessageTrap::clear() {
-    errors_.clear();
-    warnings_.clear();
+void VtkMessageTrap::add(bool error, const char* text) {
+    const std::string s = cleanVtkMessage(text);
+    if (error) errors_.push_back(s.empty() ? std::string("unspecified VTK error") : s);
+    else if (signalsBadData(s)) errors_.push_back(s);
+    else if (!s.empty()) warnings_.push_back(s);
 }
 
 void VtkMessageTrap::throwIfError(const std::string& path, const std::string& what) const {

@@ -23,8 +23,8 @@ namespace flowsurf::io::detail {
 
 class VtkMessageTrap {
 public:
-    // Routes VTK's global output to `trap` for the scope's lifetime (scopes nest). Wrap
-    // every block of VTK calls made for a trap.
+    // Routes VTK's global output to `trap` for the scope's lifetime (scopes nest), which
+    // starts empty. Wrap every block of VTK calls made for a trap.
     class Active {
     public:
         explicit Active(VtkMessageTrap& trap);
@@ -44,18 +44,15 @@ public:
     // Observes ErrorEvent and WarningEvent of `object` (a reader or filter).
     void watch(vtkObject* object);
 
-    // Throws FormatError("PATH: WHAT: first error") if an error was reported since
-    // the last clear(); otherwise does nothing.
+    // Throws FormatError("PATH: WHAT: first error") if an error was reported since the
+    // last Active scope on this trap opened; otherwise does nothing.
     void throwIfError(const std::string& path, const std::string& what) const;
 
     bool hasError() const { return !errors_.empty(); }
-    const std::vector<std::string>& errors() const { return errors_; }
     const std::vector<std::string>& warnings() const { return warnings_; }
-    void clear();
 
     // Called by the observers and the output window; the text is cleaned first.
-    void addError(const char* text);
-    void addWarning(const char* text);
+    void add(bool error, const char* text);
 
 private:
     std::vector<std::string> errors_, warnings_;
@@ -70,8 +67,5 @@ private:
 // the reader process sends them with its next reply (the library prints them).
 void warnOnce(const std::string& message);
 std::vector<std::string> takeWarnings();
-
-// "ERROR: In x.cxx, line 12\nvtkXMLPolyDataReader (0x5f..): Cannot read\n\n" -> "Cannot read".
-std::string cleanVtkMessage(const char* text);
 
 }  // namespace flowsurf::io::detail

@@ -1,12 +1,9 @@
-// Sections: file checks · reader-backed sources · ParaView .pvd collections · openSource.
+// Sections: file checks · reader-backed sources · ParaView .pvd collections · openSource (the format table).
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
-#include "io/reader/exodus_check.h"
-#include "io/reader/legacy_check.h"
-#include "io/reader/obj_reader.h"
-#include "io/reader/openfoam_source.h"
-#include "io/reader/ply_reader.h"
+#include "io/reader/checks.h"
+#include "io/reader/parsers.h"
 #include "io/reader/sandbox.h"
 
 #include <vtkAlgorithm.h>
@@ -15,7 +12,9 @@
 #include <vtkGenericEnSightReader.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
 #include <vtkSTLReader.h>
+#include <vtkTrivialProducer.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -31,9 +30,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
+#include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
 
 namespace flowsurf::io::detail {
@@ -41,19 +39,6 @@ namespace flowsurf::io::detail {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct FormatEntry {
-    const char* extension;
-    const char* name;
-};
-const FormatEntry kFormats[] = {
-    {".vtp", "VTK XML PolyData"},    {".vtu", "VTK XML UnstructuredGrid"},
-    {".vtk", "VTK legacy"},          {".ply", "Stanford PLY"},
-    {".obj", "Wavefront OBJ"},       {".stl", "STL"},
-    {".foam", "OpenFOAM case"},      {".e", "Exodus II"},
-    {".ex2", "Exodus II"},           {".exo", "Exodus II"},
-    {".case", "EnSight case"},       {".pvd", "ParaView data collection (.pvd)"},
-};
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -73,28 +58,21 @@ void checkReadable(const std::string& path, bool allowEmpty) {
     if (!f) {
         const int error = errno;
         std::string why = std::system_category().message(error);
-        if (error == EACCES && sandbox::isOutsideReadableRoot(path))
-            why += "; the reader may read only below " + sandbox::readableRoot() + ", doc/reader_sandbox.md";
+        const std::string root = error == EACCES ? sandbox::rootExcluding(path) : "";
+        if (!root.empty()) why += "; the reader may read only below " + root + ", doc/reader_sandbox.md";
         throw IoError(path + ": cannot open (" + why + ")");
     }
     std::fclose(f);
     if (!allowEmpty && st.st_size == 0) throw FormatError(path + ": the file is empty");
 }
 
-std::string fileStart(const std::string& path, size_t bytes) {
-    std::string head(bytes, '\0');
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw IoError(path + ": cannot open (" + std::system_category().message(errno) + ")");
-    head.resize(std::fread(head.data(), 1, bytes, f));
-    std::fclose(f);
-    return head;
-}
-
 // vtkSTLReader reads a truncated binary STL without complaint (fewer triangles).
 // Binary STL: 80-byte header, uint32 triangle count, 50 bytes per triangle. A file
 // starting with "solid" is ASCII unless its size matches the binary layout exactly.
 void checkBinaryStlSize(const std::string& path) {
-    const std::string head = fileStart(path, 84);
+    std::string head(84, '\0');
+    std::ifstream in(path, std::ios::binary);
+    head.resize(size_t(in.read(head.data(), 84).gcount()));
     const size_t size = fs::file_size(path);
     uint32_t count = 0;
     if (head.size() == 84) {
@@ -112,12 +90,11 @@ void checkBinaryStlSize(const std::string& path) {
                           std::to_string(size) + " bytes");
 }
 
-// --- reader-backed sources -----------------------------------------------------------
 }  // namespace
 
-// --- reader-backed sources (vtk_sources.h) ---
+// --- reader-backed sources ------------------------------------------------------------
 AlgorithmSource::AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap)
-    : reader_(reader), path_(std::move(path)), format_(std::move(format)), trap_(trap) {
+    : StepSource(std::move(path), std::move(format)), reader_(reader), trap_(trap) {
     vtkInformation* info = reader_->GetOutputInformation(0);
     auto key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
     if (info && info->Has(key)) {
@@ -128,7 +105,6 @@ AlgorithmSource::AlgorithmSource(vtkAlgorithm* reader, std::string path, std::st
 
 vtkSmartPointer<vtkDataObject> AlgorithmSource::readStep(size_t index) {
     VtkMessageTrap::Active active(trap_);
-    trap_.clear();
     if (times_.empty()) reader_->Update();
     else reader_->UpdateTimeStep(times_.at(index));
     trap_.throwIfError(path_, "cannot read " + format_);
@@ -142,68 +118,70 @@ vtkSmartPointer<vtkDataObject> AlgorithmSource::readStep(size_t index) {
     return copy;
 }
 
-namespace {
-
-// A data object read without a VTK reader (PLY, OBJ): one step, already in memory.
-class ReadySource : public StepSource {
-public:
-    ReadySource(vtkSmartPointer<vtkDataObject> data, std::string format)
-        : data_(std::move(data)), format_(std::move(format)) {}
-    std::string format() const override { return format_; }
-    const std::vector<double>& times() const override { return times_; }
-    vtkSmartPointer<vtkDataObject> readStep(size_t) override { return data_; }
-
-private:
-    vtkSmartPointer<vtkDataObject> data_;
-    std::string format_;
-    std::vector<double> times_;
-};
-
-// Reads the header; `configure` runs after it (array and patch selections need the
-// names the header lists), followed by a second header pass.
-std::unique_ptr<StepSource> makeSource(vtkAlgorithm* reader, const std::string& path,
-                                       const std::string& format, VtkMessageTrap& trap,
-                                       const std::function<void()>& configure = {}) {
-    trap.watch(reader);
+void readInformation(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap) {
     reader->UpdateInformation();
     trap.throwIfError(path, "cannot read " + format);
-    if (configure) {
-        configure();
-        reader->UpdateInformation();
-        trap.throwIfError(path, "cannot read " + format);
-    }
-    return std::make_unique<AlgorithmSource>(reader, path, format, trap);
 }
 
+namespace {
+
+// How each format is opened: `format` names it in messages; `options` are OpenFOAM's.
+using Opener = std::unique_ptr<StepSource> (*)(const std::string& path, const std::string& format,
+                                               VtkMessageTrap& trap, const SourceOptions& options);
+
+// A VTK reader of `path`, watched and its header read.
 template <class Reader>
-vtkSmartPointer<Reader> readerFor(const std::string& path) {
+vtkSmartPointer<Reader> vtkReader(const std::string& path, const std::string& format, VtkMessageTrap& trap) {
     auto r = vtkSmartPointer<Reader>::New();
-    r->SetFileName(path.c_str());
+    if constexpr (requires { r->SetCaseFileName(""); }) r->SetCaseFileName(path.c_str());
+    else r->SetFileName(path.c_str());
+    trap.watch(r);
+    readInformation(r, path, format, trap);
     return r;
 }
 
-std::unique_ptr<StepSource> openLegacy(const std::string& path, VtkMessageTrap& trap) {
+template <class Reader>
+std::unique_ptr<StepSource> openVtk(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                    const SourceOptions&) {
+    return std::make_unique<AlgorithmSource>(vtkReader<Reader>(path, format, trap), path, format, trap);
+}
+
+// Our own parser's surface (PLY, OBJ), handed out as a reader's one step.
+template <vtkSmartPointer<vtkPolyData> (*parse)(const std::string&)>
+std::unique_ptr<StepSource> openParsed(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                       const SourceOptions&) {
+    auto producer = vtkSmartPointer<vtkTrivialProducer>::New();
+    producer->SetOutput(parse(path));
+    return std::make_unique<AlgorithmSource>(producer, path, format, trap);
+}
+
+std::unique_ptr<StepSource> openStl(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                    const SourceOptions& options) {
+    checkBinaryStlSize(path);
+    return openVtk<vtkSTLReader>(path, format, trap, options);
+}
+
+std::unique_ptr<StepSource> openLegacy(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                       const SourceOptions&) {
     checkLegacyFile(path);  // old-layout cell lists VTK would read past their end
-    auto r = readerFor<vtkGenericDataObjectReader>(path);
-    trap.watch(r);
-    r->UpdateInformation();
-    trap.throwIfError(path, "cannot read VTK legacy");
+    auto r = vtkReader<vtkGenericDataObjectReader>(path, format, trap);
     // The header names the data set type; without one the reader has no output at all.
     vtkDataObject* out = r->GetOutputDataObject(0);
     if (!out) throw FormatError(path + ": not a VTK legacy file (no recognised dataset header)");
     std::string type = out->GetClassName();
     if (type.rfind("vtk", 0) == 0) type = type.substr(3);
-    return std::make_unique<AlgorithmSource>(r, path, "VTK legacy " + type, trap);
+    return std::make_unique<AlgorithmSource>(r, path, format + " " + type, trap);
 }
 
-std::unique_ptr<StepSource> openExodus(const std::string& path, VtkMessageTrap& trap) {
+std::unique_ptr<StepSource> openExodus(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                       const SourceOptions&) {
     checkExodusFile(path);  // a truncated file reads as zeros
-    auto r = readerFor<vtkExodusIIReader>(path);
-    return makeSource(r, path, "Exodus II", trap, [&] {
-        // The reader loads no result variables unless asked.
-        r->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
-        r->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
-    });
+    auto r = vtkReader<vtkExodusIIReader>(path, format, trap);
+    // The reader loads no result variables unless asked.
+    r->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+    r->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+    readInformation(r, path, format, trap);
+    return std::make_unique<AlgorithmSource>(r, path, format, trap);
 }
 
 // --- ParaView .pvd collections ---------------------------------------------------------
@@ -211,7 +189,8 @@ std::unique_ptr<StepSource> openExodus(const std::string& path, VtkMessageTrap& 
 // Entries with the same timestep are parts of one step (merged like composite blocks).
 class PvdSource : public StepSource {
 public:
-    PvdSource(const std::string& path, VtkMessageTrap& trap) : path_(path), trap_(trap) {
+    PvdSource(const std::string& path, const std::string& format, VtkMessageTrap& trap)
+        : StepSource(path, format), trap_(trap) {
         auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
         trap.watch(parser);
         parser->SetFileName(path.c_str());
@@ -233,8 +212,6 @@ public:
             stepFiles_.push_back(std::move(list));
         }
     }
-    std::string format() const override { return "ParaView data collection (.pvd)"; }
-    const std::vector<double>& times() const override { return times_; }
 
     vtkSmartPointer<vtkDataObject> readStep(size_t index) override {
         const auto& list = stepFiles_.at(index);
@@ -280,63 +257,51 @@ private:
         }
     }
 
-    std::string path_;
     VtkMessageTrap& trap_;
-    std::vector<double> times_;
     std::vector<std::vector<std::string>> stepFiles_;
+};
+
+std::unique_ptr<StepSource> openPvd(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                    const SourceOptions&) {
+    return std::make_unique<PvdSource>(path, format, trap);
+}
+
+// --- openSource ------------------------------------------------------------------------
+struct Format {
+    const char* extension;
+    const char* name;
+    Opener open;
+};
+const Format kFormats[] = {
+    {".vtp", "VTK XML PolyData", openVtk<vtkXMLPolyDataReader>},
+    {".vtu", "VTK XML UnstructuredGrid", openVtk<vtkXMLUnstructuredGridReader>},
+    {".vtk", "VTK legacy", openLegacy},
+    {".ply", "Stanford PLY", openParsed<readPly>},
+    {".obj", "Wavefront OBJ", openParsed<readObj>},
+    {".stl", "STL", openStl},
+    {".foam", "OpenFOAM case", openOpenFoam},
+    {".e", "Exodus II", openExodus},
+    {".ex2", "Exodus II", openExodus},
+    {".exo", "Exodus II", openExodus},
+    {".case", "EnSight case", openVtk<vtkGenericEnSightReader>},
+    {".pvd", "ParaView data collection (.pvd)", openPvd},
 };
 
 }  // namespace
 
-std::string supportedExtensions() {
-    std::string s;
-    for (const auto& f : kFormats) s.append(s.empty() ? "" : " ").append(f.extension);
-    return s;
-}
-
-std::string stepLabel(const std::string& path, const StepSource& source, size_t index) {
-    if (source.stepCount() <= 1) return path;
-    std::ostringstream s;
-    s << path << " (time step " << index + 1 << " of " << source.stepCount()
-      << ", t = " << source.times()[index] << ")";
-    return s.str();
-}
-
-// --- openSource ------------------------------------------------------------------------
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options) {
     VtkMessageTrap::Active active(trap);
     const std::string ext = lowerExtension(path);
-    const FormatEntry* entry = nullptr;
-    for (const auto& f : kFormats)
-        if (ext == f.extension) entry = &f;
+    const Format* format = nullptr;
+    std::string supported;
+    for (const auto& f : kFormats) {
+        if (ext == f.extension) format = &f;
+        supported.append(supported.empty() ? "" : " ").append(f.extension);
+    }
     // The .foam file is an empty marker in the case folder: only its presence counts.
     checkReadable(path, ext == ".foam");
-    if (!entry)
-        throw FormatError(path + ": unknown file extension '" + ext +
-                          "' (supported: " + supportedExtensions() + ")");
-    trap.clear();
-    const std::string name = entry->name;
-    if (ext == ".vtp" || ext == ".vtu") {
-        vtkSmartPointer<vtkAlgorithm> reader;
-        if (ext == ".vtp") reader = readerFor<vtkXMLPolyDataReader>(path);
-        else reader = readerFor<vtkXMLUnstructuredGridReader>(path);
-        return makeSource(reader, path, name, trap);
-    }
-    if (ext == ".vtk") return openLegacy(path, trap);
-    if (ext == ".ply") return std::make_unique<ReadySource>(readPly(path), name);
-    if (ext == ".obj") return std::make_unique<ReadySource>(readObj(path), name);
-    if (ext == ".stl") {
-        checkBinaryStlSize(path);
-        return makeSource(readerFor<vtkSTLReader>(path), path, name, trap);
-    }
-    if (ext == ".foam") return openOpenFoam(path, trap, options);
-    if (ext == ".case") {
-        auto r = vtkSmartPointer<vtkGenericEnSightReader>::New();
-        r->SetCaseFileName(path.c_str());
-        return makeSource(r, path, name, trap);
-    }
-    if (ext == ".pvd") return std::make_unique<PvdSource>(path, trap);
-    return openExodus(path, trap);
+    if (!format) throw FormatError(path + ": unknown file extension '" + ext + "' (supported: " + supported + ")");
+    return format->open(path, format->name, trap, options);
 }
 
 }  // namespace flowsurf::io::detail

@@ -1,8 +1,8 @@
 // flowsurf — one reader per file extension, seen as a list of time steps (private to
 // src/io). VTK readers for most formats (where one crashes or loops on bad input, the
 // reader process's limits and sandbox stop it), behind checks of what VTK would read
-// silently wrong (legacy_check, exodus_check, a truncated binary STL); our own parsers for
-// PLY and OBJ.
+// silently wrong (checks.h, a truncated binary STL); our own parsers for PLY and OBJ
+// (parsers.h); OpenFOAM cases in openfoam_source.cpp.
 // A StepSource hands out the raw output per step; surface_pipeline.h turns that into
 // a triangle surface.
 #pragma once
@@ -16,21 +16,28 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flowsurf::io::detail {
 
 class StepSource {
 public:
+    StepSource(std::string path, std::string format) : path_(std::move(path)), format_(std::move(format)) {}
     virtual ~StepSource() = default;
 
+    const std::string& path() const { return path_; }
     // Human-readable format, e.g. "VTK XML PolyData".
-    virtual std::string format() const = 0;
+    const std::string& format() const { return format_; }
     // Sorted time values; empty when the file carries no time information (one step).
-    virtual const std::vector<double>& times() const = 0;
-    size_t stepCount() const { return times().empty() ? 1 : times().size(); }
+    const std::vector<double>& times() const { return times_; }
+    size_t stepCount() const { return times_.empty() ? 1 : times_.size(); }
     // The reader's output for step `index` (may be composite). Throws FormatError.
     virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
+
+protected:
+    std::string path_, format_;
+    std::vector<double> times_;
 };
 
 // A VTK reader's output as steps (the reader's TIME_STEPS, or one step). Each step is a
@@ -39,8 +46,6 @@ public:
 class AlgorithmSource : public StepSource {
 public:
     AlgorithmSource(vtkAlgorithm* reader, std::string path, std::string format, VtkMessageTrap& trap);
-    std::string format() const override { return format_; }
-    const std::vector<double>& times() const override { return times_; }
     vtkSmartPointer<vtkDataObject> readStep(size_t index) override;
 
 protected:
@@ -48,26 +53,25 @@ protected:
     virtual void afterUpdate(VtkMessageTrap& /*trap*/) {}
     // On the copy handed out.
     virtual void adapt(vtkDataObject& /*step*/) {}
-    const std::string& path() const { return path_; }
 
 private:
     vtkSmartPointer<vtkAlgorithm> reader_;
-    std::string path_, format_;
     VtkMessageTrap& trap_;
-    std::vector<double> times_;
 };
+
+// Reads `reader`'s header (watched by `trap`; again after a selection that needs the
+// names the header lists); throws FormatError with what the reader reported.
+void readInformation(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap);
+
+// OpenFOAM cases (openfoam_source.cpp); `format` ("OpenFOAM case") names them in messages,
+// with the layout read. Throws as openSource, ConfigError for --patches or --foam-case.
+std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                         const SourceOptions& options);
 
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
 // empty file, header the reader refuses). Every reader is watched by `trap`.
-// `options`: OpenFOAM's boundary patches and case layout (openfoam_source.h).
+// `options`: OpenFOAM's boundary patches and case layout.
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options = {});
-
-// "file.pvd (time step 3 of 20, t = 0.5)" for messages about one step of many;
-// just the path for a single step.
-std::string stepLabel(const std::string& path, const StepSource& source, size_t index);
-
-// ".vtp .vtu ..." for messages.
-std::string supportedExtensions();
 
 }  // namespace flowsurf::io::detail
