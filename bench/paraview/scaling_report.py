@@ -32,33 +32,35 @@ for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
 lp2 = os.path.join(OUT, 'np1_lp2', 'timings.json')
 lp2 = load(lp2)['methods'] if os.path.exists(lp2) else {}
 info = open(os.path.join(OUT, 'plugin', 'info.txt')).read().strip().splitlines()
-first = load(sorted(glob.glob(os.path.join(OUT, 'r*', 'np1', 'timings.json')))[0])
+rounds = sorted(glob.glob(os.path.join(OUT, 'r*', 'np1', 'timings.json')))
+first = load(rounds[0]) if rounds else None  # --rounds 0: the oversubscribed runs alone
 
-print('# FlowSurf on ParaView\'s engine: 1 and 2 ranks, tiles and replicate\n')
-print('Machine and run: %s. %d triangles, %dx%d, camera turning %.1f deg per render, %d timed renders per '
-      'method and run; one llvmpipe thread per rank, each rank bound to its own core (`--bind-to core`). '
-      '%s\n' % ('; '.join(info), first['triangles'], first['size'][0], first['size'][1], first['azimuth_deg'],
-                first['frames'], cal.strip()))
-print('Bar for 2 ranks: 1.6 x min(1, S_hw / 1.9) = **%.2f**.\n' % (1.6 * scale))
-print('| method | 1 rank ms | 2 ranks tiles ms | speedup tiles | 2 ranks replicate ms | speedup replicate | '
-      '1 rank, 2 llvmpipe threads ms | 2 ranks tiles / that | rounds |')
-print('|---|---:|---:|---:|---:|---:|---:|---:|---:|')
-for method in runs.get('np1', {}):
-    t1 = statistics.median(runs['np1'][method])
-    tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')]))
-    tr = statistics.median(runs.get('np2_replicate', {}).get(method, [float('nan')]))
-    l2 = lp2.get(method, {}).get('median_ms', float('nan'))
-    print('| %s | %.0f | %.0f | **%.2f** | %.0f | %.2f | %.0f | %.2f | %d |'
-          % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, tt / l2, len(runs['np1'][method])))
+if first:
+    print('# FlowSurf on ParaView\'s engine: 1 and 2 ranks, tiles and replicate\n')
+    print('Machine and run: %s. %d triangles, %dx%d, camera turning %.1f deg per render, %d timed renders per '
+          'method and run; one llvmpipe thread per rank, each rank bound to its own core (`--bind-to core`). '
+          '%s\n' % ('; '.join(info), first['triangles'], first['size'][0], first['size'][1], first['azimuth_deg'],
+                    first['frames'], cal.strip()))
+    print('Bar for 2 ranks: 1.6 x min(1, S_hw / 1.9) = **%.2f**.\n' % (1.6 * scale))
+    print('| method | 1 rank ms | 2 ranks tiles ms | speedup tiles | 2 ranks replicate ms | speedup replicate | '
+          '1 rank, 2 llvmpipe threads ms | 2 ranks tiles / that | rounds |')
+    print('|---|---:|---:|---:|---:|---:|---:|---:|---:|')
+    for method in runs.get('np1', {}):
+        t1 = statistics.median(runs['np1'][method])
+        tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')]))
+        tr = statistics.median(runs.get('np2_replicate', {}).get(method, [float('nan')]))
+        l2 = lp2.get(method, {}).get('median_ms', float('nan'))
+        print('| %s | %.0f | %.0f | **%.2f** | %.0f | %.2f | %.0f | %.2f | %d |'
+              % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, tt / l2, len(runs['np1'][method])))
 
-print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
-same, total = 0, 0
-for png in sorted(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png'))):
-    ref = os.path.join(os.path.dirname(os.path.dirname(png)), 'np1', os.path.basename(png))
-    if os.path.exists(ref):
-        total += 1
-        same += filecmp.cmp(png, ref, shallow=False)
-print('%d of %d identical.\n' % (same, total))
+    print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
+    same, total = 0, 0
+    for png in sorted(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png'))):
+        ref = os.path.join(os.path.dirname(os.path.dirname(png)), 'np1', os.path.basename(png))
+        if os.path.exists(ref):
+            total += 1
+            same += filecmp.cmp(png, ref, shallow=False)
+    print('%d of %d identical.\n' % (same, total))
 
 stats = sorted(glob.glob(os.path.join(OUT, 'stats', '*')))
 if stats:
