@@ -139,11 +139,13 @@ private:
     // colour values the view shows now, set and recorded as MIN:MAX [issue 28]. False
     // (the event dropped, the error shown) when the view shows no such range.
     bool resolveVisibleRange(Event& e) {
-        if (e.type != EventType::Set || e.name != "color-range" || e.value != "visible") return true;
+        if (e.type != EventType::Set || e.value != "visible") return true;
+        const OptionSpec* spec = findOption(e.name);
+        if (!spec || spec->rescale != RangeRescale::DataAndView) return true;
         const std::optional<glm::vec2> r =
             pipeline_.ready() ? pipeline_.visibleColorRange(state_.time) : std::optional<glm::vec2>{};
         if (!r) {
-            state_.error = "color-range visible: the view shows no surface with a range of colour values";
+            state_.error = e.name + " visible: the view shows no surface with a range of colour values";
             return false;
         }
         e.value = formatFloat(r->x) + ":" + formatFloat(r->y);

@@ -81,14 +81,14 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool
         if (!ImGui::IsItemActive()) edits_.erase(spec.name);
         // Range options [issue 28]: one click rescales to the data's whole or robust range,
         // or (colour) to the values the view shows, set as MIN:MAX so that a log replays it.
-        if (spec.name == "color-range" || spec.name == "mask-range") {
+        if (spec.rescale != RangeRescale::None) {
             ImGui::PushID(label);
             ImGui::TextUnformatted("  rescale:");
             for (const char* to : {"robust", "data"}) {
                 ImGui::SameLine();
                 if (ImGui::SmallButton(to)) emitSet(spec.name, to);
             }
-            if (spec.name == "color-range" && visibleRange) {
+            if (spec.rescale == RangeRescale::DataAndView && visibleRange) {
                 ImGui::SameLine();
                 if (ImGui::SmallButton("visible")) emitSet(spec.name, "visible");  // resolved by the session
                 if (ImGui::IsItemHovered())
