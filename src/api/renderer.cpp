@@ -58,8 +58,8 @@ struct Renderer::Impl {
         session::RenderOptions o = playback.options();
         o.input = data->source;
         o.field = data->field;
-        session::validateRenderOptions(o);
         playback.setOptions(o);  // closed: the input's options too
+        session::validateRenderOptions(o);
         steps = data->provider();
         playback.setQuality(qualityEvery);
         playback.open(*steps);
