@@ -62,8 +62,8 @@ public:
     // does what the table's effect says: Camera: the frame cameras follow from the next
     // frame, textures and clock go on; Rebuild: surface and renderers are made anew before
     // the next frame and an animation starts over (with its warm-up); Output, None: nothing
-    // here. Reload is refused (ConfigError): the input must be opened again by the front
-    // end, which makes a new Playback. Returns the effect.
+    // here; Reload: taken while closed, refused (ConfigError) while open: the front end
+    // opens the input again (close, set, open) or makes a new Playback. Returns the effect.
     OptionEffect set(const std::string& name, const std::string& value);
     // All options at once (the viewer's state, ParaView's properties): as set() for each
     // option that differs; returns the largest effect. Throws ConfigError on Reload while
@@ -71,10 +71,9 @@ public:
     OptionEffect setOptions(const RenderOptions& o);
     // The methods side by side (a Rebuild).
     void setViews(std::vector<methods::Method> views);
-    // Makes surface and renderers anew now (the clock restarts), so errors show now (open
-    // only); on
+    // Makes surface and renderers anew now (the clock restarts), so errors show now; on
     // failure the options, views, surface and renderers of the last build that worked
-    // are made again and the error is rethrown.
+    // are made again and the error is rethrown. ConfigError while closed.
     void rebuild();
     // The steps changed in place (ParaView hands over new data at each view time): the
     // surface is read and uploaded again; renderers, textures and clock go on.
