@@ -4,6 +4,7 @@
 
 #include "core/builtin_scenes.h"
 #include "methods/common/gl_path.h"
+#include "methods/common/stages.h"
 #include "methods/make_renderer.h"
 #include "session/playback.h"
 
@@ -20,25 +21,26 @@ namespace flowsurf::bench {
 
 namespace {
 
-// Table columns; each method's stages map onto them.
+// Table columns; each method's stages count towards one.
 struct Column {
     const char* title;
-    std::vector<const char*> stages;
+    std::vector<methods::Stage> stages;
 };
+using S = methods::Stage;
 const std::vector<Column> kColumns = {
-    {"surface", {"velocity image", "seed textures"}},   // N-dependent pass of ISA / hybrid
-    {"adv.mesh", {"advection mesh"}},                   // ISA, M-dependent
-    {"advect", {"texture advection", "particle tracing"}},  // IBFVS: includes the mesh projection; ISA, IBFVS: and the noise blend
-    {"noise", {"noise blend", "solid noise"}},
-    {"overlay", {"overlay", "edge mask"}},
-    {"contrast", {"contrast (texture)", "contrast (colour)"}},  // --enhance-contrast
+    {"surface", {S::VelocityImage, S::SeedTextures}},  // N-dependent pass of ISA / hybrid
+    {"adv.mesh", {S::AdvectionMesh}},                  // ISA, M-dependent
+    {"advect", {S::TextureAdvection, S::ParticleTracing}},  // IBFVS: includes the mesh projection; ISA, IBFVS: and the noise blend
+    {"noise", {S::SolidNoise}},
+    {"overlay", {S::Overlay, S::EdgeMask}},
+    {"contrast", {S::ContrastTexture, S::ContrastColour}},  // --enhance-contrast
 };
 
 double columnMs(const BenchRow& r, const Column& c) {
     double sum = 0;
     for (const auto& [name, ms] : r.stageMs)
-        for (const char* s : c.stages)
-            if (name == s) sum += ms;
+        for (methods::Stage s : c.stages)
+            if (name == methods::stageName(s)) sum += ms;
     return sum;
 }
 

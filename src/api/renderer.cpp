@@ -29,11 +29,14 @@ std::recursive_mutex& glMutex() {
 struct Renderer::Impl {
     ContextMode mode = ContextMode::Own;
     std::unique_ptr<gl::HeadlessContext> context;
-    session::RenderOptions options;
+    // The frame loop of the command line and the one owner of the options; open while a
+    // surface is (after render or begin). Declared after the steps it reads: goes first.
     std::shared_ptr<const detail::SurfaceData> data;
     std::unique_ptr<core::StepProvider> steps;
-    std::unique_ptr<session::Playback> playback;  // the frame loop of the command line
-    int qualityEvery = 0;
+    session::Playback playback;
+    int qualityEvery = 0;  // of the next render or begin
+
+    Impl() { playback.setStageTiming(true); }
 
     // Holds the lock and the context for one public call.
     struct Scope {
@@ -49,21 +52,22 @@ struct Renderer::Impl {
 
     void open(std::shared_ptr<const detail::SurfaceData> d) {
         // Release the old stream before the new one starts (its prefetch thread reads).
-        playback.reset();
+        playback.close();
+        steps.reset();
         data = std::move(d);
-        options.input = data->source;
-        options.field = data->field;
-        session::validateRenderOptions(options);
+        session::RenderOptions o = playback.options();
+        o.input = data->source;
+        o.field = data->field;
+        playback.setOptions(o);  // closed: the input's options too
+        session::validateRenderOptions(o);
         steps = data->provider();
-        playback = std::make_unique<session::Playback>(options, *steps);
-        playback->setStageTiming(true);
-        playback->setQuality(qualityEvery);
+        playback.setQuality(qualityEvery);
+        playback.open(*steps);
     }
 
     const methods::FlowMethod& rendered() const {
-        if (!playback || playback->frame() == 0)
-            throw ConfigError("nothing rendered yet: call render() or advance() first");
-        return playback->view(0);
+        if (playback.frame() == 0) throw ConfigError("nothing rendered yet: call render() or advance() first");
+        return playback.view(0);
     }
 };
 
@@ -106,7 +110,7 @@ Renderer::Renderer(ContextMode mode) : impl_(std::make_unique<Impl>()) {
 Renderer::~Renderer() {
     if (!impl_) return;
     Impl::Scope scope(*impl_);
-    impl_->playback.reset();  // GL objects go while the context is current
+    impl_->playback.close();  // GL objects go while the context is current
 }
 
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -122,12 +126,11 @@ void Renderer::set(const std::string& option, const std::string& value) {
     if (effect == session::OptionEffect::Output)
         throw ConfigError("'" + option + "' is an output file setting of the command line; a Renderer returns its "
                           "images (readImage, readFlowTexture)");
-    session::setOption(impl_->options, option, value);
-    if (impl_->playback) impl_->playback->set(option, value);
+    impl_->playback.set(option, value);
 }
 
 void Renderer::addDye(const std::array<float, 3>& point, float radius, const std::string& color) {
-    std::vector<methods::DyeSource> sources = impl_->options.dye;
+    std::vector<methods::DyeSource> sources = impl_->playback.options().dye;
     sources.push_back(session::dyeSource({point[0], point[1], point[2]}, radius,
                                          color.empty() ? std::nullopt : std::optional<std::string>(color),
                                          sources.size(), "addDye"));
@@ -137,7 +140,7 @@ void Renderer::addDye(const std::array<float, 3>& point, float radius, const std
 std::string Renderer::get(const std::string& option) const {
     const session::OptionSpec* spec = session::findOption(option);
     if (!spec) throw ConfigError("unknown option '" + option + "'");
-    return spec->get(impl_->options);
+    return spec->get(impl_->playback.options());
 }
 
 std::vector<std::string> Renderer::optionNames() {
@@ -159,7 +162,7 @@ std::vector<OptionInfo> Renderer::optionInfo() {
 }
 
 void Renderer::setCamera(const CameraView& v) {
-    auto& o = impl_->options;
+    session::RenderOptions o = impl_->playback.options();
     o.eye = glm::vec3(v.eye[0], v.eye[1], v.eye[2]);
     o.target = glm::vec3(v.target[0], v.target[1], v.target[2]);
     o.up = glm::vec3(v.up[0], v.up[1], v.up[2]);
@@ -168,19 +171,20 @@ void Renderer::setCamera(const CameraView& v) {
     if (!(v.fovDeg >= 1.0f && v.fovDeg <= 170.0f)) throw ConfigError("camera: fov must be 1..170 degrees");
     o.fov = v.fovDeg;
     o.ortho = std::max(0.0f, v.orthoHeight);
-    if (impl_->playback) impl_->playback->setOptions(o);
+    impl_->playback.setOptions(o);
 }
 
 void Renderer::fitCamera() {
-    impl_->options.eye.reset();
-    impl_->options.target.reset();
-    impl_->options.up.reset();
-    if (impl_->playback) impl_->playback->setOptions(impl_->options);
+    session::RenderOptions o = impl_->playback.options();
+    o.eye.reset();
+    o.target.reset();
+    o.up.reset();
+    impl_->playback.setOptions(o);
 }
 
 CameraView Renderer::camera() const {
     CameraView v;
-    const core::Camera c = impl_->playback ? impl_->playback->lastCamera() : core::Camera{};
+    const core::Camera c = impl_->playback.lastCamera();
     for (int a = 0; a < 3; ++a) v.eye[a] = c.eye[a], v.target[a] = c.target[a], v.up[a] = c.up[a];
     v.fovDeg = c.fovDeg;
     v.orthoHeight = c.orthoHeight;
@@ -191,27 +195,27 @@ void Renderer::render(const Surface& surface, int frames) {
     if (frames < 0) throw ConfigError("render: frames must not be negative");
     Impl::Scope scope(*impl_);
     impl_->open(surface.data_shared());
-    impl_->playback->still(frames);
+    impl_->playback.still(frames);
 }
 
 void Renderer::begin(const Surface& surface) {
     Impl::Scope scope(*impl_);
     impl_->open(surface.data_shared());
-    impl_->playback->start(true);  // converged from frame 0, as the command line's movies
+    impl_->playback.start(true);  // converged from frame 0, as the command line's movies
 }
 
 void Renderer::advance() {
     Impl::Scope scope(*impl_);
-    if (!impl_->playback || !impl_->data)
-        throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
-    for (size_t i = 0; i < impl_->playback->viewCount(); ++i) impl_->playback->view(i).timer().reset();
-    impl_->playback->advance();
+    session::Playback& p = impl_->playback;
+    if (!p.isOpen()) throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
+    for (size_t i = 0; i < p.viewCount(); ++i) p.view(i).timer().reset();
+    p.advance();
 }
 
-int Renderer::frame() const { return impl_->playback ? impl_->playback->frame() : 0; }
-double Renderer::time() const { return impl_->playback ? impl_->playback->lastTime() : 0.0; }
-int Renderer::width() const { return impl_->options.size.width; }
-int Renderer::height() const { return impl_->options.size.height; }
+int Renderer::frame() const { return impl_->playback.frame(); }
+double Renderer::time() const { return impl_->playback.lastTime(); }
+int Renderer::width() const { return impl_->playback.options().size.width; }
+int Renderer::height() const { return impl_->playback.options().size.height; }
 
 void Renderer::readImage(uint8_t* rgb) const {
     Impl::Scope scope(*impl_);
@@ -236,9 +240,9 @@ void Renderer::readFlowTexture16(uint16_t* values) const {
 }
 
 std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
-    if (!impl_->playback) return {};
+    if (!impl_->playback.isOpen()) return {};
     Impl::Scope scope(*impl_);  // the timer reads its GPU queries
-    return impl_->playback->view(0).timer().meanMs();
+    return impl_->playback.view(0).timer().meanMs();
 }
 
 void Renderer::setQualityEvery(int every) {
@@ -249,7 +253,7 @@ void Renderer::setQualityEvery(int every) {
 Quality Renderer::quality() const {
     Impl::Scope scope(*impl_);
     impl_->rendered();  // throws before anything is rendered
-    session::Playback& p = *impl_->playback;
+    session::Playback& p = impl_->playback;
     Quality q;
     if (p.qualityFrames(0).empty()) {
         const quality::FrameQuality now = p.measureLastFrame(0);

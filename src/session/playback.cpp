@@ -1,4 +1,4 @@
-// Index: build and options · animation (start, advance, still) · live frames · results ·
+// Index: steps · build and options · animation (start, advance, still) · live frames · results ·
 // quality.
 #include "session/playback.h"
 
@@ -11,15 +11,52 @@
 
 namespace flowsurf::session {
 
+Playback::Playback(const RenderOptions& o, std::vector<methods::Method> views, methods::ProcessGroup* group)
+    : options_(o), group_(group), requestedViews_(std::move(views)), dye_(group) {}
+
 Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
                    methods::ProcessGroup* group)
-    : options_(o), steps_(steps), group_(group), requestedViews_(std::move(views)), dye_(group) {
-    build();
+    : Playback(o, std::move(views), group) {
+    open(steps);
+}
+
+Playback::~Playback() = default;
+
+// --- steps -----------------------------------------------------------------------------------
+
+void Playback::open(core::StepProvider& steps) {
+    close();
+    steps_ = &steps;
+    try {
+        build();
+    } catch (...) {
+        close();
+        throw;
+    }
     built_ = options_;
     builtViews_ = requestedViews_;
 }
 
-Playback::~Playback() = default;
+void Playback::close() {
+    // What a new playback would start with; options, views, timing and quality settings stay.
+    methods_.clear();
+    surface_.reset();
+    cameras_.reset();
+    views_.clear();
+    quality_.rebuilt(0, options_.size, options_.params.common.cullBackFaces);
+    dye_ = DyeInjection(group_);
+    steps_ = nullptr;
+    rebuildPending_ = camerasPending_ = false;
+    started_ = startWarm_ = false;
+    frame_ = warmedUp_ = 0;
+    clock_ = 0;
+    lastCamera_ = core::Camera{};
+    lastTime_ = 0.0;
+}
+
+void Playback::requireOpen(const char* call) const {
+    if (!steps_) throw ConfigError(std::string(call) + ": no steps are open");
+}
 
 // --- build and options -------------------------------------------------------------------
 
@@ -34,7 +71,7 @@ void Playback::build() {
     cameras_.reset();
     dye_.dropBand();
     dye_.restart();
-    surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
+    surface_ = std::make_unique<AnimatedSurface>(options_, *steps_, group_);
     const methods::MethodParams params = surface_->paramsFor(options_.params);
     views_ = shownViews();
     for (methods::Method m : views_) methods_.push_back(methods::makeRenderer(m, params, options_.size));
@@ -46,6 +83,7 @@ void Playback::build() {
 }
 
 void Playback::rebuild() {
+    requireOpen("rebuild");
     try {
         build();
     } catch (...) {
@@ -60,6 +98,7 @@ void Playback::rebuild() {
 }
 
 bool Playback::applyPending() {
+    requireOpen("render");
     const bool rebuilt = rebuildPending_;
     if (rebuildPending_) rebuild();
     if (camerasPending_) {
@@ -71,7 +110,7 @@ bool Playback::applyPending() {
 
 OptionEffect Playback::set(const std::string& name, const std::string& value) {
     const OptionEffect effect = effectOf(name);
-    if (effect == OptionEffect::Reload)
+    if (effect == OptionEffect::Reload && isOpen())
         throw ConfigError("--" + name + " is read with the input: open the input again to change it");
     setOption(options_, name, value);
     if (effect == OptionEffect::Camera) camerasPending_ = true;
@@ -81,7 +120,7 @@ OptionEffect Playback::set(const std::string& name, const std::string& value) {
 
 OptionEffect Playback::setOptions(const RenderOptions& o) {
     const OptionEffect effect = changeEffect(options_, o);
-    if (effect == OptionEffect::Reload)
+    if (effect == OptionEffect::Reload && isOpen())
         throw ConfigError("the input's options changed (input, field, patches...): open the input again");
     options_ = o;
     if (effect == OptionEffect::Camera) camerasPending_ = true;
@@ -100,15 +139,16 @@ void Playback::setStageTiming(bool on) {
 }
 
 void Playback::stepsChanged() {
+    requireOpen("stepsChanged");
     dye_.dropBand();  // the geometry may have changed: the band is made again at the next step
     surface_.reset();
-    surface_ = std::make_unique<AnimatedSurface>(options_, steps_, group_);
+    surface_ = std::make_unique<AnimatedSurface>(options_, *steps_, group_);
 }
 
 // --- an animation --------------------------------------------------------------------------
 
 const FrameCameras& Playback::frameCameras() {
-    if (!cameras_) cameras_ = std::make_unique<FrameCameras>(options_, steps_.bounds());
+    if (!cameras_) cameras_ = std::make_unique<FrameCameras>(options_, steps_->bounds());
     return *cameras_;
 }
 
@@ -126,6 +166,7 @@ void Playback::restart() {
 }
 
 void Playback::start(bool warmUp) {
+    requireOpen("start");
     started_ = true;
     startWarm_ = warmUp;
     applyPending();
@@ -148,6 +189,7 @@ void Playback::advance() {
 }
 
 void Playback::still(int f) {
+    requireOpen("still");
     started_ = true;
     startWarm_ = false;
     applyPending();
@@ -239,6 +281,7 @@ std::vector<uint8_t> Playback::readImage(int* width, int* height) const {
 // --- quality --------------------------------------------------------------------------------
 
 quality::FrameQuality Playback::measureLastFrame(size_t view) {
+    requireOpen("measureLastFrame");
     const uint32_t k = clock_ > 0 ? clock_ - 1 : 0;
     return quality_.measure(view, *methods_.at(view), surface_->atTime(lastTime_), lastCamera_, k);
 }

@@ -32,15 +32,29 @@ namespace flowsurf::session {
 
 class Playback {
 public:
-    // Renders the steps of `steps` (which must outlive the playback) with `views` side by
-    // side, each at o.size (empty: o.method alone). Needs a current GL 4.5 context; throws
-    // what AnimatedSurface, FrameCameras and methods::makeRenderer throw. `group`: the
+    // A playback of `views` side by side, each at o.size (empty: o.method alone), with no
+    // steps open yet: its options can be read and set (all of them, the input's included)
+    // before open() makes the surface and the renderers. Needs no GL context. `group`: the
     // processes rendering this view together (ParaView under MPI), or null.
+    explicit Playback(const RenderOptions& o = {}, std::vector<methods::Method> views = {},
+                      methods::ProcessGroup* group = nullptr);
+    // As above, and open(steps) at once.
     Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views = {},
              methods::ProcessGroup* group = nullptr);
     ~Playback();
     Playback(const Playback&) = delete;
     Playback& operator=(const Playback&) = delete;
+
+    // --- steps: open renders them, close lets them go -------------------------------------
+    // Renders the steps of `steps` (which must outlive the playback, or close()) as a new
+    // playback would: surface and renderers are made now, nothing is rendered yet, the
+    // clock and the frame count start at 0. Needs a current GL 4.5 context; throws what
+    // AnimatedSurface, FrameCameras and methods::makeRenderer throw, and the playback is
+    // left closed. Options, views, stage timing and the quality setting stay.
+    void open(core::StepProvider& steps);
+    // Drops surface and renderers (with the GL context current) and forgets the steps.
+    void close();
+    bool isOpen() const { return steps_ != nullptr; }
 
     // --- options -----------------------------------------------------------------------
     const RenderOptions& options() const { return options_; }
@@ -48,17 +62,18 @@ public:
     // does what the table's effect says: Camera: the frame cameras follow from the next
     // frame, textures and clock go on; Rebuild: surface and renderers are made anew before
     // the next frame and an animation starts over (with its warm-up); Output, None: nothing
-    // here. Reload is refused (ConfigError): the input must be opened again by the front
-    // end, which makes a new Playback. Returns the effect.
+    // here; Reload: taken while closed, refused (ConfigError) while open: the front end
+    // opens the input again (close, set, open) or makes a new Playback. Returns the effect.
     OptionEffect set(const std::string& name, const std::string& value);
     // All options at once (the viewer's state, ParaView's properties): as set() for each
-    // option that differs; returns the largest effect. Throws ConfigError on Reload.
+    // option that differs; returns the largest effect. Throws ConfigError on Reload while
+    // open.
     OptionEffect setOptions(const RenderOptions& o);
     // The methods side by side (a Rebuild).
     void setViews(std::vector<methods::Method> views);
     // Makes surface and renderers anew now (the clock restarts), so errors show now; on
     // failure the options, views, surface and renderers of the last build that worked
-    // are made again and the error is rethrown.
+    // are made again and the error is rethrown. ConfigError while closed.
     void rebuild();
     // The steps changed in place (ParaView hands over new data at each view time): the
     // surface is read and uploaded again; renderers, textures and clock go on.
@@ -74,7 +89,7 @@ public:
     // warm-up, or frame f alone when every method is history free.
     void still(int f);
     // Animation frames rendered since start() (the one shown is frame() - 1).
-    int frame() const { return frame_; }
+    int frame() const { return frame_; }  // 0 while closed
 
     // --- live: the camera and the data time come from outside (viewer, ParaView, bench) ---
     struct LiveFrame {
@@ -102,11 +117,11 @@ public:
     int warmupFrames() const;
     // True if every method computes each frame afresh (FlowMethod::historyFree).
     bool historyFree() const;
-    size_t viewCount() const { return methods_.size(); }
+    size_t viewCount() const { return methods_.size(); }  // 0 while closed
     methods::FlowMethod& view(size_t i) { return *methods_[i]; }
     const methods::FlowMethod& view(size_t i) const { return *methods_[i]; }
     methods::Method viewMethod(size_t i) const { return views_[i]; }
-    AnimatedSurface& surface() { return *surface_; }
+    AnimatedSurface& surface() { return *surface_; }  // while open
     const core::Camera& lastCamera() const { return lastCamera_; }
     double lastTime() const { return lastTime_; }  // data time of the last frame (0: steady)
     // Composites of every view side by side, RGB8, rows top to bottom.
@@ -139,6 +154,7 @@ public:
 
 private:
     void build();                       // surface, renderers, cameras from options_
+    void requireOpen(const char* call) const;  // ConfigError naming `call` while closed
     bool applyPending();                // a pending rebuild (true) or camera change, before a frame
     void restart();                     // the animation over, after a rebuild
     std::vector<methods::Method> shownViews() const;
@@ -148,7 +164,7 @@ private:
     const FrameCameras& frameCameras();  // of the options, made when an animation needs them
 
     RenderOptions options_, built_;     // as set, and of the last build that worked
-    core::StepProvider& steps_;
+    core::StepProvider* steps_ = nullptr;  // null: closed
     methods::ProcessGroup* group_;
     std::vector<methods::Method> requestedViews_, builtViews_, views_;
     std::unique_ptr<AnimatedSurface> surface_;

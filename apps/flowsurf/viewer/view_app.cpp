@@ -7,26 +7,23 @@
 
 #include "session/camera_path_file.h"
 #include "session/options/config_file.h"
-#include "session/options/json_file.h"
 #include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "io/image_writer.h"
 #include "io/text_writer.h"
 #include "io/video_writer.h"
+#include "view_outputs.h"
 #include "view_pipeline.h"
 #include "view_state.h"
 #include "view_window.h"
 
 #include <epoxy/gl.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
 #include <memory>
 #include <sstream>
 
@@ -35,26 +32,6 @@ namespace flowsurf::app::view {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Appends the camera as a keyframe to a --camera-path file (created if missing).
-void appendKeyframe(const std::string& path, const core::Camera& c, uint32_t frame) {
-    nlohmann::ordered_json doc = {{"keyframes", nlohmann::json::array()}};
-    if (std::ifstream(path).good()) {
-        doc = readJsonFile(path);
-        if (!doc.is_object() || !doc.contains("keyframes") || !doc["keyframes"].is_array())
-            throw FormatError(path + ": expected {\"keyframes\": [...]}; not appending to it");
-    }
-    auto& keys = doc["keyframes"];
-    if (!keys.empty() && keys.back().contains("frame") && keys.back()["frame"].is_number_integer() &&
-        keys.back()["frame"].get<long>() >= long(frame))
-        frame = uint32_t(keys.back()["frame"].get<long>() + 30);  // keyframes must move forward
-    keys.push_back({{"frame", frame},
-                    {"eye", {c.eye.x, c.eye.y, c.eye.z}},
-                    {"target", {c.target.x, c.target.y, c.target.z}},
-                    {"up", {c.up.x, c.up.y, c.up.z}},
-                    {"fov", c.fovDeg}});
-    io::writeTextFile(path, doc.dump(2) + "\n");
-}
 
 class Session {
 public:
@@ -139,11 +116,13 @@ private:
     // colour values the view shows now, set and recorded as MIN:MAX [issue 28]. False
     // (the event dropped, the error shown) when the view shows no such range.
     bool resolveVisibleRange(Event& e) {
-        if (e.type != EventType::Set || e.name != "color-range" || e.value != "visible") return true;
+        if (e.type != EventType::Set || e.value != "visible") return true;
+        const OptionSpec* spec = findOption(e.name);
+        if (!spec || spec->rescale != RangeRescale::DataAndView) return true;
         const std::optional<glm::vec2> r =
             pipeline_.ready() ? pipeline_.visibleColorRange(state_.time) : std::optional<glm::vec2>{};
         if (!r) {
-            state_.error = "color-range visible: the view shows no surface with a range of colour values";
+            state_.error = e.name + " visible: the view shows no surface with a range of colour values";
             return false;
         }
         e.value = formatFloat(r->x) + ":" + formatFloat(r->y);
@@ -350,35 +329,8 @@ private:
             log.push_back({long(log.empty() ? 0 : log.back().frame), EventType::Quit});
             io::writeTextFile(view_.recordEvents, formatEventLog(log));
         }
-        if (!view_.stats.empty()) {
-            nlohmann::ordered_json doc;
-            doc["frame_ms"] = frameMs_;
-            nlohmann::ordered_json stages = nlohmann::ordered_json::object();
-            for (size_t i = 0; pipeline_.ready() && i < pipeline_.viewCount(); ++i)
-                for (const auto& [stage, ms] : pipeline_.method(i).timer().meanMs())
-                    stages[pipeline_.viewCount() > 1 ? pipeline_.methodName(i) + "/" + stage : stage] = ms;
-            doc["stage_ms"] = stages;
-            doc["renderer"] = renderer_;
-            doc["view_size"] = {pipeline_.viewSize().width, pipeline_.viewSize().height};
-            if (pipeline_.ready() && state_.qualityEvery > 0) doc["quality"] = qualityStats();
-            io::writeTextFile(view_.stats, doc.dump(2) + "\n");
-        }
-    }
-
-    // Per view: frames measured, and the median and worst of each metric (null: none).
-    nlohmann::ordered_json qualityStats() {
-        nlohmann::ordered_json views = nlohmann::ordered_json::object();
-        for (size_t i = 0; i < pipeline_.viewCount(); ++i) {
-            const quality::QualitySummary s = pipeline_.playback().qualitySummary(i);
-            auto value = [](double v) { return std::isnan(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v); };
-            nlohmann::ordered_json median = nlohmann::ordered_json::object(), worst = median;
-            for (const quality::MetricInfo& m : quality::metricTable()) {
-                median[m.name] = value(s.median.*m.member);
-                worst[m.name] = value(s.worst.*m.member);
-            }
-            views[pipeline_.methodName(i)] = {{"frames", s.frames}, {"median", median}, {"worst", worst}};
-        }
-        return views;
+        if (!view_.stats.empty())
+            io::writeTextFile(view_.stats, statsJson(pipeline_, frameMs_, renderer_, state_.qualityEvery > 0));
     }
 
     ViewOptions view_;

@@ -81,14 +81,14 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool
         if (!ImGui::IsItemActive()) edits_.erase(spec.name);
         // Range options [issue 28]: one click rescales to the data's whole or robust range,
         // or (colour) to the values the view shows, set as MIN:MAX so that a log replays it.
-        if (spec.name == "color-range" || spec.name == "mask-range") {
+        if (spec.rescale != RangeRescale::None) {
             ImGui::PushID(label);
             ImGui::TextUnformatted("  rescale:");
             for (const char* to : {"robust", "data"}) {
                 ImGui::SameLine();
                 if (ImGui::SmallButton(to)) emitSet(spec.name, to);
             }
-            if (spec.name == "color-range" && visibleRange) {
+            if (spec.rescale == RangeRescale::DataAndView && visibleRange) {
                 ImGui::SameLine();
                 if (ImGui::SmallButton("visible")) emitSet(spec.name, "visible");  // resolved by the session
                 if (ImGui::IsItemHovered())
@@ -155,7 +155,20 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         return;
     }
     ImGui::PushItemWidth(170);
+    readout(state, pipeline, info);
+    methodSection(state, pipeline);
+    timeSection(state);
+    optionSections(state, pipeline);
+    stageTimes(pipeline);
+    qualitySection(state, pipeline);
+    saveSection(state);
+    keysSection();
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
 
+// The last error and message; what is shown and what it costs.
+void Window::readout(ViewerState& state, const ViewPipeline& pipeline, const FrameInfo& info) {
     if (!state.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
         ImGui::TextWrapped("Error: %s", state.error.c_str());
@@ -164,15 +177,16 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     }
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
 
-    // Read-out: what is shown and what it costs.
     ImGui::Text("%s", pipeline.input().c_str());
     ImGui::Text("%zu triangles, %dx%d per view", pipeline.triangles(), pipeline.viewSize().width,
                 pipeline.viewSize().height);
     ImGui::Text("%s", info.renderer.c_str());
     ImGui::Text("frame %.1f ms (%.1f fps), clock k = %u%s", info.frameMs, info.frameMs > 0 ? 1000.0 / info.frameMs : 0.0,
                 state.clock(), state.paused ? ", paused" : "");
+}
 
-    // Method.
+// Method (one, or all side by side), pause and step, and the field shown.
+void Window::methodSection(const ViewerState& state, const ViewPipeline& pipeline) {
     std::string all;
     for (const auto& [m, name] : methods::kMethodNames) {
         if (!all.empty()) ImGui::SameLine();
@@ -188,14 +202,15 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
     ImGui::SameLine();
     if (ImGui::Button("step")) queue_.push_back({frame_, EventType::Key, "n"});
 
-    // Field.
     if (!pipeline.vectorFields().empty() && ImGui::BeginCombo("field", pipeline.field().c_str())) {
         for (const std::string& f : pipeline.vectorFields())
             if (ImGui::Selectable(f.c_str(), f == pipeline.field())) emitSet("field", f);
         ImGui::EndCombo();
     }
+}
 
-    // Time (series).
+// Time playback of a series.
+void Window::timeSection(const ViewerState& state) {
     if (!state.stepTimes.empty() && ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (ImGui::Button(state.timePlaying ? "pause time" : "play time"))
             emitSet("time-playing", state.timePlaying ? "false" : "true");
@@ -214,8 +229,10 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         if (ImGui::InputDouble("time/frame", &speed, 0, 0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue))
             emitSet("speed", formatDouble(speed));
     }
+}
 
-    // Camera read-out, editable.
+// The camera read-out (editable) and the option rows of the panel, by group.
+void Window::optionSections(const ViewerState& state, const ViewPipeline& pipeline) {
     if (ImGui::CollapsingHeader("Camera")) {
         int mode = state.rotateMode == RotateMode::Turntable ? 0 : 1;
         if (ImGui::Combo("rotate", &mode, "turntable\0trackball\0")) emitSet("rotate", mode == 0 ? "turntable" : "trackball");
@@ -231,8 +248,10 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
                     optionWidget(spec, state, pipeline.ready());
 
     if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
+}
 
-    // Per-stage times of each view (mean over the last frames).
+// Per-stage times of each view (mean over the last frames).
+void Window::stageTimes(ViewPipeline& pipeline) {
     if (pipeline.ready() && ImGui::CollapsingHeader("Stage times", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (size_t i = 0; i < pipeline.viewCount(); ++i) {
             auto& timer = pipeline.method(i).timer();
@@ -241,10 +260,10 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
             for (const auto& [stage, ms] : timer.meanMs(false)) ImGui::BulletText("%-28s %7.2f ms", stage.c_str(), ms);
         }
     }
+}
 
-    qualitySection(state, pipeline);
-
-    // Outputs.
+// Screenshot, recording, settings, camera keyframe, open.
+void Window::saveSection(const ViewerState& state) {
     if (ImGui::CollapsingHeader("Save")) {
         ImGui::InputText("##shot", &screenshotPath_);
         ImGui::SameLine();
@@ -264,7 +283,9 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         ImGui::SameLine();
         if (ImGui::Button("open")) queue_.push_back({frame_, EventType::Open, "", openPath_});
     }
+}
 
+void Window::keysSection() {
     if (ImGui::CollapsingHeader("Mouse and keys")) {
         ImGui::BulletText("left drag: rotate (turntable; trackball with t)");
         ImGui::BulletText("middle drag or shift + left drag: pan");
@@ -273,8 +294,6 @@ void Window::panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& 
         ImGui::BulletText("ctrl + click on the surface: release dye there");
         for (const KeyBinding& k : keyTable()) ImGui::BulletText("%-6s %s", k.name, k.description);
     }
-    ImGui::PopItemWidth();
-    ImGui::End();
 }
 
 // How faithful each view's texture is to the field: off by default (a measured frame

@@ -53,6 +53,14 @@ public:
 
 private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
+    // The panel's sections, top to bottom.
+    void readout(ViewerState& state, const ViewPipeline& pipeline, const FrameInfo& info);
+    void methodSection(const ViewerState& state, const ViewPipeline& pipeline);
+    void timeSection(const ViewerState& state);
+    void optionSections(const ViewerState& state, const ViewPipeline& pipeline);
+    static void stageTimes(ViewPipeline& pipeline);
+    void saveSection(const ViewerState& state);
+    static void keysSection();
     // `visibleRange`: the colour range gets a "visible" button (`set color-range visible`).
     void optionWidget(const struct OptionSpec& spec, const ViewerState& state, bool visibleRange = false);
     void emitSet(const std::string& name, const std::string& value);

@@ -26,10 +26,9 @@ std::string valueText(const OptionSpec& spec, const nlohmann::ordered_json& v, c
     if (v.is_number_float()) return formatDouble(v.get<double>());
     if (v.is_array()) {
         std::string text;
-        const char* sep = spec.kind == OptionKind::Size ? "x" : spec.name == "time" ? ":" : ",";
         for (const auto& e : v) {
             if (!e.is_number()) throw ConfigError(where + ": array elements must be numbers");
-            text += (text.empty() ? "" : sep) + (e.is_number_float() ? formatDouble(e.get<double>())
+            text += (text.empty() ? "" : spec.arraySeparator) + (e.is_number_float() ? formatDouble(e.get<double>())
                                                                       : std::to_string(e.get<long long>()));
         }
         return text;

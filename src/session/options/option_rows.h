@@ -209,9 +209,11 @@ OptionSpec scalarSpec(std::string name, OptionRole role, std::string help, Ref r
 }
 
 // A range option [issue 28]: robust | data | auto | MIN:MAX, kept as a given range (lo > hi
-// when unset), the auto flag (each frame's data range) and the mode of the whole-data range.
+// when unset), the auto flag (each frame's data range) and the mode of the whole-data range;
+// the panel's rescale buttons.
 template <typename Range, typename Auto, typename Mode>
-OptionSpec rangeOption(std::string name, OptionRole role, std::string help, Range range, Auto automatic, Mode mode) {
+OptionSpec rangeOption(std::string name, OptionRole role, std::string help, Range range, Auto automatic, Mode mode,
+                       RangeRescale rescale) {
     const std::string what = dashed(name);
     return {.name = std::move(name),
             .role = role,
@@ -228,7 +230,8 @@ OptionSpec rangeOption(std::string name, OptionRole role, std::string help, Rang
                 if (automatic(m)) return std::string("auto");
                 if (r.x <= r.y) return formatFloat(r.x) + ":" + formatFloat(r.y);
                 return std::string(mode(m) == methods::RangeMode::Data ? "data" : "robust");
-            }};
+            },
+            .rescale = rescale};
 }
 
 }  // namespace flowsurf::session::rows

@@ -112,6 +112,14 @@ struct OptionRole {
     FrontEnd frontEnds = FrontEnd::CommandLine;
 };
 
+// The rescale buttons the viewer's panel offers for a range option (robust | data | auto |
+// MIN:MAX) [issue 28].
+enum class RangeRescale {
+    None,         // not a range option
+    Data,         // "robust" and "data": the data's bulk or whole range
+    DataAndView,  // also "visible": the range of the values the view shows, resolved by the viewer
+};
+
 // One row of the table. Every member has a default so that rows can name only theirs.
 struct OptionSpec {
     std::string name = {};                 // long name without dashes: CLI --name, config key, event `set name`
@@ -128,6 +136,10 @@ struct OptionSpec {
     std::function<std::string(const RenderOptions&)> get = {};
     // Given several times on the command line: the values joined by ';' are set at once.
     bool repeatable = false;
+    // Config files: the numbers of a JSON array joined by this into the option's text
+    // ([800, 600]: "800x600").
+    std::string arraySeparator = ",";
+    RangeRescale rescale = RangeRescale::None;
 
     bool takes(FrontEnd f) const { return (unsigned(role.frontEnds) & unsigned(f)) != 0; }
 };

@@ -27,7 +27,8 @@ std::vector<OptionSpec> outputRows() {
          .set = [](RenderOptions& o, const std::string& v) { o.size = parseSize(v); },
          .get = [](const RenderOptions& o) {
              return std::to_string(o.size.width) + "x" + std::to_string(o.size.height);
-         }},
+         },
+         .arraySeparator = "x"},
         number("frames", {G::Output, E::Rebuild, CommandLine | Config | Renderer},
                "PNG: advection frames before the output frame; MP4 or PNG sequence: frames written",
                &RenderOptions::frames, 0, 100000),
@@ -99,7 +100,8 @@ std::vector<OptionSpec> timeRows() {
          .get = [](const RenderOptions& o) {
              return o.timeRange ? formatDouble(o.timeRange->first) + ":" + formatDouble(o.timeRange->second)
                                 : std::string();
-         }},
+         },
+         .arraySeparator = ":"},
         number("time-per-frame", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
                "Data time per animation frame (0: see --frames-per-step)", &RenderOptions::timePerFrame, 0, 1e30),
         number("frames-per-step", {G::Data, E::Rebuild, CommandLine | Config | Renderer},

@@ -33,7 +33,8 @@ std::vector<OptionSpec> colourRows() {
                     "Values at the ends of the colour map: robust (the bulk of the data over all time steps, outliers "
                     "clamped: Tukey's fences on area-weighted quartiles), data (min:max over all time steps), auto "
                     "(each frame's min:max) or MIN:MAX", FS_REF(params.common.colorRange),
-                    FS_REF(params.common.colorRangeAuto), FS_REF(params.common.colorRangeMode)),
+                    FS_REF(params.common.colorRangeAuto), FS_REF(params.common.colorRangeMode),
+                    RangeRescale::DataAndView),
         choice("color-scale", {G::Overlay, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
                "Colour map scale: linear, or log (log10 of the values; the range must be positive)",
                methods::kColorScaleNames, FS_REF(params.common.colorScale)),
@@ -53,7 +54,7 @@ std::vector<OptionSpec> contrastRows() {
         rangeOption("mask-range", {G::Overlay, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
                     "Values of --mask-by at zero and full contrast: robust, data, auto or MIN:MAX, as --color-range",
                     FS_REF(params.common.maskRange), FS_REF(params.common.maskRangeAuto),
-                    FS_REF(params.common.maskRangeMode)),
+                    FS_REF(params.common.maskRangeMode), RangeRescale::Data),
         onOff("lighting", {G::Overlay, E::Rebuild, CommandLine | Config | Panel | Renderer}, "Diffuse lighting",
               FS_REF(params.common.lighting)),
         flag("velocity-mask", {G::Overlay, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
