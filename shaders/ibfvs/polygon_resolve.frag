@@ -31,6 +31,16 @@ void main() {
     vec3 ws = windowBarycentrics(p, c[0], c[1], c[2]);
     vec3 wp = perspectiveBarycentrics(ws, c[0], c[1], c[2]);
     vec2 tc = ws.x * texcoord[0] + ws.y * texcoord[1] + ws.z * texcoord[2];
+    if (min(min(c[0].w, c[1].w), c[2].w) <= 0.0) {
+        // A vertex behind the eye has no projection, so neither its t nor a window-space
+        // interpolation exists (the GL draw clips and interpolates garbage there): eq. 13 at
+        // the pixel's own surface point instead.
+        vec3 posObj = wp.x * vertexVec3(t[0], SURFACE_POS_OBJ_OFFSET) + wp.y * vertexVec3(t[1], SURFACE_POS_OBJ_OFFSET) +
+                      wp.z * vertexVec3(t[2], SURFACE_POS_OBJ_OFFSET);
+        vec3 velObj = wp.x * vertexVec3(t[0], SURFACE_VEL_OBJ_OFFSET) + wp.y * vertexVec3(t[1], SURFACE_VEL_OBJ_OFFSET) +
+                      wp.z * vertexVec3(t[2], SURFACE_VEL_OBJ_OFFSET);
+        tc = pathlineTexcoord(posObj, velObj, uDt, uPrevViewProj);
+    }
 #ifdef ADVECT_IN_COMPUTE
     outFlow = vec4(tc, 0.0, 1.0);
 #else

@@ -32,10 +32,16 @@ core::Camera orbited(core::Camera c, float degrees) {
     return c;
 }
 
-// One polygon pass over a smooth previous F_a (so that F_a's difference measures t's),
-// without noise (alpha 0): the texture coordinate alone decides the flow value.
+// Previous F_a: smooth waves (F_a's difference then measures t's), or a linear ramp, which
+// every resampling reproduces exactly.
+float waves(int x, int y) { return 0.5f + 0.4f * std::sin(0.45f * float(x)) * std::cos(0.37f * float(y)); }
+float ramp(int x, int y) { return 0.2f + 0.002f * float(x) + 0.001f * float(y); }
+
+// One polygon pass over `prevFlow`, without noise (alpha 0): the texture coordinate alone
+// decides the flow value.
 PassOutputs runPass(const core::SurfaceMesh& mesh, const core::Camera& camera, const core::Camera& prevCamera,
-                    const core::Viewport& vp, bool moving, methods::SurfaceRaster raster, methods::GlPath path, bool cull) {
+                    const core::Viewport& vp, bool moving, methods::SurfaceRaster raster, methods::GlPath path, bool cull,
+                    float (*prevFlow)(int, int) = waves) {
     methods::CommonParams common = test::testParams().common;
     common.surfaceRaster = raster;
     common.glPath = path;
@@ -50,7 +56,7 @@ PassOutputs runPass(const core::SurfaceMesh& mesh, const core::Camera& camera, c
     std::vector<float> prev(size_t(vp.width) * vp.height);
     for (int y = 0; y < vp.height; ++y)
         for (int x = 0; x < vp.width; ++x)
-            prev[size_t(y) * vp.width + x] = 0.5f + 0.4f * std::sin(0.45f * float(x)) * std::cos(0.37f * float(y));
+            prev[size_t(y) * vp.width + x] = prevFlow(x, y);
     glTextureSubImage2D(flow.texture(0).id(), 0, 0, 0, vp.width, vp.height, GL_RED, GL_FLOAT, prev.data());
     methods::ibfvs::PolygonAdvection pass(vp, common, shared);
     const float dt = moving ? methods::dtForStep({&surface, camera, 0}, vp, 3.0f) : 0.0f;
@@ -124,3 +130,57 @@ TEST(IbfvsSurfaceRaster, SmallTrianglesGiveTheDrawsOutputs) { checkScene("builti
 
 // Triangles of ~50 px: the visibility buffer hands them back to the GL rasteriser.
 TEST(IbfvsSurfaceRaster, LargeTrianglesGiveTheDrawsOutputs) { checkScene("builtin:overlap-planes:50", {0.2f, 0.3f, 1.0f}); }
+
+
+// Cameras inside the scene: triangles cut by the near plane, and (grazing along a plane from
+// just above it) triangles reaching behind the eye, whose vertices there have no projection
+// T(x_i - v_i dt). The GL draw interpolates t over the clipped triangle from its clip
+// vertices (perspective-linear, not linear in the window); the resolve interpolates in the
+// window over the whole triangle, and behind the eye evaluates eq. 13 at the pixel's surface
+// point. So with the camera still and dt = 0 every pixel reads the previous F_a at itself: a
+// ramp comes back unchanged (the GL draw misses that where it clips).
+void expectRampReadBack(const core::SurfaceMesh& mesh, const core::Camera& camera, const core::Viewport& vp) {
+    for (methods::SurfaceRaster raster : {methods::SurfaceRaster::Gl, methods::SurfaceRaster::Compute}) {
+        const PassOutputs out = runPass(mesh, camera, camera, vp, false, raster, methods::GlPath::Fragment, false, ramp);
+        size_t covered = 0, off = 0;
+        for (int y = 3; y < vp.height - 3; ++y)  // away from the border, where F_a is clamped
+            for (int x = 3; x < vp.width - 3; ++x) {
+                const size_t i = size_t(y) * vp.width + x;
+                if (out.depth[i] >= 1.0f) continue;
+                ++covered;
+                off += std::abs(out.flow[i] - ramp(x, y)) > 1e-4f;  // t within 0.05 px of the pixel
+            }
+        std::printf("%s raster: %zu of %zu covered pixels do not read themselves\n",
+                    raster == methods::SurfaceRaster::Compute ? "compute" : "GL", off, covered);
+        EXPECT_GT(covered, 10000u);
+        if (raster == methods::SurfaceRaster::Compute) {
+            EXPECT_EQ(off, 0u);
+        }
+    }
+}
+
+TEST(IbfvsSurfaceRaster, ClippedTrianglesReadThePixelItself) {
+    const core::Viewport vp{256, 192};
+    const core::Dataset data = core::makeBuiltin("builtin:overlap-planes:50");
+    const core::Bounds b = data.bounds();
+    const core::Camera fit = core::fitCamera(b, vp, {0.2f, 0.3f, 1.0f});
+    core::Camera inside = fit;
+    inside.eye = b.center() + 0.6f * (fit.eye - b.center()) * (b.radius() / glm::length(fit.eye - b.center()));
+    inside.eye.x += 0.4f * b.radius();
+    inside.nearPlane = 0.05f * b.radius();
+    expectRampReadBack(data.steps[0].mesh, inside, vp);
+    // Two triangles making the plane z = 0 over [-1, 1]^2, seen from just above it: the one
+    // under the eye reaches behind it and covers the bottom of the image.
+    core::SurfaceMesh plane;
+    plane.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    plane.normals.assign(4, {0, 0, 1});
+    plane.triangles = {{0, 1, 2}, {0, 2, 3}};
+    plane.fields = {{"velocity", std::vector<glm::vec3>(4, {1, 0, 0})}};
+    core::Camera grazing;
+    grazing.eye = {0.1f, -0.3f, 0.05f};
+    grazing.target = {0.1f, 1.0f, -0.1f};
+    grazing.up = {0.0f, 0.0f, 1.0f};
+    grazing.nearPlane = 0.01f;
+    grazing.farPlane = 5.0f;
+    expectRampReadBack(plane, grazing, vp);
+}
