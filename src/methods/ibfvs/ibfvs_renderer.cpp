@@ -55,7 +55,8 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
-    // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G]
+    // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G] (or the
+    // visibility buffer's resolve, the same per pixel: CommonParams::surfaceRaster)
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
