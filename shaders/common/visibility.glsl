@@ -17,6 +17,26 @@ vec3 vertexPosition(uint v) { return texelFetch(uVertices, int(v) * VERTEX_TEXEL
 // Float `i` (a SURFACE_*_OFFSET) of a vertex held as its texels, and the three from `i` on.
 float vertexFloat(vec4 t[VERTEX_TEXELS], int i) { return t[i / 4][i % 4]; }
 vec3 vertexVec3(vec4 t[VERTEX_TEXELS], int i) { return vec3(vertexFloat(t, i), vertexFloat(t, i + 1), vertexFloat(t, i + 2)); }
+// A vertex as its texels (the layout of gpu_bindings.h's surface_vertex), for the resolves.
+void vertexTexels(uint v, out vec4 t[VERTEX_TEXELS]) {
+    for (int j = 0; j < VERTEX_TEXELS; ++j) t[j] = texelFetch(uVertices, int(v) * VERTEX_TEXELS + j);
+}
+// The resolves' barycentrics of the point `pNdc` (a pixel centre) in the triangle of clip
+// positions c0, c1, c2: in the window (2D, what GL's noperspective interpolates with) and
+// then divided by w (perspective-correct, GL's default smooth).
+vec3 windowBarycentrics(vec2 pNdc, vec4 c0, vec4 c1, vec4 c2) {
+    vec2 a = c0.xy / c0.w, b = c1.xy / c1.w, d = c2.xy / c2.w;
+    float area = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+    vec3 w;
+    w.x = ((b.x - pNdc.x) * (d.y - pNdc.y) - (b.y - pNdc.y) * (d.x - pNdc.x)) / area;
+    w.y = ((d.x - pNdc.x) * (a.y - pNdc.y) - (d.y - pNdc.y) * (a.x - pNdc.x)) / area;
+    w.z = 1.0 - w.x - w.y;
+    return w;
+}
+vec3 perspectiveBarycentrics(vec3 window, vec4 c0, vec4 c1, vec4 c2) {
+    vec3 w = window / vec3(c0.w, c1.w, c2.w);
+    return w / (w.x + w.y + w.z);
+}
 
 // One covered pixel of triangle `tri` at window depth `depth` (the same float in both
 // passes: the same code computes it from the same inputs).

@@ -41,10 +41,11 @@ inline constexpr BindingPoint kIsaPrevFlow = textureUnit("ISA_PREV_FLOW_UNIT", 0
 inline constexpr BindingPoint kIsaMesh = textureUnit("ISA_MESH_UNIT", 1);                   // the advection mesh
 inline constexpr BindingPoint kIsaSurfaceDepth = textureUnit("ISA_SURFACE_DEPTH_UNIT", 2);  // velocity image depth
 inline constexpr BindingPoint kIsaNextFlow = imageUnit("ISA_NEXT_FLOW_IMAGE_UNIT", 0);      // F_a(k), R32F
-// IBFVS stages 2-3, polygon advection (ibfvs/polygon_advection.*).
-inline constexpr BindingPoint kIbfvsPrevFlow = textureUnit("IBFVS_PREV_FLOW_UNIT", 0);      // F_a(k-1), R32F
-inline constexpr BindingPoint kIbfvsTexcoord = textureUnit("IBFVS_TEXCOORD_UNIT", 1);       // RG32F, from the draw
-inline constexpr BindingPoint kIbfvsDepth = textureUnit("IBFVS_DEPTH_UNIT", 2);             // the draw's depth
+// IBFVS stages 2-3, polygon advection (ibfvs/polygon_advection.*). The previous F_a apart
+// from the visibility buffer's units: ibfvs/polygon_resolve.frag reads both.
+inline constexpr BindingPoint kIbfvsPrevFlow = textureUnit("IBFVS_PREV_FLOW_UNIT", 2);      // F_a(k-1), R32F
+inline constexpr BindingPoint kIbfvsTexcoord = textureUnit("IBFVS_TEXCOORD_UNIT", 0);       // RG32F, from the draw
+inline constexpr BindingPoint kIbfvsDepth = textureUnit("IBFVS_DEPTH_UNIT", 1);             // the draw's depth
 inline constexpr BindingPoint kIbfvsNextFlow = imageUnit("IBFVS_NEXT_FLOW_IMAGE_UNIT", 0);  // F_a(k), R32F
 // Noise injection [L eq. 9] (common/noise_injection.*), beside either advection's units.
 inline constexpr BindingPoint kNoisePhases = textureUnit("NOISE_PHASES_UNIT", 3);  // R32F phase per noise cell

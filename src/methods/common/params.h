@@ -49,10 +49,11 @@ enum class NoiseInjectionMode { Point, Swept };
 enum class GlPath { Auto, Compute, Fragment };
 
 // Who rasterises the surface into the per-pixel buffers (ISA's velocity image, the hybrid's
-// seed textures). Gl: the GL rasteriser. Compute: a visibility buffer filled by compute
-// shaders, one invocation per triangle (methods/common/surface_raster.h); the same buffers
-// up to float rounding. Auto: compute on a software renderer when the triangles are many
-// for the image (methods::useComputeRaster), else GL.
+// seed textures, IBFVS's polygon pass). Gl: the GL rasteriser. Compute: a visibility buffer
+// filled by compute shaders, one invocation per triangle (methods/common/visibility_buffer.h);
+// the same buffers up to float rounding. Auto: compute on a software renderer or a GPU with
+// few graphics units when the triangles are many for the image (methods::useComputeRaster),
+// else GL.
 enum class SurfaceRaster { Auto, Gl, Compute };
 
 // How processes that render one view together (sort-last, each with a piece of the

@@ -20,6 +20,20 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
 
+void IbfvsRenderer::pullSource(const FrameInput& in, const core::Camera& sourceCamera) {
+    if (madeWith_[source_].empty()) return;
+    // Tiles: the source texture where this piece's fragments read it, from the processes
+    // that made it: the piece seen from the source view, plus the step (at most stepPx on
+    // screen), twice for safety, and the bicubic's reach.
+    timer_.begin("tile exchange");
+    const int margin = int(std::ceil(2.0f * params_.common.stepPx)) + 3;
+    const PixelRect wanted = projectedRect(in.surface->pieceBounds(), sourceCamera.viewProjection(viewport_.aspect()),
+                                           viewport_.width, viewport_.height)
+                                 .grown(margin)
+                                 .intersect({0, 0, viewport_.width, viewport_.height});
+    tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
+}
+
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
@@ -37,23 +51,12 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const int target = 1 - source_;
     const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
     const bool tiled = tiledParallel(in, c);
-    if (tiled && !madeWith_[source_].empty()) {
-        // Tiles: the source texture where this piece's fragments read it, from the processes
-        // that made it: the piece seen from the source view, plus the step (at most stepPx
-        // on screen), twice for safety, and the bicubic's reach.
-        timer_.begin("tile exchange");
-        const int margin = int(std::ceil(2.0f * c.stepPx)) + 3;
-        const PixelRect wanted =
-            projectedRect(in.surface->pieceBounds(), plan.sourceCamera.viewProjection(viewport_.aspect()), viewport_.width,
-                          viewport_.height)
-                .grown(margin)
-                .intersect({0, 0, viewport_.width, viewport_.height});
-        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
-    }
+    if (tiled) pullSource(in, plan.sourceCamera);
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
-    // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G]
+    // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G] (or the
+    // visibility buffer's resolve, the same per pixel: CommonParams::surfaceRaster)
     timer_.begin("texture advection");
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),

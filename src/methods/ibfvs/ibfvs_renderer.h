@@ -31,6 +31,9 @@ public:
     TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
 
 private:
+    // Tiles: the source F_a this piece's fragments read, from the processes that made it.
+    void pullSource(const FrameInput& in, const core::Camera& sourceCamera);
+
     MethodParams params_;
     core::Viewport viewport_;
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw

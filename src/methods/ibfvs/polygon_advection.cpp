@@ -7,15 +7,21 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace flowsurf::methods::ibfvs {
 
 PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common,
                                    std::initializer_list<FlowPingPong::Attachment> shared)
     : noise_(common, viewport),
       path_(resolveGlPath(common.glPath)),
-      program_(program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
-                       resampleDefine(common.resample) + noise_.defines() +
-                           (path_ == GlPath::Compute ? "#define ADVECT_IN_COMPUTE 1\n" : ""))) {
+      raster_(common.surfaceRaster),
+      renderer_(currentRenderer()),
+      defines_(resampleDefine(common.resample) + noise_.defines() +
+               (path_ == GlPath::Compute ? "#define ADVECT_IN_COMPUTE 1\n" : "")),
+      lastFootprint_{0, 0, viewport.width, viewport.height} {
+    program_ = program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
+                       defines_);
     if (path_ != GlPath::Compute) return;
     advectProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/polygon_advection.comp"}},
                              resampleDefine(common.resample) + noise_.defines());
@@ -30,19 +36,39 @@ PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonP
     texcoordFbo_.finish(colors);
 }
 
+const gl::Program& PolygonAdvection::surfaceProgram(bool visibility) {
+    if (!visibility) return program_;
+    if (!resolve_) {
+        resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
+                           defines_);
+        emptyVao_ = gl::VertexArray::create();
+    }
+    return resolve_;
+}
+
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
                              const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo,
                              const gl::Texture2D& depth, float flowBackground, bool cullBackFaces,
-                             const NoiseStep& noise) const {
-    program_.use();
-    if (path_ != GlPath::Compute) {
-        noise_.bind(program_, noise);
+                             const NoiseStep& noise) {
+    // As SurfaceGBuffer: the rule counts the whole surface's triangles (every process decides alike).
+    lastVisibility_ = surface.vertexTexture() && useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(),
+                                                                  size_t(viewport.width) * viewport.height);
+    const Views views{camera.view(), camera.projection(viewport.aspect()) * camera.view(),
+                      prevCamera.viewProjection(viewport.aspect()), dt};
+    const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
+    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces);
+    const bool advectHere = path_ != GlPath::Compute;  // the fragments resample and inject
+    clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground);
+    surfacePass.use();
+    setViews(surfacePass, views);
+    if (advectHere) {
+        noise_.bind(surfacePass, noise);
         glBindTextureUnit(bindings::kIbfvsPrevFlow, prevFlow.id());
-        draw(surface, camera, prevCamera, viewport, dt, nextFlowFbo, flowBackground, cullBackFaces);
-        return;
     }
-    draw(surface, camera, prevCamera, viewport, dt, texcoordFbo_, flowBackground, cullBackFaces);
+    if (lastVisibility_) resolveVisibility(surface, viewport);
+    else draw(surface, cullBackFaces);
+    if (advectHere) return;
     advectProgram_.use();
     noise_.bind(advectProgram_, noise);
     glUniform1f(advectProgram_.uniform("uFlowBackground"), flowBackground);
@@ -53,9 +79,7 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     dispatchPerPixel(viewport.width, viewport.height);
 }
 
-void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
-                            const core::Viewport& viewport, float dt, const gl::Framebuffer& target,
-                            float flowBackground, bool cullBackFaces) const {
+void PolygonAdvection::clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
@@ -64,6 +88,16 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camer
     glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kShade, zero);
     glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kMask, zero);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
+}
+
+void PolygonAdvection::setViews(const gl::Program& program, const Views& views) {
+    glUniformMatrix4fv(program.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(views.viewProj));
+    glUniformMatrix4fv(program.uniform("uPrevViewProj"), 1, GL_FALSE, glm::value_ptr(views.prevViewProj));
+    glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, glm::value_ptr(views.view));
+    glUniform1f(program.uniform("uDt"), views.dt);
+}
+
+void PolygonAdvection::draw(const SurfaceGpu& surface, bool cullBackFaces) const {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -71,16 +105,38 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, const core::Camera& camer
     else glDisable(GL_CULL_FACE);                // open surfaces are seen from both sides
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    glm::mat4 view = camera.view();
-    glm::mat4 viewProj = camera.projection(viewport.aspect()) * view;
-    glm::mat4 prevViewProj = prevCamera.viewProjection(viewport.aspect());
-    glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-    glUniformMatrix4fv(program_.uniform("uPrevViewProj"), 1, GL_FALSE, glm::value_ptr(prevViewProj));
-    glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
-    glUniform1f(program_.uniform("uDt"), dt);
     surface.draw();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
+}
+
+void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj,
+                                           const core::Viewport& viewport, bool cullBackFaces) {
+    if (!visibility_) visibility_ = std::make_unique<VisibilityBuffer>(viewport);
+    // Cleared where this or the last surface can be (elsewhere it holds no triangle already).
+    footprint_ = projectedRect(surface.pieceBounds(), viewProj, viewport.width, viewport.height);
+    PixelRect clear = lastFootprint_.empty() ? footprint_ : lastFootprint_;
+    if (!footprint_.empty())
+        clear = {std::min(clear.x0, footprint_.x0), std::min(clear.y0, footprint_.y0),
+                 std::max(clear.x1, footprint_.x1), std::max(clear.y1, footprint_.y1)};
+    lastFootprint_ = footprint_;
+    visibility_->rasterize(surface, viewProj, cullBackFaces, clear);
+}
+
+void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const {
+    if (footprint_.empty()) return;
+    glUniform2i(resolve_.uniform("uSize"), viewport.width, viewport.height);
+    glEnable(GL_SCISSOR_TEST);  // the surface's pixels only
+    glScissor(footprint_.x0, footprint_.y0, footprint_.width(), footprint_.height());
+    glEnable(GL_DEPTH_TEST);    // to write gl_FragDepth
+    glDepthFunc(GL_ALWAYS);
+    glDisable(GL_BLEND);
+    visibility_->bind(surface);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace flowsurf::methods::ibfvs

@@ -8,6 +8,9 @@
 // triangles, depth-tested) but only interpolates the texture coordinate (RG32F); a compute
 // pass then resamples and injects per pixel: the same image, the arithmetic off the
 // fragment stage, at the cost of one RG32F write and read.
+// Compute raster (CommonParams::surfaceRaster, the rule of SurfaceGBuffer): the draw is
+// replaced by the visibility buffer and a resolve (ibfvs/polygon_resolve.frag) that writes
+// the same outputs per pixel from each pixel's nearest triangle; either path above follows.
 #pragma once
 
 #include "core/camera.h"
@@ -15,13 +18,19 @@
 #include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
 #include "methods/common/render_targets.h"
+#include "methods/common/screen_split.h"
 #include "methods/common/surface_gpu.h"
+#include "methods/common/visibility_buffer.h"
+
+#include <memory>
+#include <string>
 
 namespace flowsurf::methods::ibfvs {
 
 class PolygonAdvection {
 public:
-    // `common`: the resampling, the noise injection mode, scale and step, the GL path.
+    // `common`: the resampling, the noise injection mode, scale and step, the GL path, the
+    // surface raster.
     // `shared`: what the draw writes besides F_a (shade, mask, depth; as FlowPingPong's).
     PolygonAdvection(const core::Viewport& viewport, const CommonParams& common,
                      std::initializer_list<FlowPingPong::Attachment> shared);
@@ -30,12 +39,25 @@ public:
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
                const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, const gl::Texture2D& depth,
-               float flowBackground, bool cullBackFaces, const NoiseStep& noise) const;
+               float flowBackground, bool cullBackFaces, const NoiseStep& noise);
+    // Whether the last apply rasterised with the visibility buffer.
+    bool lastUsedVisibility() const { return lastVisibility_; }
 
 private:
-    void draw(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
-              const core::Viewport& viewport, float dt, const gl::Framebuffer& target, float flowBackground,
-              bool cullBackFaces) const;
+    struct Views {
+        glm::mat4 view, viewProj, prevViewProj;
+        float dt;
+    };
+    // Clears `target` (F_a to the gray background, shade, mask, depth) and binds it.
+    static void clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground);
+    static void setViews(const gl::Program& program, const Views& views);
+    void draw(const SurfaceGpu& surface, bool cullBackFaces) const;
+    void rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj, const core::Viewport& viewport,
+                             bool cullBackFaces);
+    // Over the bound target, from the visibility buffer, with the resolve program in use.
+    void resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const;
+    // The surface program of this apply: the draw's, or the resolve's (made on first use).
+    const gl::Program& surfaceProgram(bool visibility);
 
     NoiseInjection noise_;
     GlPath path_;
@@ -43,6 +65,16 @@ private:
     gl::Program advectProgram_;  // compute path: the per-pixel pass
     gl::Texture2D texcoord_;     // compute path: RG32F, the draw's texture coordinates
     gl::Framebuffer texcoordFbo_;
+    // Compute raster: made on first use.
+    SurfaceRaster raster_;
+    std::string renderer_;  // GL_RENDERER, for the auto rule of useComputeRaster
+    std::string defines_;   // the draw's, for the resolve
+    std::unique_ptr<VisibilityBuffer> visibility_;
+    gl::Program resolve_;
+    gl::VertexArray emptyVao_;
+    PixelRect footprint_;      // the pixels this visibility pass's surface can cover
+    PixelRect lastFootprint_;  // where the last one can have left triangles
+    bool lastVisibility_ = false;
 };
 
 }  // namespace flowsurf::methods::ibfvs

@@ -70,7 +70,7 @@ std::vector<OptionSpec> stageRows() {
                "Per-pixel passes as compute or fragment shaders (same images); auto picks per GL renderer",
                methods::kGlPathNames, FS_REF(params.common.glPath)),
         choice("surface-raster", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
-               "Who rasterises the surface (ISA's velocity image, the hybrid's seeds): gl, or compute shaders (a "
+               "Who rasterises the surface (ISA's velocity image, the hybrid's seeds, IBFVS's polygon pass): gl, or compute shaders (a "
                "visibility buffer; faster for many small triangles on a software renderer or on GPUs with few "
                "graphics units); auto picks compute " + computeRasterRuleText(),
                methods::kSurfaceRasterNames, FS_REF(params.common.surfaceRaster)),
