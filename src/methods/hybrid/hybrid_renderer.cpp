@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "methods/common/gl_path.h"
+#include "methods/common/stages.h"
 
 #include <algorithm>
 #include <chrono>
@@ -41,12 +42,12 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     const float speedRef = in.surface->maxSpeed();
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (lastDynamic_) {
-        timer_.begin("seed textures");
+        timer_.begin(stageName(Stage::SeedTextures));
         seeds_.render(*in.surface, in.camera);
         // (1b) unsteady flow: the velocity image of every time level the particles pass
         // through, "the projection of the vector data within the integration loop" [W §3]
         if (unsteady) {
-            timer_.begin("velocity levels");
+            timer_.begin(stageName(Stage::VelocityLevels));
             levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
         }
         if (!tiled && in.group) seeds_.merge(*in.group);  // the whole surface's seeds
@@ -59,24 +60,24 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     if (unsteady) seedLevels_ = *in.levels;
 
     // (2) solid noise N(r, t) at this frame's phase [W §5]
-    timer_.begin("solid noise");
+    timer_.begin(stageName(Stage::SolidNoise));
     noise_.update(in.frame, c.noise);
 
     // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
-    timer_.begin("particle tracing");
+    timer_.begin(stageName(Stage::ParticleTracing));
     traceParticles(in, unsteady, tiled, speedRef);
 
     // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
-    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
     shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
     if (overlay_.stretchesColor()) {
-        timer_.begin("contrast (colour)");
+        timer_.begin(stageName(Stage::ContrastColour));
         overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
     }
 
     // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
-    timer_.begin("overlay");
+    timer_.begin(stageName(Stage::Overlay));
     overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
@@ -86,7 +87,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 // reach; the seeds' depth decides every layer's nearest fragment. Also when the measured
 // costs call for a new split (a still camera).
 void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
-    timer_.begin("tile exchange");
+    timer_.begin(stageName(Stage::TileExchange));
     if (!tileVelocity_)
         tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
     std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
@@ -132,10 +133,10 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool ti
     tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
-        timer_.begin("contrast (texture)");
+        timer_.begin(stageName(Stage::ContrastTexture));
         contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
     }
-    timer_.begin("tile return");
+    timer_.begin(stageName(Stage::TileReturn));
     tiles_->returnValues(*in.group, lic_.texture());
 }
 

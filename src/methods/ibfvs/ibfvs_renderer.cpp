@@ -1,6 +1,7 @@
 #include "methods/ibfvs/ibfvs_renderer.h"
 
 #include "methods/common/gpu_bindings.h"
+#include "methods/common/stages.h"
 
 #include <cmath>
 
@@ -25,7 +26,7 @@ void IbfvsRenderer::pullSource(const FrameInput& in, const core::Camera& sourceC
     // Tiles: the source texture where this piece's fragments read it, from the processes
     // that made it: the piece seen from the source view, plus the step (at most stepPx on
     // screen), twice for safety, and the bicubic's reach.
-    timer_.begin("tile exchange");
+    timer_.begin(stageName(Stage::TileExchange));
     const int margin = int(std::ceil(2.0f * params_.common.stepPx)) + 3;
     const PixelRect wanted = projectedRect(in.surface->pieceBounds(), sourceCamera.viewProjection(viewport_.aspect()),
                                            viewport_.width, viewport_.height)
@@ -57,7 +58,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
     // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G] (or the
     // visibility buffer's resolve, the same per pixel: CommonParams::surfaceRaster)
-    timer_.begin("texture advection");
+    timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
@@ -69,7 +70,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // this piece's (its own fragments are what it composites).
     if (tiled) {
         // Each tile's F_a merged by depth; the owners keep it for the next frame's pulls.
-        timer_.begin("tile exchange");
+        timer_.begin(stageName(Stage::TileExchange));
         const gl::Texture2D& fa = flow_.texture(target);
         std::vector<TileLayer> layers{TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
         if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
@@ -80,7 +81,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
         madeWith_[target] = tiles_->tiles();
         // (3b, tiles) the contrast histogram of this tile, summed over the processes
         if (contrast_.enabled()) {
-            timer_.begin("contrast (texture)");
+            timer_.begin(stageName(Stage::ContrastTexture));
             contrast_.measure(fa, tileDepth_, tiles_->tile(), in.group);
         }
     } else if (in.group) {
@@ -89,23 +90,23 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
 
     // (3b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself
-    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(flow_.texture(current_), depth_);
     shown_ = &contrast_.stretch(flow_.texture(current_), depth_);
     if (overlay_.stretchesColor()) {
-        timer_.begin("contrast (colour)");
+        timer_.begin(stageName(Stage::ContrastColour));
         overlay_.measureLightness(*shown_, depth_, shade_, mask_);
     }
 
     // (4) overlay [L eq. 10]
-    timer_.begin("overlay");
+    timer_.begin(stageName(Stage::Overlay));
     overlay_.apply(*shown_, depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     // In parallel every process takes part (an empty piece receives the others' outlines).
     if (params_.ibfvs.edgeMask && (in.surface->hasEdges() || (in.group && in.group->size() > 1))) {
-        timer_.begin("edge mask");
+        timer_.begin(stageName(Stage::EdgeMask));
         edgeMask_.apply(*in.surface, in.camera, viewport_, depth_, composite_.fbo(),
                         {c.background, params_.ibfvs.edgeMaskOpacity, params_.ibfvs.edgeMaskWidthPx}, in.group);
     }

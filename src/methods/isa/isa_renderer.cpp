@@ -1,6 +1,7 @@
 #include "methods/isa/isa_renderer.h"
 
 #include "methods/common/gl_path.h"
+#include "methods/common/stages.h"
 
 #include <algorithm>
 #include <chrono>
@@ -73,16 +74,16 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself
     const SurfaceGBuffer& vel = velocityImage_[vi_];
-    if (contrast_.enabled()) timer_.begin("contrast (texture)");
+    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());
     shown_ = &contrast_.stretch(flow_.texture(current_), vel.depth());
     if (overlay_.stretchesColor()) {
-        timer_.begin("contrast (colour)");
+        timer_.begin(stageName(Stage::ContrastColour));
         overlay_.measureLightness(*shown_, vel.depth(), vel.shade(), vel.mask());
     }
 
     // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
-    timer_.begin("overlay");
+    timer_.begin(stageName(Stage::Overlay));
     overlay_.apply(*shown_, vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
                    piecePixels(in, c, viewport_));
     timer_.endFrame();
@@ -90,7 +91,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 
 // Tiles: the whole surface's velocity and depth over this tile plus a grid cell.
 void IsaRenderer::distributeTiles(const FrameInput& in) {
-    timer_.begin("tile exchange");
+    timer_.begin(stageName(Stage::TileExchange));
     if (!tileVelocity_) {
         tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
         for (gl::Texture2D& d : mergedDepth_)
@@ -110,7 +111,7 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     if (viewChanged(in)) {
         vi_ = 1 - vi_;
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
-        timer_.begin("velocity image");
+        timer_.begin(stageName(Stage::VelocityImage));
         velocityImage_[vi_].render(*in.surface, in.camera);
         if (tiled) distributeTiles(in);
         else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
@@ -119,7 +120,7 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     }
 
     // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
-    timer_.begin("advection mesh");
+    timer_.begin(stageName(Stage::AdvectionMesh));
     const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
     const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
     const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi, tiled);
@@ -135,9 +136,9 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
         // depth); that part of the depth from its makers, then the mesh again.
         footprint_ = footprint(tiles_->tile());
         if (!depthMadeWith_[sourceVi].empty()) {
-            timer_.begin("tile exchange");
+            timer_.begin(stageName(Stage::TileExchange));
             tiles_->pull(*in.group, sourceDepth, depthMadeWith_[sourceVi], footprint_);
-            timer_.begin("advection mesh");
+            timer_.begin(stageName(Stage::AdvectionMesh));
             computeMesh();
         }
     }
@@ -154,10 +155,10 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
 void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled) {
     const CommonParams& c = params_.common;
     const int target = 1 - source_;
-    timer_.begin("texture advection");
+    timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     if (tiled && !madeWith_[source_].empty()) {
-        timer_.begin("tile exchange");
+        timer_.begin(stageName(Stage::TileExchange));
         tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
     }
     const auto advected = std::chrono::steady_clock::now();
@@ -174,11 +175,11 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     madeWith_[target] = tiles_->tiles();
     // (4b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
-        timer_.begin("contrast (texture)");
+        timer_.begin(stageName(Stage::ContrastTexture));
         contrast_.measure(flow_.texture(target), depthOf(vi_, tiled), tiles_->tile(), in.group);
     }
     // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
-    timer_.begin("tile return");
+    timer_.begin(stageName(Stage::TileReturn));
     tiles_->returnValues(*in.group, flow_.texture(target));
 }
 
