@@ -10,21 +10,22 @@ per machine. Rows are parsed from the table `flowsurf bench` prints (bench/bench
 import sys
 from pathlib import Path
 
-STAGES = ["surface", "adv.mesh", "advect", "noise", "overlay", "contrast"]
-
-
 def rows(path):
-    out = []
+    """The rows of a `flowsurf bench` table; the stage columns named by its header line."""
+    out, stages = [], []
     for line in Path(path).read_text().splitlines():
         f = line.split()
+        if f[:2] == ["method", "case"]:
+            stages = line.split("|")[2].split()
+            continue
         if len(f) < 12 or f[0] not in ("isa", "ibfvs", "hybrid") or "|" not in f:
             continue
         bar = f.index("|")
         method, case, tris, image, param, path, raster = f[:7]
         ms = float(f[bar + 1])
-        stages = dict(zip(STAGES, map(float, f[bar + 4:bar + 4 + len(STAGES)])))
+        times = dict(zip(stages, map(float, f[bar + 4:bar + 4 + len(stages)])))
         out.append(dict(method=method, case=case, tris=int(tris), image=image, param=param, path=path,
-                        raster=raster, ms=ms, **stages))
+                        raster=raster, ms=ms, stages=times))
     return out
 
 
@@ -54,7 +55,8 @@ def main():
     params = {"isa": "R=256", "ibfvs": "-", "hybrid": "L=31"}
 
     print("**Surface raster, GL vs compute** (dynamic ms per frame, compute per-pixel path; "
-          "ISA R = 256, hybrid L = 31; IBFVS draws its polygons with GL either way)\n")
+          "ISA R = 256, hybrid L = 31; IBFVS drew its polygons with GL either way in this run, see above for its "
+          "compute pass)\n")
     header = ["method, triangles, image"]
     for m in labels:
         header += [f"{m} GL", f"{m} compute"]
