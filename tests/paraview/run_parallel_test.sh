@@ -16,7 +16,10 @@ export PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages"
 # Open MPI as root (CI) and more ranks than cores; shared-memory transport without
 # ptrace-based single copy (refused in containers).
 MPI=(mpiexec --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none)
-# xrun LOG CMD...: CMD under xvfb-run with its output in LOG. Tried again, up to 3 times,
+# xrun LOG CMD...: CMD under xvfb-run with its output in LOG, on a display number drawn at
+# random (xvfb-run -a alone reuses :99 while the previous run's Xvfb, killed last by its
+# clean-up and not waited for, still holds it: three back-to-back failures seen under ctest
+# -j2). Tried again, up to 3 times,
 # on two failures that are not ours: a display taken by another xvfb-run starting at the
 # same moment (pvbatch aborts with "bad X server connection"), and ParaView's own startup
 # hang at 4 ranks on 2 cores (rank 0 in IceT's MPI_Comm_dup before the first render, the
@@ -28,7 +31,7 @@ xrun() {
   local log="$1" rc attempt
   shift
   for attempt in 1 2 3; do
-    timeout -k 10 150 xvfb-run -a "$@" >"$log" 2>&1
+    timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" "$@" >"$log" 2>&1
     rc=$?
     if grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log"; then
       echo "no X display (attempt $attempt), again"

@@ -15,7 +15,7 @@ mkdir -p "$OUT"
 log="$OUT/plugin_test.log"
 # A display taken by another xvfb-run starting at the same moment: only that is retried.
 for attempt in 1 2 3; do
-  PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a pvbatch \
+  PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a -n "$((200 + RANDOM % 600))" pvbatch \
     "$(dirname "$0")/plugin_test.py" "$PLUGIN" "$OUT" >"$log" 2>&1
   rc=$?
   grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log" || break

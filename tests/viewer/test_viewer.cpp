@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -22,6 +23,13 @@ using namespace flowsurf;
 namespace fs = std::filesystem;
 
 namespace {
+
+// xvfb-run on a display number drawn at random: with -a alone, a run right after another
+// can take :99 while the earlier Xvfb (killed last by xvfb-run's clean-up, not waited for)
+// still holds it.
+std::string xvfbRun() {
+    return "xvfb-run -a -n " + std::to_string(200 + std::random_device{}() % 600) + " -s '-screen 0 1024x768x24' ";
+}
 
 // Background of every test render: a colour no texture makes, so it marks "no surface".
 constexpr const char* kBackground = "#ff00ff";
@@ -58,7 +66,7 @@ protected:
     }
     int runWindowScript(const std::string& script) {
         const std::string file = std::string(FLOWSURF_SOURCE_DIR) + "/tests/viewer/" + script;
-        return std::system(("xvfb-run -a -s '-screen 0 1024x768x24' '" + file + "' '" + exe_ + "' '" + dir_ + "'").c_str());
+        return std::system((xvfbRun() + "'" + file + "' '" + exe_ + "' '" + dir_ + "'").c_str());
     }
     // Writes an event log and replays it headless on `input` with `options`.
     int replay(const std::string& input, const std::string& log, const std::string& options,
@@ -368,7 +376,7 @@ TEST_F(Viewer, RealWindowUnderXvfb) {
                             "at 20 screenshot " + path("shot.png") + "\n"
                             "at 20 window-screenshot " + path("window.png") + "\n"
                             "at 21 quit\n";
-    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360", "xvfb-run -a -s '-screen 0 1024x768x24' ", false), 0)
+    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360", xvfbRun(), false), 0)
         << err_;
     fs::rename(path("shot.png"), path("window_shot.png"));
     fs::rename(path("window.png"), path("window_full.png"));
@@ -425,7 +433,7 @@ TEST_F(Viewer, CollapsedPanelGivesTheSpaceBack) {
                             "at 13 set panel-collapsed false\n"
                             "at 19 screenshot " + path("again_shot.png") + "\n"
                             "at 20 quit\n";
-    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360", "xvfb-run -a -s '-screen 0 1024x768x24' ", false), 0)
+    ASSERT_EQ(replay("builtin:tori", log, "--size 480x360", xvfbRun(), false), 0)
         << err_;
     const io::PngImage open = png(path("open.png")), openShot = png(path("open_shot.png"));
     const io::PngImage collapsed = png(path("collapsed.png")), shot = png(path("collapsed_shot.png"));
