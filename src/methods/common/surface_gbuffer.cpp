@@ -109,29 +109,18 @@ void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Cam
         visibility_ = std::make_unique<VisibilityBuffer>(viewport_);
         resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_resolve.frag"}},
                            targets_ == 4 ? "#define WITH_POSITION 1\n" : "");
-        emptyVao_ = gl::VertexArray::create();
     }
     const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     const PixelRect clear = beginFootprint(surface, viewProj);
     visibility_->rasterize(surface, viewProj, cullBackFaces_, clear);
     bindAndClear(clear);
     if (footprint_.empty()) return;
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(footprint_.x0, footprint_.y0, footprint_.width(), footprint_.height());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDisable(GL_BLEND);
     resolve_.use();
     glUniformMatrix4fv(resolve_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(resolve_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform4fv(resolve_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
     glUniform2i(resolve_.uniform("uSize"), viewport_.width, viewport_.height);
-    visibility_->bind(surface);
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_SCISSOR_TEST);
+    visibility_->drawResolve(surface, footprint_);
 }
 
 void SurfaceGBuffer::merge(ProcessGroup& group) {

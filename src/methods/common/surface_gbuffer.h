@@ -66,7 +66,6 @@ private:
     std::string renderer_;  // GL_RENDERER, for the auto rule of useComputeRaster
     std::unique_ptr<VisibilityBuffer> visibility_;  // made on first use
     gl::Program resolve_;                         // visibility buffer -> these buffers
-    gl::VertexArray emptyVao_;
     int targets_;
     bool cullBackFaces_;
     bool clearBackground_;

@@ -32,6 +32,7 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
       glPass_(program({{GL_VERTEX_SHADER, "common/visibility_raster_gl.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_raster_gl.frag"}})),
       dispatch_(program({{GL_COMPUTE_SHADER, "common/visibility_dispatch.comp"}})),
       deferredVao_(gl::VertexArray::create()),
+      emptyVao_(gl::VertexArray::create()),
       noAttachments_(gl::Framebuffer::create()) {
     glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, viewport.width);
     glNamedFramebufferParameteri(noAttachments_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, viewport.height);
@@ -138,6 +139,20 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     }
 
     glDisable(GL_CULL_FACE);
+}
+
+void VisibilityBuffer::drawResolve(const SurfaceGpu& surface, const PixelRect& rect) const {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x0, rect.y0, rect.width(), rect.height());
+    glEnable(GL_DEPTH_TEST);  // to write gl_FragDepth
+    glDepthFunc(GL_ALWAYS);
+    glDisable(GL_BLEND);
+    bind(surface);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace flowsurf::methods

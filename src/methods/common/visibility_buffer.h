@@ -42,6 +42,10 @@ public:
     void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces, const PixelRect& clear);
     // Binds the vertex and triangle textures and the depth and id buffers for a resolve pass.
     void bind(const SurfaceGpu& surface) const;
+    // Runs the current program (a resolve: a full-screen triangle writing gl_FragDepth) over
+    // `rect` only, with the buffers bound (bind) and the depth test set to write; the GL
+    // state it changes is restored (scissor and depth test off, depth function LESS).
+    void drawResolve(const SurfaceGpu& surface, const PixelRect& rect) const;
 
 private:
     void ensureCapacity(size_t triangles);
@@ -54,7 +58,7 @@ private:
     size_t maxCovering_ = 1;     // triangle ids that fit the largest storage block
     size_t maxGroupsX_ = 65535;  // GL_MAX_COMPUTE_WORK_GROUP_COUNT along x
     gl::Program compute_, glPass_, dispatch_;
-    gl::VertexArray deferredVao_;
+    gl::VertexArray deferredVao_, emptyVao_;
     gl::Framebuffer noAttachments_;
 };
 

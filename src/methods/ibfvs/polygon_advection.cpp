@@ -41,7 +41,6 @@ const gl::Program& PolygonAdvection::surfaceProgram(bool visibility) {
     if (!resolve_) {
         resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
                            defines_);
-        emptyVao_ = gl::VertexArray::create();
     }
     return resolve_;
 }
@@ -126,17 +125,7 @@ void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm:
 void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const {
     if (footprint_.empty()) return;
     glUniform2i(resolve_.uniform("uSize"), viewport.width, viewport.height);
-    glEnable(GL_SCISSOR_TEST);  // the surface's pixels only
-    glScissor(footprint_.x0, footprint_.y0, footprint_.width(), footprint_.height());
-    glEnable(GL_DEPTH_TEST);    // to write gl_FragDepth
-    glDepthFunc(GL_ALWAYS);
-    glDisable(GL_BLEND);
-    visibility_->bind(surface);
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_SCISSOR_TEST);
+    visibility_->drawResolve(surface, footprint_);  // the surface's pixels only
 }
 
 }  // namespace flowsurf::methods::ibfvs

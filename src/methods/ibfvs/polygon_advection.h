@@ -71,7 +71,6 @@ private:
     std::string defines_;   // the draw's, for the resolve
     std::unique_ptr<VisibilityBuffer> visibility_;
     gl::Program resolve_;
-    gl::VertexArray emptyVao_;
     PixelRect footprint_;      // the pixels this visibility pass's surface can cover
     PixelRect lastFootprint_;  // where the last one can have left triangles
     bool lastVisibility_ = false;
