@@ -3,7 +3,11 @@
 // u^(x) = u(cp(x) - v dt). Pass 1: u'(x) = u^(x) + (u(x) - u^(cp(x) + v dt)) / 2, clamped
 // to the extremes of u around cp(x) - v dt. Pass 3: the departure points of passes 0 and 1
 // (each step taken along the surface: departure()), when velocity or dt change. (pass 2: u' = u, no motion), decayed, then
-// this frame's emitters.
+// this frame's emitters. Pass 4: u^ back to 0 where pass 0 wrote it, so that between steps
+// u^ is 0 wherever a pass 1 reads it without this step's pass 0 having written it (the same
+// on one process and on several that each advect a part, dye_shared.h).
+// Dye below kDyeVisible is cleared: a brick without a flag holds none, so the processes
+// that advect parts of the band exchange only flagged bricks.
 // Values: RGBA32F premultiplied, slots of the band's size in one buffer.
 #include "common/dye_sample.glsl"
 layout(local_size_x = DYE_GROUP) in;
@@ -61,6 +65,10 @@ void main() {
     if (g >= uCount) return;
     int i = uUseList != 0 ? int(activeVoxel[g]) : g;
     vec3 cp = band[i].closest.xyz;
+    if (uPass == 4) {
+        dyeValue[uForward + i] = vec4(0.0);
+        return;
+    }
     if (uPass == 3) {
         vec3 step = band[i].velocity.xyz * uDt;
         departurePoint[2 * i] = vec4(departure(cp, step), 0.0);
@@ -84,6 +92,7 @@ void main() {
         float a = clamp((r - distance(cp, emitter[e].posRadius.xyz)) / uDyeH + 0.5, 0.0, 1.0);
         u = mix(u, vec4(emitter[e].color.rgb, 1.0), a);
     }
-    dyeValue[uTarget + i] = u;
-    if (max(max(u.r, u.g), max(u.b, u.a)) > 1.0 / 1024.0) hasDye[int(band[i].closest.w)] = 1u;
+    const bool visible = max(max(u.r, u.g), max(u.b, u.a)) > DYE_VISIBLE;
+    dyeValue[uTarget + i] = visible ? u : vec4(0.0);
+    if (visible) hasDye[int(band[i].closest.w)] = 1u;
 }

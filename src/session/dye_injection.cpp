@@ -79,7 +79,9 @@ void DyeInjection::makeBand(const RenderOptions& o, AnimatedSurface& surface, co
                             const core::Camera& camera, double t, double perFrame) {
     const methods::SurfaceGpu& s = surface.atTime(t);
     const float h = kDyeVoxelPx / core::maxPixelsPerUnit(camera, o.size, s.bounds());
-    field_ = std::make_unique<methods::DyeField>(mesh, surface.field(), s.bounds(), h, group_);
+    // Under tiles a process shows its own piece only: it advects that part of the band.
+    const bool divide = o.params.common.parallel == methods::ParallelMode::Tiles;
+    field_ = std::make_unique<methods::DyeField>(mesh, surface.field(), s.bounds(), h, group_, divide);
     velocityTime_ = t;
     if (surface.unsteady()) {
         dt_ = perFrame;

@@ -497,7 +497,12 @@ TEST(TiledParallelUnsteady, HybridPathlinesEqualTheOneProcessImage) {
 // `frames` frames of `method` on builtin:sphere (the piece `keep` accepts; all: nullptr)
 // with dye released continuously from sources on the pieces' seams: the solid-body rotation
 // carries it across them.
-Images playDye(const std::string& method, int parts, int r, int frames, methods::ProcessGroup* group) {
+// `advected`: the band voxels this process advected in the last step, and the whole band's.
+struct DyeShare {
+    size_t advected = 0, band = 0, haloBytes = 0;
+};
+Images playDye(const std::string& method, int parts, int r, int frames, methods::ProcessGroup* group,
+               DyeShare* share = nullptr) {
     const core::Dataset data = core::makeBuiltin("builtin:sphere:20000");
     session::RenderOptions o;
     o.input = "pieces";
@@ -516,7 +521,14 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
     });
     session::Playback p(o, piece, {}, group);
     const core::Camera cam = test::orthoFront(2.4f);
-    for (int k = 0; k <= frames; ++k) p.render({cam, 0.0, 0.0});
+    for (int k = 0; k <= frames; ++k) {
+        p.render({cam, 0.0, 0.0});
+        if (share && p.dye()) share->haloBytes += p.dye()->haloBytesSent();
+    }
+    if (share && p.dye()) {
+        share->advected = p.dye()->advectedVoxels();
+        share->band = p.dye()->band().size();
+    }
     Images im;
     int w = 0, h = 0;
     im.rgb = p.readImage(&w, &h);
@@ -525,20 +537,34 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
 }
 
 // Dye in parallel (tiles): every process holds the whole surface's band (each piece's
-// closest points exchanged), so the ink crosses the seams; 2 and 4 processes composited by
-// depth give the one-process image exactly, for every method.
+// closest points exchanged) and advects the part its piece touches, with a halo from the
+// others, so the ink crosses the seams; 2 and 4 processes composited by depth give the
+// one-process image exactly, for every method, each process advecting less than the whole.
 TEST(TiledParallelDye, DyeCrossesThePiecesAsInOneProcess) {
     const int frames = 24;
     const core::Viewport vp{160, 160};
     for (const std::string method : {"isa", "ibfvs", "hybrid"}) {
-        const Images one = playDye(method, 1, 0, frames, nullptr);
+        DyeShare whole;
+        const Images one = playDye(method, 1, 0, frames, nullptr, &whole);
         for (int parts : {2, 4}) {
+            std::vector<DyeShare> share(static_cast<size_t>(parts));
             const std::vector<Images> images = inThreads(parts, [&](methods::ProcessGroup& member, int r) {
-                return playDye(method, parts, r, frames, &member);
+                return playDye(method, parts, r, frames, &member, &share[size_t(r)]);
             });
             auto [mean, tile] = difference(one, depthComposite(images, vp), vp);
             std::printf("%s dye tiles, %d processes: mean %.3f, worst tile %.3f gray levels\n", method.c_str(), parts,
                         mean, tile);
+            size_t sum = 0, halo = 0;
+            for (const DyeShare& d : share) {
+                std::printf("  advected %zu band voxels in the last step (one process: %zu)\n", d.advected,
+                            whole.advected);
+                EXPECT_LT(d.advected, whole.advected * 3 / 4) << method << ", " << parts << " processes";
+                sum += d.advected;
+                halo += d.haloBytes;
+            }
+            EXPECT_GE(sum, whole.advected) << "every active voxel advected by some process";
+            EXPECT_GT(halo, 0u) << "the ink crosses the seams through the halo";
+            std::printf("  halo: %zu bytes sent over %d steps\n", halo, frames + 1);
             EXPECT_EQ(mean, 0.0) << method << ", " << parts << " processes";
             EXPECT_EQ(tile, 0.0) << method << ", " << parts << " processes";
             if (parts == 2) {  // a piece's own band alone loses the ink at the seam: the check can fail

@@ -1,18 +1,22 @@
 #include "methods/common/dye.h"
 
+#include "core/errors.h"
 #include "methods/common/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <string>
 
 namespace flowsurf::methods {
 
 DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, const core::Bounds& bounds, float h,
-                   ProcessGroup* group)
+                   ProcessGroup* group, bool divide)
     : shared_(group && group->size() > 1 ? std::make_unique<SharedDyeBand>(*group, mesh, makeDyeGrid(bounds, h))
                                          : nullptr),
+      divided_(shared_ && divide),
       band_(shared_ ? shared_->takeBand() : buildDyeBand(mesh, makeDyeGrid(bounds, h))),
       positions_(mesh.positions),
       triangles_(mesh.triangles),
@@ -66,6 +70,12 @@ void DyeField::clear() {
     current_ = 0;
     hadDye_.assign(band_.brickStart.size() - 1, 0);
     hadDyeBefore_ = hadDye_;
+    haloHeld_[0].assign(hadDye_.size(), 0);
+    haloHeld_[1] = haloHeld_[0];
+}
+
+std::vector<uint8_t> DyeField::advectedBricks() const {
+    return divided_ ? shared_->pieceBricks(shared_->group().rank()) : std::vector<uint8_t>(hadDye_.size(), 1);
 }
 
 void DyeField::pass(int which, float dt, float decayFactor, int emitterCount, int count) {
@@ -83,10 +93,11 @@ void DyeField::pass(int which, float dt, float decayFactor, int emitterCount, in
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-size_t DyeField::listActive(float dt, const std::vector<DyeEmitter>& emitters) {
+DyeField::Active DyeField::listActive(float dt, const std::vector<DyeEmitter>& emitters, int readReach) {
     const glm::ivec3 bd = band_.brickDims;
     const float brickSize = float(kDyeBrick) * band_.grid.h;
-    std::vector<uint8_t> active(hadDye_.size(), 0);
+    Active out;
+    out.bricks.assign(hadDye_.size(), 0);
     auto brickOf = [&](const glm::vec3& p) {
         return glm::clamp(glm::ivec3(glm::floor((p - band_.grid.origin) / brickSize)), glm::ivec3(0), bd - 1);
     };
@@ -95,7 +106,8 @@ size_t DyeField::listActive(float dt, const std::vector<DyeEmitter>& emitters) {
         hi = glm::min(hi, bd - 1);
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x) active[(size_t(z) * size_t(bd.y) + size_t(y)) * size_t(bd.x) + size_t(x)] = 1;
+                for (int x = lo.x; x <= hi.x; ++x)
+                    out.bricks[(size_t(z) * size_t(bd.y) + size_t(y)) * size_t(bd.x) + size_t(x)] = 1;
     };
     // Reach of one step: the forward and the backward departure point, and the stencil.
     const int reach = int(std::ceil((2.0f * maxSpeed_ * std::abs(dt) + 2.0f * band_.grid.h) / brickSize));
@@ -109,19 +121,85 @@ size_t DyeField::listActive(float dt, const std::vector<DyeEmitter>& emitters) {
         const glm::vec3 r(e.radius + 2.0f * band_.grid.h);
         mark(brickOf(e.posObj - r), brickOf(e.posObj + r));
     }
-    std::vector<uint32_t> list;
-    for (size_t b = 0; b < active.size(); ++b)
-        if (active[b])
-            for (uint32_t i = band_.brickStart[b]; i < band_.brickStart[b + 1]; ++i) list.push_back(i);
+    const std::vector<uint8_t> mine = advectedBricks();
+    const std::vector<uint8_t> forward = divided_ ? dilateBoth(mine, out.bricks, bd, readReach) : out.bricks;
+    std::vector<uint32_t> list, more;
+    for (size_t b = 0; b < out.bricks.size(); ++b) {
+        if (!out.bricks[b]) continue;
+        out.any = true;
+        std::vector<uint32_t>* to = mine[b] ? &list : forward[b] ? &more : nullptr;
+        if (to)
+            for (uint32_t i = band_.brickStart[b]; i < band_.brickStart[b + 1]; ++i) to->push_back(i);
+    }
+    out.advected = list.size();
+    list.insert(list.end(), more.begin(), more.end());
+    out.forward = list.size();
     if (!list.empty())
         glNamedBufferSubData(active_.id(), 0, GLsizeiptr(list.size() * sizeof(uint32_t)), list.data());
-    return list.size();
+    return out;
+}
+
+void DyeField::receiveHalo(const std::vector<uint8_t>& active, int readReach) {
+    ProcessGroup& group = shared_->group();
+    const int me = group.rank(), n = group.size();
+    const glm::ivec3 bd = band_.brickDims;
+    const size_t slot = size_t(current_) * band_.size();
+    auto voxels = [&](size_t b) { return size_t(band_.brickStart[b + 1] - band_.brickStart[b]); };
+    auto offset = [&](size_t b) { return GLintptr((slot + band_.brickStart[b]) * sizeof(glm::vec4)); };
+    // What process q reads and does not advect: within twice the reach of its active bricks
+    // (pass 0 runs up to one reach from them and reads one reach further).
+    auto halo = [&](int q) { return dilateBoth(shared_->pieceBricks(q), active, bd, 2 * readReach); };
+    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    for (int q = 0; q < n; ++q) {
+        if (q == me) continue;
+        const std::vector<uint8_t> wanted = halo(q);
+        const std::vector<uint8_t>& theirs = shared_->pieceBricks(q);
+        std::vector<uint8_t>& out = sends[size_t(q)];
+        for (size_t b = 0; b < wanted.size(); ++b) {
+            if (!wanted[b] || theirs[b] || !hadDye_[b] || shared_->keeper(b) != me) continue;
+            const size_t at = out.size(), bytes = voxels(b) * sizeof(glm::vec4);
+            out.resize(at + bytes);
+            glGetNamedBufferSubData(values_.id(), offset(b), GLsizeiptr(bytes), out.data() + at);
+        }
+        haloBytesSent_ += out.size();
+    }
+    const std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+    const std::vector<uint8_t> wanted = halo(me);
+    const std::vector<uint8_t>& mine = shared_->pieceBricks(me);
+    std::vector<size_t> read(size_t(n), 0);
+    std::vector<uint8_t>& held = haloHeld_[current_];
+    const glm::vec4 zero(0.0f);
+    for (size_t b = 0; b < wanted.size(); ++b) {
+        if (!wanted[b] || mine[b]) continue;
+        const size_t bytes = voxels(b) * sizeof(glm::vec4);
+        if (hadDye_[b]) {
+            const size_t q = size_t(shared_->keeper(b));
+            if (read[q] + bytes > in[q].size())
+                throw Error("dye: process " + std::to_string(q) + " sent a shorter halo than this one reads");
+            glNamedBufferSubData(values_.id(), offset(b), GLsizeiptr(bytes), in[q].data() + read[q]);
+            read[q] += bytes;
+            held[b] = 1;
+        } else if (held[b]) {
+            glClearNamedBufferSubData(values_.id(), GL_RGBA32F, offset(b), GLsizeiptr(bytes), GL_RGBA, GL_FLOAT,
+                                      glm::value_ptr(zero));
+            held[b] = 0;
+        }
+    }
+    for (int q = 0; q < n; ++q)
+        if (read[size_t(q)] != in[size_t(q)].size())
+            throw Error("dye: process " + std::to_string(q) + " sent a longer halo than this one reads");
 }
 
 void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitters) {
+    advectedVoxels_ = haloBytesSent_ = 0;
     if (band_.size() == 0) return;
-    const size_t count = listActive(dt, emitters);
-    if (count == 0) return;  // no dye anywhere, none released
+    // How far from a voxel a pass reads: its closest point (up to the band's radius away),
+    // one step along the surface, the stencil around the departure point.
+    const float reachObj = maxSpeed_ * std::abs(dt) + (kDyeBandVoxels + 2.0f) * band_.grid.h;
+    const int readReach = int(std::ceil(reachObj / (float(kDyeBrick) * band_.grid.h)));
+    const Active active = listActive(dt, emitters, readReach);
+    if (!active.any) return;  // no dye anywhere, none released (the same on every process)
+    advectedVoxels_ = active.advected;
     std::vector<glm::vec4> e;
     for (const DyeEmitter& d : emitters) {
         e.emplace_back(d.posObj, d.radius);
@@ -131,6 +209,8 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     emitters_ = gl::Buffer(GLsizeiptr(e.size() * sizeof(glm::vec4)), e.data());
     const uint32_t zero = 0;
     glClearNamedBufferData(flags_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    const bool moving = dt != 0.0f && maxSpeed_ > 0.0f;
+    if (moving && divided_) receiveHalo(active.bricks, readReach);
     program_.use();
     const DyeGrid& g = band_.grid;
     glUniform3fv(program_.uniform("uDyeOrigin"), 1, glm::value_ptr(g.origin));
@@ -144,20 +224,28 @@ void DyeField::step(float dt, float decay, const std::vector<DyeEmitter>& emitte
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kDyeActive, active_.id());
     const float decayFactor = std::exp(-std::max(decay, 0.0f) * std::abs(dt));
     const int emitterCount = int(emitters.size());
-    if (dt != 0.0f && maxSpeed_ > 0.0f) {
+    if (moving) {
         if (dt != departureDt_) {
             pass(3, dt, decayFactor, 0, int(band_.size()));
             departureDt_ = dt;
         }
-        pass(0, dt, decayFactor, 0, int(count));
-        pass(1, dt, decayFactor, emitterCount, int(count));
+        pass(0, dt, decayFactor, 0, int(active.forward));
+        pass(1, dt, decayFactor, emitterCount, int(active.advected));
+        pass(4, dt, decayFactor, 0, int(active.forward));
     } else {
-        pass(2, dt, decayFactor, emitterCount, int(count));
+        pass(2, dt, decayFactor, emitterCount, int(active.advected));
     }
     current_ = 1 - current_;
-    // Where dye is now: the next step's bricks (a small read-back, once per frame).
+    // Where dye is now: the next step's bricks (a small read-back, once per frame; divided,
+    // every process's own bricks combined).
     hadDyeBefore_.swap(hadDye_);
     glGetNamedBufferSubData(flags_.id(), 0, GLsizeiptr(hadDye_.size() * sizeof(uint32_t)), hadDye_.data());
+    if (divided_) {
+        std::vector<int32_t> none(hadDye_.size());
+        for (size_t b = 0; b < none.size(); ++b) none[b] = hadDye_[b] ? 0 : 1;
+        shared_->group().minInPlace(std::span<int32_t>(none));
+        for (size_t b = 0; b < none.size(); ++b) hadDye_[b] = none[b] ? 0 : 1;
+    }
 }
 
 DyeView DyeField::view(const core::Camera& camera, const core::Viewport& viewport) const {

@@ -2,6 +2,8 @@
 
 #include "core/errors.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -93,6 +95,40 @@ SharedDyeBand::SharedDyeBand(ProcessGroup& group, const core::SurfaceMesh& piece
         into_[size_t(ownerAt[m])].push_back(uint32_t(m));
         if (ownerAt[m] == group.rank()) won_.push_back(uint32_t(voxelAt[m]));
     }
+
+    // The bricks each piece's band touches: the cells of its own band, on the same grid.
+    const size_t bricks = band_.brickStart.size() - 1;
+    std::vector<uint8_t> touched(bricks, 0);
+    for (size_t c = 0; c < local_.index.size(); ++c)
+        if (local_.index[c] >= 0) touched[band_.brick[size_t(band_.index[c])]] = 1;
+    pieceBricks_ = allGather(group, std::move(touched));
+    keeper_.assign(bricks, -1);
+    for (int r = group.size() - 1; r >= 0; --r) {
+        if (pieceBricks_[size_t(r)].size() != bricks) throw Error("dye: process " + std::to_string(r) + " sent another brick grid");
+        for (size_t b = 0; b < bricks; ++b)
+            if (pieceBricks_[size_t(r)][b]) keeper_[b] = r;
+    }
+}
+
+std::vector<uint8_t> dilateBoth(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, glm::ivec3 dims, int reach) {
+    std::vector<uint8_t> out(a.size());
+    for (size_t i = 0; i < a.size(); ++i) out[i] = a[i] && b[i];
+    if (reach <= 0) return out;
+    // Separable: a run of 2 reach + 1 along x, then y, then z.
+    const size_t strides[3] = {1, size_t(dims.x), size_t(dims.x) * size_t(dims.y)};
+    std::vector<uint8_t> in;
+    for (int axis = 0; axis < 3; ++axis) {
+        in = out;
+        const int n = dims[axis];
+        const size_t stride = strides[axis];
+        for (size_t i = 0; i < in.size(); ++i) {
+            if (!in[i]) continue;
+            const int at = int((i / stride) % size_t(n));
+            for (int k = std::max(0, at - reach); k <= std::min(n - 1, at + reach); ++k)
+                out[size_t(ptrdiff_t(i) + ptrdiff_t(k - at) * ptrdiff_t(stride))] = 1;
+        }
+    }
+    return out;
 }
 
 std::vector<glm::vec3> SharedDyeBand::velocity(const core::SurfaceMesh& piece, const std::string& field) {

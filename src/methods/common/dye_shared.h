@@ -6,10 +6,18 @@
 // every process holds the band of the whole surface — the same closest points and
 // velocities a single process computes, bit for bit — and advects all of it (DyeField).
 // Velocities come from the process whose triangle holds cp(x).
+// Divided advection (CommonParams::parallel = tiles, where each process shows only its own
+// piece's fragments): each process advects the bricks its own piece's band touches (at a
+// seam two processes advect the same brick, to the same values) and, before a step,
+// receives the values it reads around them — its halo, as far as the step reaches — from
+// the lowest process that advects them (the brick's keeper). Only bricks holding dye
+// travel (a brick without dye is all zeros, kDyeVisible). Under `replicate` every process
+// shows the whole surface and advects the whole band.
 // Cost: the band's triangle loop divided over the pieces; the candidates' exchange once per
 // geometry (24 bytes per band voxel of the piece, to every process); 12 bytes per voxel a
-// process won per velocity change (a new time step); each process then advects the whole
-// band's active bricks (the dye's own work is not divided).
+// process won per velocity change (a new time step); per divided step the active bricks
+// of the piece's band (and what a step reaches from them) and 16 bytes per voxel of the
+// halo's bricks holding dye.
 #pragma once
 
 #include "core/mesh.h"
@@ -32,14 +40,27 @@ public:
     // each process's own voxels, exchanged). Collective; `piece` the same geometry.
     std::vector<glm::vec3> velocity(const core::SurfaceMesh& piece, const std::string& field);
 
+    // Per brick of the whole band: 1 where process `rank`'s piece's band has a voxel (the
+    // bricks it advects when divided).
+    const std::vector<uint8_t>& pieceBricks(int rank) const { return pieceBricks_[size_t(rank)]; }
+    // The lowest process whose piece's band touches brick b (-1: none).
+    int keeper(size_t b) const { return keeper_[b]; }
+    ProcessGroup& group() { return group_; }
+
 private:
     ProcessGroup& group_;
     DyeBand local_;                            // this piece's band
     size_t size_ = 0;                          // voxels of the whole band
     std::vector<uint32_t> won_;                // local voxels this process won, in send order
     std::vector<std::vector<uint32_t>> into_;  // per process: whole-band voxel of each value it sends
+    std::vector<std::vector<uint8_t>> pieceBricks_;  // per process, per brick
+    std::vector<int> keeper_;                        // per brick
     DyeBand band_;
 };
+
+// Per brick of a grid of `dims` bricks: 1 within `reach` bricks (per axis) of a brick
+// where `a` and `b` are both 1.
+std::vector<uint8_t> dilateBoth(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, glm::ivec3 dims, int reach);
 
 // The closest point of the whole surface (every process's piece) to p: what a dye source
 // snaps to, on whichever process holds it. Collective when `group` has several processes.

@@ -8,6 +8,7 @@
 #include "methods/common/time_levels.h"
 
 #include <cctype>
+#include <cstdio>
 
 namespace flowsurf::methods {
 
@@ -43,6 +44,9 @@ const std::string& shaderInterface() {
         s += define("HISTOGRAM_BINS", PercentileRange::kBins);
         s += define("HISTOGRAM_TILE", PercentileRange::kTilePx);
         s += define("DYE_GROUP", kDyeGroup);
+        char visible[32];
+        std::snprintf(visible, sizeof visible, "%.9e", double(kDyeVisible));
+        s += std::string("#define DYE_VISIBLE ") + visible + "\n";
         for (const BindingPoint& b : kBindingPoints) s += define(b.glsl, b.point);
         for (const BindingPoint& o : kFragmentOutputs) s += define(o.glsl, o.point);
         for (const VertexAttribute& a : kVertexAttributes) {
