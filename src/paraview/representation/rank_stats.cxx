@@ -55,6 +55,11 @@ void RankStats::end(session::Playback& playback, int rank, int ranks, bool warmu
     stages[stage] = ms;
   }
   line["stages_ms"] = stages;
+  if (const methods::DyeField* dye = playback.dye())
+  {
+    line["dye_voxels"] = dye->advectedVoxels();
+    line["dye_halo_bytes_sent"] = dye->haloBytesSent();
+  }
   method.timer().reset();
   std::ofstream(dir_ + "/rank" + std::to_string(rank) + ".jsonl", std::ios::app) << line.dump() << "\n";
 }
