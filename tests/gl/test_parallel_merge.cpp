@@ -13,11 +13,11 @@
 #include "methods/make_renderer.h"
 #include "session/options/options.h"
 #include "session/playback.h"
+#include "thread_group.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <barrier>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -29,62 +29,6 @@
 using namespace flowsurf;
 
 namespace {
-
-// N threads as one group: each collective writes its contribution, waits for all, reads
-// the result, and waits again before the slots are reused.
-class ThreadGroup {
-public:
-    explicit ThreadGroup(int n) : n_(n), sync_(n), floats_(size_t(n)), ints_(size_t(n)) {}
-
-    class Member : public methods::ProcessGroup {
-    public:
-        Member(ThreadGroup& g, int rank) : g_(g), rank_(rank) {}
-        int rank() const override { return rank_; }
-        int size() const override { return g_.n_; }
-        void minInPlace(std::span<float> v) override { reduce(g_.floats_, v, [](float a, float b) { return std::min(a, b); }); }
-        void minInPlace(std::span<int32_t> v) override { reduce(g_.ints_, v, [](int32_t a, int32_t b) { return std::min(a, b); }); }
-        void sumInPlace(std::span<float> v) override { reduce(g_.floats_, v, [](float a, float b) { return a + b; }); }
-        std::vector<float> gather(std::span<const float> v) override {
-            g_.floats_[size_t(rank_)].assign(v.begin(), v.end());
-            g_.sync_.arrive_and_wait();
-            std::vector<float> all;
-            for (const auto& part : g_.floats_) all.insert(all.end(), part.begin(), part.end());
-            g_.sync_.arrive_and_wait();
-            return all;
-        }
-        std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) override {
-            g_.messages_[size_t(rank_)] = sends;
-            g_.sync_.arrive_and_wait();
-            std::vector<std::vector<uint8_t>> received(size_t(g_.n_));
-            for (int q = 0; q < g_.n_; ++q)
-                if (q != rank_) received[size_t(q)] = g_.messages_[size_t(q)][size_t(rank_)];
-            g_.sync_.arrive_and_wait();
-            return received;
-        }
-
-    private:
-        template <class T, class Op>
-        void reduce(std::vector<std::vector<T>>& slots, std::span<T> v, Op op) {
-            slots[size_t(rank_)].assign(v.begin(), v.end());
-            g_.sync_.arrive_and_wait();
-            for (size_t i = 0; i < v.size(); ++i) {  // in rank order: the same sum everywhere
-                T acc = slots[0][i];
-                for (size_t r = 1; r < slots.size(); ++r) acc = op(acc, slots[r][i]);
-                v[i] = acc;
-            }
-            g_.sync_.arrive_and_wait();
-        }
-        ThreadGroup& g_;
-        int rank_;
-    };
-
-private:
-    int n_;
-    std::barrier<> sync_;
-    std::vector<std::vector<float>> floats_;
-    std::vector<std::vector<int32_t>> ints_;
-    std::vector<std::vector<std::vector<uint8_t>>> messages_{size_t(n_)};  // [sender][receiver]
-};
 
 // The triangles of `mesh` whose centroid `keep` accepts, with their vertices (shared seam
 // vertices appear in both pieces, as in a partitioned dataset).
@@ -165,7 +109,7 @@ std::pair<double, double> difference(const Images& a, const Images& b, const cor
 // `n` processes as threads of one group, each with its own GL context: `render(member, r)`
 // makes rank r's images; what a thread throws fails the test, naming its rank.
 std::vector<Images> inThreads(int n, const std::function<Images(methods::ProcessGroup&, int)>& render) {
-    ThreadGroup group(n);
+    test::ThreadGroup group(n);
     std::vector<Images> images(static_cast<size_t>(n));
     std::vector<std::string> errors(static_cast<size_t>(n));
     std::vector<std::thread> threads;
@@ -173,7 +117,7 @@ std::vector<Images> inThreads(int n, const std::function<Images(methods::Process
         threads.emplace_back([&, r] {
             try {
                 gl::HeadlessContext context;
-                ThreadGroup::Member member(group, r);
+                test::ThreadGroup::Member member(group, r);
                 images[size_t(r)] = render(member, r);
             } catch (const std::exception& e) {
                 errors[size_t(r)] = e.what();
@@ -258,14 +202,14 @@ TEST(ParallelContrast, ReplicateEqualsOneProcessTilesColorRefused) {
         }
     }
     params.common.parallel = methods::ParallelMode::Tiles;
-    ThreadGroup group(2);
+    test::ThreadGroup group(2);
     std::vector<std::string> errors(2);
     std::vector<std::thread> threads;
     for (int r = 0; r < 2; ++r)
         threads.emplace_back([&, r] {
             try {
                 gl::HeadlessContext context;
-                ThreadGroup::Member member(group, r);
+                test::ThreadGroup::Member member(group, r);
                 renderWith("hybrid", pieces[size_t(r)], still, vp, 1, &member, params);
             } catch (const std::exception& e) {
                 errors[size_t(r)] = e.what();

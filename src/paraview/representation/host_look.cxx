@@ -151,4 +151,27 @@ std::optional<HostLook> hostLook(vtkRenderer* ren, vtkActor* actor, vtkComposite
   return look;
 }
 
+session::RenderOptions frameLoopOptions(
+  const session::RenderOptions& options, bool dataColor, const std::string& vectors, const core::Viewport& size)
+{
+  session::RenderOptions o = options;
+  methods::CommonParams& p = o.params.common;
+  if (p.overlay == methods::OverlayScheme::Blend)
+  {
+    p.colormap = methods::Colormap::None;
+    p.lighting = false;
+  }
+  if (dataColor)
+  {
+    p.colorBy = kColorScalarName;
+    p.colorRange = { 1.0f, 0.0f };
+    p.colorRangeAuto = false;
+    p.colorRangeMode = methods::RangeMode::Data;  // ParaView's table maps the data's range
+    p.colorScale = methods::ColorScale::Linear;    // linearly (its own log scale aside)
+  }
+  o.field = vectors;
+  o.size = size;
+  return o;
+}
+
 }  // namespace flowsurf::paraview

@@ -11,6 +11,8 @@
 
 #include "polydata_to_mesh.h"
 
+#include "session/options/options.h"
+
 #include <glm/glm.hpp>
 
 #include <optional>
@@ -43,6 +45,14 @@ inline constexpr int kMaxHostLights = 8;
 // when something listed above as not reproduced is in use.
 std::optional<HostLook> hostLook(vtkRenderer* ren, vtkActor* actor, vtkCompositePolyDataMapper2* mapper,
   vtkDataObject* input);
+
+// The options the frame loop runs with, from the representation's `options`: with the blend
+// overlay F_s is ParaView's colouring, so the method's own colour map and lighting are off
+// and its image is beta F_a + (1 - beta); with a colour array (`dataColor`) the colour value
+// the composite maps through ParaView's table; the field is ParaView's array `vectors`, the
+// size its view's.
+session::RenderOptions frameLoopOptions(
+  const session::RenderOptions& options, bool dataColor, const std::string& vectors, const core::Viewport& size);
 
 }  // namespace flowsurf::paraview
 

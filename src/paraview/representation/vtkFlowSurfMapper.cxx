@@ -13,6 +13,7 @@
 
 #include "core/errors.h"
 #include "gl/objects.h"
+#include "methods/common/agreeing_group.h"
 #include "session/options/options.h"
 #include "session/playback.h"
 
@@ -55,7 +56,15 @@ struct vtkFlowSurfMapper::Internals
   // when ParaView runs on one. Every decision below that leads to a collective step is
   // made the same on all processes (VtkProcessGroup::any).
   std::unique_ptr<fs::paraview::VtkProcessGroup> group;
+  // The same processes for the frame loop: an error on one inside a collective section
+  // (inSection) becomes the same error on all, none left waiting (agreeing_group.h).
+  std::unique_ptr<fs::methods::AgreeingGroup> frameGroup;
   bool groupChecked = false;
+  template <class Section>
+  void inSection(Section&& section)
+  {
+    fs::methods::collectiveSection(frameGroup.get(), section);
+  }
 
   fs::paraview::MapperComposite composite;
   bool glChecked = false;
@@ -72,30 +81,9 @@ struct vtkFlowSurfMapper::Internals
     composite.release();
   }
 
-  // The options the frame loop runs with: with the blend overlay F_s is ParaView's
-  // colouring, so the method's own colour map and lighting are off and its image is
-  // beta F_a + (1 - beta); the field is ParaView's array, the size its view's.
   fs::session::RenderOptions playbackOptions(const fs::core::Viewport& size) const
   {
-    fs::session::RenderOptions o = options;
-    fs::methods::CommonParams& p = o.params.common;
-    if (p.overlay == fs::methods::OverlayScheme::Blend)
-    {
-      p.colormap = fs::methods::Colormap::None;
-      p.lighting = false;
-    }
-    // The colour value the composite maps through ParaView's table (over the data's range).
-    if (dataColor)
-    {
-      p.colorBy = fs::paraview::kColorScalarName;
-      p.colorRange = { 1.0f, 0.0f };
-      p.colorRangeAuto = false;
-      p.colorRangeMode = fs::methods::RangeMode::Data;  // ParaView's table maps the data's range
-      p.colorScale = fs::methods::ColorScale::Linear;    // linearly (its own log scale aside)
-    }
-    o.field = vectors;
-    o.size = size;
-    return o;
+    return fs::paraview::frameLoopOptions(options, dataColor.has_value(), vectors, size);
   }
 
   void render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win);
@@ -105,9 +93,6 @@ struct vtkFlowSurfMapper::Internals
   bool updateSurface(vtkDataObject* input);
   // (2) The frame loop for `size` (new, rebuilt or updated); true when it needs its warm-up.
   bool updatePlayback(const fs::core::Viewport& size, bool dataChanged, bool timeChanged);
-  // `error`, or in parallel the first process's error on every process (collective: every
-  // process calls it at the same point, with or without an error of its own).
-  std::string agreed(const std::string& error) { return group ? group->agree(error) : error; }
 };
 
 vtkStandardNewMacro(vtkFlowSurfMapper);
@@ -180,6 +165,10 @@ void vtkFlowSurfMapper::Render(vtkRenderer* ren, vtkActor* act)
   if (!impl.groupChecked)
   {
     impl.group = fs::paraview::parallelGroup();
+    if (impl.group)
+    {
+      impl.frameGroup = std::make_unique<fs::methods::AgreeingGroup>(*impl.group);
+    }
     impl.groupChecked = true;
   }
   if (impl.group && impl.group->any(!look))
@@ -221,17 +210,13 @@ void vtkFlowSurfMapper::Internals::checkGl()
   {
     return;
   }
-  std::string error;
-  if (epoxy_gl_version() < 45)
-  {
-    error = "FlowSurf needs OpenGL 4.5; ParaView's context is " +
-      std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-  }
-  error = agreed(error);
-  if (!error.empty())
-  {
-    throw fs::GlError(error);
-  }
+  inSection([] {
+    if (epoxy_gl_version() < 45)
+    {
+      throw fs::GlError("FlowSurf needs OpenGL 4.5; ParaView's context is " +
+        std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
+    }
+  });
   glChecked = true;
 }
 
@@ -257,25 +242,26 @@ bool vtkFlowSurfMapper::Internals::updateSurface(vtkDataObject* input)
   fs::core::SurfaceMesh mesh;
   try
   {
-    mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr) : fs::core::SurfaceMesh{};
-    if (mesh.fields.empty())
-    {
-      mesh.fields.push_back({ vectors, {} });  // an empty piece
-    }
-    if (color && mesh.scalars.empty())
-    {
-      mesh.scalars.push_back({ fs::paraview::kColorScalarName, {} });
-    }
-    if (mesh.triangleCount() > 0)
-    {
-      fs::core::validateMesh(mesh, "FlowSurf input");
-    }
+    inSection([&] {
+      mesh = input ? fs::paraview::toSurfaceMesh(input, vectors, color ? &*color : nullptr) : fs::core::SurfaceMesh{};
+      if (mesh.fields.empty())
+      {
+        mesh.fields.push_back({ vectors, {} });  // an empty piece
+      }
+      if (color && mesh.scalars.empty())
+      {
+        mesh.scalars.push_back({ fs::paraview::kColorScalarName, {} });
+      }
+      if (mesh.triangleCount() > 0)
+      {
+        fs::core::validateMesh(mesh, "FlowSurf input");
+      }
+    });
   }
   catch (const std::exception& e)
   {
     error = e.what();
   }
-  error = agreed(error);
   if (group && error.empty())  // the same on every process: a collective step for all
   {
     error = group->sameValue(input && pieceTime, pieceTime.value_or(0.0), "the pieces' data times");
@@ -301,27 +287,29 @@ bool vtkFlowSurfMapper::Internals::updatePlayback(const fs::core::Viewport& size
   std::string error;
   try
   {
-    if (playback && dataChanged && timeChanged && playback->options().field == o.field)
-    {
-      playback->stepsChanged();  // the texture goes on over the new time step
-      warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;  // rebuilt by warmUp()
-    }
-    else if (!playback || dataChanged)
-    {
-      playback.reset();
-      playback = std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, group.get());
-      warmup = true;
-    }
-    else
-    {
-      warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;
-    }
+    inSection([&] {  // a shader that failed on one process fails them all
+      if (playback && dataChanged && timeChanged && playback->options().field == o.field)
+      {
+        playback->stepsChanged();  // the texture goes on over the new time step
+        warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;  // rebuilt by warmUp()
+      }
+      else if (!playback || dataChanged)
+      {
+        playback.reset();
+        playback =
+          std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, frameGroup.get());
+        warmup = true;
+      }
+      else
+      {
+        warmup = playback->setOptions(o) >= fs::session::OptionEffect::Rebuild;
+      }
+    });
   }
   catch (const std::exception& e)
   {
     error = e.what();
   }
-  error = agreed(error);  // a shader that failed on one process fails them all
   if (!error.empty())
   {
     playback.reset();
@@ -333,7 +321,7 @@ bool vtkFlowSurfMapper::Internals::updatePlayback(const fs::core::Viewport& size
 void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input, vtkOpenGLRenderWindow* win)
 {
   // Every step that can fail on one process alone is followed by an agreement, so that all
-  // report the same error and none is left waiting in a collective step (agreed).
+  // report the same error and none is left waiting in a collective step (inSection).
   checkGl();
   if (!input && !group)
   {
@@ -377,15 +365,17 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   {
     stats->begin(*playback);
   }
-  if (warmup)
-  {
-    playback->warmUp({ camera });
-    playback->render({ camera });
-  }
-  else if (timeChanged || cameraChanged)
-  {
-    playback->render({ camera });
-  }
+  inSection([&] {  // an error on one process inside a frame stops the frame on all
+    if (warmup)
+    {
+      playback->warmUp({ camera });
+      playback->render({ camera });
+    }
+    else if (timeChanged || cameraChanged)
+    {
+      playback->render({ camera });
+    }
+  });
   if (stats && frames)
   {
     stats->end(*playback, group ? group->rank() : 0, group ? group->size() : 1, warmup);

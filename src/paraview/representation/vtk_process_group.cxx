@@ -129,27 +129,6 @@ std::vector<std::vector<uint8_t>> VtkProcessGroup::exchange(const std::vector<st
   return received;
 }
 
-std::string VtkProcessGroup::agree(const std::string& error)
-{
-  const int n = this->size();
-  vtkIdType mine = vtkIdType(error.size());
-  std::vector<vtkIdType> lengths(static_cast<size_t>(n)), offsets(static_cast<size_t>(n), 0);
-  check(controller_->AllGather(&mine, lengths.data(), 1), "gather of error lengths");
-  std::partial_sum(lengths.begin(), lengths.end() - 1, offsets.begin() + 1);
-  std::vector<char> all(size_t(offsets.back() + lengths.back()) + 1);
-  check(controller_->AllGatherV(error.data(), all.data(), mine, lengths.data(), offsets.data()), "gather of errors");
-  for (int q = 0; q < n; ++q)
-  {
-    if (lengths[size_t(q)] > 0)
-    {
-      std::string text(all.data() + offsets[size_t(q)], size_t(lengths[size_t(q)]));
-      text.erase(text.find_last_not_of(" \n\r\t") + 1);  // a driver's log ends in a newline
-      return n > 1 ? text + " (on process " + std::to_string(q) + " of " + std::to_string(n) + ")" : text;
-    }
-  }
-  return {};
-}
-
 std::string VtkProcessGroup::sameValue(bool has, double value, const std::string& what)
 {
   const int n = this->size();

@@ -25,10 +25,6 @@ public:
   std::vector<std::vector<uint8_t>> exchange(const std::vector<std::vector<uint8_t>>& sends) override;
   // True on every process if `flag` is true on any (a collective decision).
   bool any(bool flag);
-  // Collective: the error of the lowest process that has one ("" if none), on every
-  // process, naming that process: so that all report the same failure and none waits in a
-  // later collective step for a process that gave up.
-  std::string agree(const std::string& error);
   // Collective: "" when every process that has a value (`has`) holds the same one; else an
   // error naming `what` and the first two processes that differ, the same on every process.
   std::string sameValue(bool has, double value, const std::string& what);
