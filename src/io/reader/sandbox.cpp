@@ -138,7 +138,8 @@ void landlock(const std::string& root) {
 #ifdef __NR_landlock_create_ruleset
     const long abi = syscall(__NR_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
     if (abi < 1) return;  // no Landlock in this kernel: the filter below still holds
-    // Every right of the kernel's ABI: bits 0 (EXECUTE) to 12 (MAKE_SYM) in ABI 1; ABI 2 adds REFER.
+    // ABI 1's rights are bits 0 (EXECUTE) to 12 (MAKE_SYM), ABI 2 adds 13 (REFER); later ones
+    // (truncate, ioctl) are the system-call filter's.
     landlock_ruleset_attr attr{};
     attr.handled_access_fs = ((abi >= 2 ? LANDLOCK_ACCESS_FS_REFER : LANDLOCK_ACCESS_FS_MAKE_SYM) << 1) - 1;
     const int ruleset = int(syscall(__NR_landlock_create_ruleset, &attr, sizeof attr, 0));
