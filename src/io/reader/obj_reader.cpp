@@ -35,13 +35,6 @@ bool parseDouble(std::string_view s, double& v) {
     return ec == std::errc() && p == s.data() + s.size();
 }
 
-std::string shown(std::string_view s) {
-    std::string out(s.substr(0, 20));
-    for (auto& c : out)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
-    return out;
-}
-
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> readObj(const std::string& path) {
