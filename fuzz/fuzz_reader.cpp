@@ -10,7 +10,7 @@
 // Crashes inside the child are contained by design, so memory errors in our own parsers
 // are the business of fuzz_ply and fuzz_obj.
 #include "core/errors.h"
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 // is picked (vtk_sources) and each step runs through the surface pipeline.
 #include "io/dataset_reader.h"
 
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 namespace flowsurf::io {
 

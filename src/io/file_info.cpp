@@ -2,7 +2,7 @@
 // the reader process (reader_process.h, file_inspect.cpp).
 #include "io/dataset_reader.h"
 
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 #include <algorithm>
 #include <iomanip>

@@ -2,7 +2,7 @@
 
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 #include <glob.h>
 

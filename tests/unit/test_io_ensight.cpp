@@ -3,7 +3,7 @@
 // reader process's budgets follow the input's size.
 #include "core/errors.h"
 #include "io/dataset_reader.h"
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 #include "test_io_common.h"
 

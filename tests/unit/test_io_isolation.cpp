@@ -1,4 +1,4 @@
-// Files are read in a child process (src/io/reader/reader_process.h): whatever happens to the
+// Files are read in a child process (src/io/reader_process.h): whatever happens to the
 // child — a crash, an abort, a hang, an allocation beyond its limit — the caller gets a
 // one-line FormatError naming the file, and the next read works. A stand-in reader
 // (a shell script through FLOWSURF_READER) plays the misbehaving child.

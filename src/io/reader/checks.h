@@ -1,6 +1,6 @@
 // flowsurf — checks of what VTK would read silently wrong, made in the reader process
 // before VTK or any filter sees the data (private to src/io). What makes a reader crash or
-// loop is left to the process's limits and sandbox (reader_process.h). Each throws
+// loop is left to the process's limits and sandbox (io/reader_process.h). Each throws
 // FormatError naming the file (`where` for a data set) and what is wrong; IoError if the
 // file cannot be opened.
 #pragma once

@@ -46,6 +46,13 @@ public:
         skip((n + 3) / 4 * 4 - n);
         return s;
     }
+    // A list's length: 0 when ABSENT (two zero words); otherwise its tag must be `tag`.
+    uint64_t list(uint64_t tag, const char* what) {
+        const uint64_t t = u32(), n = count();
+        if (t != tag && (t != 0 || n != 0))
+            throw FormatError(path_ + ": malformed Exodus II (NetCDF) " + what + " list");
+        return t == tag ? n : 0;
+    }
 
 private:
     void need(uint64_t bytes) const {
@@ -75,13 +82,8 @@ struct Variable {
     uint64_t type = 0, begin = 0;
 };
 
-using Dims = std::vector<std::pair<std::string, uint64_t>>;
-
 void skipAttributes(Cursor& c, const std::string& path) {
-    uint64_t tag = c.u32(), n = c.count();
-    if (tag == 0 && n == 0) return;
-    if (tag != 0x0C) throw FormatError(path + ": malformed Exodus II (NetCDF) attribute list");
-    for (uint64_t i = 0; i < n; ++i) {
+    for (uint64_t i = 0, n = c.list(0x0C, "attribute"); i < n; ++i) {
         c.name();
         uint64_t size = typeSize(c.u32());
         if (size == 0) throw FormatError(path + ": unknown NetCDF attribute type");
@@ -91,30 +93,22 @@ void skipAttributes(Cursor& c, const std::string& path) {
 
 struct Header {
     uint64_t numRecs = 0;
-    Dims dims;
+    std::vector<uint64_t> dims;  // lengths
     std::vector<Variable> vars;
 
-    bool isRecord(const Variable& v) const { return !v.dims.empty() && dims[v.dims[0]].second == 0; }
+    bool isRecord(const Variable& v) const { return !v.dims.empty() && dims[v.dims[0]] == 0; }
 };
 
 Header parseHeader(Cursor& c, const std::string& path, int version) {
     Header h;
     h.numRecs = c.count();
     if (h.numRecs == (version == 5 ? ~uint64_t(0) : 0xFFFFFFFFu)) h.numRecs = 0;  // streaming
-    uint64_t tag = c.u32(), n = c.count();
-    if (!(tag == 0 && n == 0)) {
-        if (tag != 0x0A) throw FormatError(path + ": malformed Exodus II (NetCDF) dimension list");
-        for (uint64_t i = 0; i < n; ++i) {
-            std::string name = c.name();
-            h.dims.emplace_back(name, c.count());
-        }
+    for (uint64_t i = 0, n = c.list(0x0A, "dimension"); i < n; ++i) {
+        c.name();
+        h.dims.push_back(c.count());
     }
     skipAttributes(c, path);
-    tag = c.u32();
-    n = c.count();
-    if (!(tag == 0 && n == 0) && tag != 0x0B)
-        throw FormatError(path + ": malformed Exodus II (NetCDF) variable list");
-    for (uint64_t i = 0; tag == 0x0B && i < n; ++i) {
+    for (uint64_t i = 0, n = c.list(0x0B, "variable"); i < n; ++i) {
         Variable v;
         v.name = c.name();
         for (uint64_t k = 0, nd = c.count(); k < nd; ++k) {
@@ -138,7 +132,7 @@ Header parseHeader(Cursor& c, const std::string& path, int version) {
 void checkExtents(const Header& h, uint64_t fileSize, const std::string& path) {
     auto bytesPerRecord = [&](const Variable& v) {
         uint64_t b = typeSize(v.type);
-        for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]].second, path);
+        for (size_t k = h.isRecord(v) ? 1 : 0; k < v.dims.size(); ++k) b = mul(b, h.dims[v.dims[k]], path);
         return b;
     };
     uint64_t recordSize = 0, recordVars = 0;

@@ -4,6 +4,7 @@
 #include "io/reader/checks.h"
 
 #include "core/errors.h"
+#include "io/reader/parsers.h"  // shown
 
 #include <algorithm>
 #include <cctype>
@@ -43,13 +44,6 @@ bool isReal(const std::string& t) {
         if (i == start) return false;
     }
     return i == t.size();
-}
-
-std::string shown(const std::string& token) {
-    std::string s = token.substr(0, 20);
-    for (auto& c : s)
-        if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-    return s;
 }
 
 // Reads like vtkDataReader: whitespace-separated tokens; binary data after the rest

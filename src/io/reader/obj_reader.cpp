@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
-#include <cstdlib>
 #include <fstream>
 #include <string_view>
 #include <system_error>
@@ -34,13 +33,6 @@ std::vector<std::string_view> words(std::string_view line) {
 bool parseDouble(std::string_view s, double& v) {
     auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     return ec == std::errc() && p == s.data() + s.size();
-}
-
-std::string shown(std::string_view s) {
-    std::string out(s.substr(0, 20));
-    for (auto& c : out)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
-    return out;
 }
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
-#include "io/reader/surface_pipeline.h"
 
 #include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
@@ -20,7 +19,6 @@
 #include <vtkOpenFOAMReader.h>
 #include <vtkPOpenFOAMReader.h>
 #include <vtkPointData.h>
-#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
 #include <cstdlib>

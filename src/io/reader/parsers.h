@@ -9,6 +9,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <string_view>
 
 class vtkPolyData;
 
@@ -24,5 +25,14 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path);
 // relative vertex indices; "/texture/normal" parts ignored). Everything else (vt, vn, l,
 // g, o, s, usemtl, mtllib, comments) is skipped.
 vtkSmartPointer<vtkPolyData> readObj(const std::string& path);
+
+// A bad token as these parsers and the legacy check quote it: its first 20 bytes, any byte
+// that is not printable ASCII as '?'.
+inline std::string shown(std::string_view token) {
+    std::string s(token.substr(0, 20));
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
+    return s;
+}
 
 }  // namespace flowsurf::io::detail

@@ -1,4 +1,4 @@
-// flowsurf-reader: the process every file is read in (see reader_process.h). Started by
+// flowsurf-reader: the process every file is read in (see io/reader_process.h). Started by
 // the library with the socket on fd 3 and the reasons pipe on fd 4; limits itself and
 // enters its sandbox (sandbox.h), then answers requests (each: its CPU-time and memory
 // budgets, the op, its arguments) until Quit or end of stream. A crash, abort or limit hit

@@ -138,15 +138,10 @@ void landlock(const std::string& root) {
 #ifdef __NR_landlock_create_ruleset
     const long abi = syscall(__NR_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
     if (abi < 1) return;  // no Landlock in this kernel: the filter below still holds
+    // ABI 1's rights are bits 0 (EXECUTE) to 12 (MAKE_SYM), ABI 2 adds 13 (REFER); later ones
+    // (truncate, ioctl) are the system-call filter's.
     landlock_ruleset_attr attr{};
-    attr.handled_access_fs = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE |
-                             LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR |
-                             LANDLOCK_ACCESS_FS_REMOVE_DIR | LANDLOCK_ACCESS_FS_REMOVE_FILE |
-                             LANDLOCK_ACCESS_FS_MAKE_CHAR | LANDLOCK_ACCESS_FS_MAKE_DIR |
-                             LANDLOCK_ACCESS_FS_MAKE_REG | LANDLOCK_ACCESS_FS_MAKE_SOCK |
-                             LANDLOCK_ACCESS_FS_MAKE_FIFO | LANDLOCK_ACCESS_FS_MAKE_BLOCK |
-                             LANDLOCK_ACCESS_FS_MAKE_SYM;
-    if (abi >= 2) attr.handled_access_fs |= LANDLOCK_ACCESS_FS_REFER;
+    attr.handled_access_fs = ((abi >= 2 ? LANDLOCK_ACCESS_FS_REFER : LANDLOCK_ACCESS_FS_MAKE_SYM) << 1) - 1;
     const int ruleset = int(syscall(__NR_landlock_create_ruleset, &attr, sizeof attr, 0));
     if (ruleset < 0) return;
     const int dir = ::open(root.empty() ? "/" : root.c_str(), O_PATH | O_CLOEXEC);

@@ -21,9 +21,7 @@
 #include <vtkTriangleFilter.h>
 
 #include <cmath>
-#include <cstdio>
 #include <map>
-#include <mutex>
 #include <set>
 #include <limits>
 #include <vector>

@@ -53,12 +53,6 @@ bool isExecutiveFailure(const std::string& message) {
            message.find("returned failure for request") != std::string::npos;
 }
 
-void onVtkEvent(vtkObject*, unsigned long eventId, void* clientData, void* callData) {
-    auto* trap = static_cast<VtkMessageTrap*>(clientData);
-    const char* text = static_cast<const char*>(callData);
-    trap->add(eventId == vtkCommand::ErrorEvent, text);
-}
-
 std::string trim(const std::string& s) {
     const char* ws = " \t\r\n";
     size_t b = s.find_first_not_of(ws);
@@ -139,7 +133,9 @@ VtkMessageTrap::Active::~Active() { gTrap = previous_; }
 
 VtkMessageTrap::VtkMessageTrap() {
     callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
-    callback_->SetCallback(onVtkEvent);
+    callback_->SetCallback([](vtkObject*, unsigned long eventId, void* trap, void* text) {
+        static_cast<VtkMessageTrap*>(trap)->add(eventId == vtkCommand::ErrorEvent, static_cast<const char*>(text));
+    });
     callback_->SetClientData(this);
 }
 

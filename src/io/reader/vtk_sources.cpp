@@ -73,17 +73,14 @@ void checkBinaryStlSize(const std::string& path) {
     std::string head(84, '\0');
     std::ifstream in(path, std::ios::binary);
     head.resize(size_t(in.read(head.data(), 84).gcount()));
-    const size_t size = fs::file_size(path);
-    uint32_t count = 0;
-    if (head.size() == 84) {
-        for (int i = 3; i >= 0; --i) count = count * 256 + static_cast<unsigned char>(head[80 + i]);
-    }
-    const uint64_t binarySize = 84 + 50 * uint64_t(count);
-    size_t first = head.find_first_not_of(" \t\r\n");
-    const bool saysSolid = first != std::string::npos && head.compare(first, 5, "solid") == 0;
-    if (saysSolid || (head.size() == 84 && binarySize == size)) return;
+    const size_t first = head.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && head.compare(first, 5, "solid") == 0) return;
     if (head.size() < 84)
         throw FormatError(path + ": not an STL file (too short for a binary STL header, no 'solid')");
+    uint32_t count = 0;
+    for (int i = 3; i >= 0; --i) count = count * 256 + static_cast<unsigned char>(head[80 + i]);
+    const uint64_t binarySize = 84 + 50 * uint64_t(count);
+    const size_t size = fs::file_size(path);
     if (binarySize > size)
         throw FormatError(path + ": truncated binary STL: the header declares " + std::to_string(count) +
                           " triangles (" + std::to_string(binarySize) + " bytes), the file has " +

@@ -1,4 +1,4 @@
-#include "io/reader/reader_process.h"
+#include "io/reader_process.h"
 
 #include "core/errors.h"
 #include "core/program_dirs.h"

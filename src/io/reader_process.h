@@ -1,9 +1,9 @@
 // flowsurf — files are read in a child process (private to src/io). VTK's readers (and
 // our PLY/OBJ parsers) run in `flowsurf-reader`, started with posix_spawn (never fork:
 // the step prefetch thread makes it unsafe) with only its socket and reasons pipe open,
-// inside a sandbox (sandbox.h) and, per request, budgets that grow with the input
+// inside a sandbox (reader/sandbox.h) and, per request, budgets that grow with the input
 // (readerBudget): a wall-clock deadline kept here, CPU time and address space limited in
-// the child. The surface comes back over the socket (reader_wire.h). A crash, abort, hang,
+// the child. The surface comes back over the socket (reader/reader_wire.h). A crash, abort, hang,
 // allocation bomb or refused system call ends the child and becomes a one-line FormatError
 // naming the file and what was hit. One ReaderProcess serves many requests (a time series
 // keeps its child alive); a request below another folder gets a fresh child confined to
