@@ -7,7 +7,7 @@
 #include "methods/common/agreeing_group.h"
 #include "methods/common/surface_gpu.h"
 #include "methods/make_renderer.h"
-#include "thread_group.h"
+#include "parallel_util.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,6 @@
 #include <mutex>
 #include <string>
 #include <thread>
-#include <unordered_map>
 #include <vector>
 
 using namespace flowsurf;
@@ -53,30 +52,6 @@ private:
     int failAt_ = -1, calls_ = 0;
 };
 
-// The triangles of the sphere on one side of x = 0 (two pieces with a seam through the view).
-core::SurfaceMesh half(const core::SurfaceMesh& mesh, int side) {
-    core::SurfaceMesh p;
-    std::unordered_map<uint32_t, uint32_t> index;
-    auto vertex = [&](uint32_t v) {
-        auto [it, fresh] = index.try_emplace(v, uint32_t(p.positions.size()));
-        if (fresh) {
-            p.positions.push_back(mesh.positions[v]);
-            p.normals.push_back(mesh.normals[v]);
-        }
-        return it->second;
-    };
-    for (const auto& t : mesh.triangles) {
-        const float x = mesh.positions[t.x].x + mesh.positions[t.y].x + mesh.positions[t.z].x;
-        if ((x < 0.0f) == (side == 0)) p.triangles.push_back({vertex(t.x), vertex(t.y), vertex(t.z)});
-    }
-    for (const auto& f : mesh.fields) {
-        core::VectorField g{f.name, std::vector<glm::vec3>(p.positions.size())};
-        for (auto [from, to] : index) g.values[to] = f.values[from];
-        p.fields.push_back(std::move(g));
-    }
-    return p;
-}
-
 // Where process 1 fails in frame kFailFrame: before its `at`-th collective step of the
 // frame, or after the frame's last one (at < 0).
 constexpr int kFrames = 6, kFailFrame = 3;
@@ -103,7 +78,9 @@ std::vector<Outcome> runWithFailure(const std::string& method, int at) {
                 test::ThreadGroup::Member member(threads, r);
                 methods::AgreeingGroup group(member);
                 FaultyGroup faulty(group);  // fails between two of the agreeing group's steps
-                const core::SurfaceMesh piece = half(data.steps.front().mesh, r);
+                // Two pieces with a seam through the view.
+                const core::SurfaceMesh piece =
+                    test::pieceOf(data.steps.front().mesh, [r](glm::vec3 c) { return (c.x < 0.0f) == (r == 0); });
                 methods::MethodParams params;
                 const methods::SurfaceStatistics whole =
                     methods::wholeSurfaceStatistics(group, piece, "velocity", params.common);

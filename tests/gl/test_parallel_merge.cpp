@@ -13,7 +13,7 @@
 #include "methods/make_renderer.h"
 #include "session/options/options.h"
 #include "session/playback.h"
-#include "thread_group.h"
+#include "parallel_util.h"
 
 #include <gtest/gtest.h>
 
@@ -24,36 +24,12 @@
 #include <optional>
 #include <string>
 #include <thread>
-#include <unordered_map>
 
 using namespace flowsurf;
 
 namespace {
 
-// The triangles of `mesh` whose centroid `keep` accepts, with their vertices (shared seam
-// vertices appear in both pieces, as in a partitioned dataset).
-core::SurfaceMesh pieceOf(const core::SurfaceMesh& mesh, const std::function<bool(glm::vec3)>& keep) {
-    core::SurfaceMesh p;
-    std::unordered_map<uint32_t, uint32_t> index;
-    auto vertex = [&](uint32_t v) {
-        auto [it, fresh] = index.try_emplace(v, uint32_t(p.positions.size()));
-        if (fresh) {
-            p.positions.push_back(mesh.positions[v]);
-            p.normals.push_back(mesh.normals[v]);
-        }
-        return it->second;
-    };
-    for (const auto& t : mesh.triangles) {
-        const glm::vec3 c = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
-        if (keep(c)) p.triangles.push_back({vertex(t.x), vertex(t.y), vertex(t.z)});
-    }
-    for (const auto& f : mesh.fields) {
-        core::VectorField g{f.name, std::vector<glm::vec3>(p.positions.size())};
-        for (auto [from, to] : index) g.values[to] = f.values[from];
-        p.fields.push_back(std::move(g));
-    }
-    return p;
-}
+using test::pieceOf;
 
 struct Images {
     std::vector<uint8_t> rgb;  // top-down RGB8

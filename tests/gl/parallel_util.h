@@ -1,14 +1,17 @@
-// flowsurf tests — N threads as one process group (methods::ProcessGroup), for the
-// parallel tests: each collective writes its contribution, waits for all, reads the
-// result, and waits again before the slots are reused.
+// flowsurf tests — what the parallel tests share: N threads as one process group
+// (methods::ProcessGroup; each collective writes its contribution, waits for all, reads the
+// result, and waits again before the slots are reused) and pieces of a mesh.
 #pragma once
 
+#include "core/mesh.h"
 #include "methods/common/process_group.h"
 
 #include <algorithm>
 #include <barrier>
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 namespace flowsurf::test {
@@ -66,5 +69,30 @@ private:
     std::vector<std::vector<int32_t>> ints_;
     std::vector<std::vector<std::vector<uint8_t>>> messages_{size_t(n_)};  // [sender][receiver]
 };
+
+// The triangles of `mesh` whose centroid `keep` accepts, with their vertices (shared seam
+// vertices appear in both pieces, as in a partitioned dataset).
+inline core::SurfaceMesh pieceOf(const core::SurfaceMesh& mesh, const std::function<bool(glm::vec3)>& keep) {
+    core::SurfaceMesh p;
+    std::unordered_map<uint32_t, uint32_t> index;
+    auto vertex = [&](uint32_t v) {
+        auto [it, fresh] = index.try_emplace(v, uint32_t(p.positions.size()));
+        if (fresh) {
+            p.positions.push_back(mesh.positions[v]);
+            p.normals.push_back(mesh.normals[v]);
+        }
+        return it->second;
+    };
+    for (const auto& t : mesh.triangles) {
+        const glm::vec3 c = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
+        if (keep(c)) p.triangles.push_back({vertex(t.x), vertex(t.y), vertex(t.z)});
+    }
+    for (const auto& f : mesh.fields) {
+        core::VectorField g{f.name, std::vector<glm::vec3>(p.positions.size())};
+        for (auto [from, to] : index) g.values[to] = f.values[from];
+        p.fields.push_back(std::move(g));
+    }
+    return p;
+}
 
 }  // namespace flowsurf::test
