@@ -18,28 +18,30 @@ namespace {
 
 // Fixed on purpose (not shared with shaders/): the workload must not change with the code
 // it calibrates.
-constexpr const char* kGridVert = R"(#version 450 core
-layout(location = 0) in vec2 pos;
+// Its own binding points, named once and handed to the shaders as #defines.
+constexpr int kPosLocation = 0, kColorOutput = 0, kNoiseUnit = 0, kGridBuffer = 0;
+constexpr const char* kGridVert = R"(
+layout(location = POS_LOCATION) in vec2 pos;
 out vec2 uv;
 void main() {
     uv = pos * 0.5 + 0.5;
     gl_Position = vec4(pos, 0.5 * sin(7.0 * pos.x) * cos(5.0 * pos.y), 1.0);
 }
 )";
-constexpr const char* kGridFrag = R"(#version 450 core
+constexpr const char* kGridFrag = R"(
 in vec2 uv;
-layout(location = 0) out vec4 color;
+layout(location = COLOR_OUTPUT) out vec4 color;
 void main() { color = vec4(uv, fract(uv.x * 37.0 + uv.y * 11.0), 1.0); }
 )";
-constexpr const char* kFetchVert = R"(#version 450 core
+constexpr const char* kFetchVert = R"(
 void main() {
     vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
     gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);
 }
 )";
-constexpr const char* kFetchFrag = R"(#version 450 core
-layout(binding = 0) uniform sampler2D noise;
-layout(location = 0) out vec4 color;
+constexpr const char* kFetchFrag = R"(
+layout(binding = NOISE_UNIT) uniform sampler2D noise;
+layout(location = COLOR_OUTPUT) out vec4 color;
 void main() {
     vec2 p = gl_FragCoord.xy / 512.0;
     vec4 sum = vec4(0.0);
@@ -54,9 +56,13 @@ void main() {
 
 constexpr int kSize = 512, kGrid = 200;  // 2 * 200^2 = 80,000 triangles
 
-GLuint compile(GLenum type, const char* source) {
+GLuint compile(GLenum type, const char* body) {
+    const std::string source = "#version 450 core\n#define POS_LOCATION " + std::to_string(kPosLocation) +
+                               "\n#define COLOR_OUTPUT " + std::to_string(kColorOutput) + "\n#define NOISE_UNIT " +
+                               std::to_string(kNoiseUnit) + "\n" + body;
+    const char* text = source.c_str();
     GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, nullptr);
+    glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -102,11 +108,11 @@ double calibrationMs(int frames, int repeats) {
     gl::Buffer vertices(GLsizeiptr(pos.size() * sizeof(float)), pos.data(), 0);
     gl::Buffer indices(GLsizeiptr(index.size() * sizeof(uint32_t)), index.data(), 0);
     gl::VertexArray gridVao = gl::VertexArray::create(), emptyVao = gl::VertexArray::create();
-    glVertexArrayVertexBuffer(gridVao.id(), 0, vertices.id(), 0, 2 * sizeof(float));
+    glVertexArrayVertexBuffer(gridVao.id(), kGridBuffer, vertices.id(), 0, 2 * sizeof(float));
     glVertexArrayElementBuffer(gridVao.id(), indices.id());
-    glEnableVertexArrayAttrib(gridVao.id(), 0);
-    glVertexArrayAttribFormat(gridVao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(gridVao.id(), 0, 0);
+    glEnableVertexArrayAttrib(gridVao.id(), kPosLocation);
+    glVertexArrayAttribFormat(gridVao.id(), kPosLocation, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(gridVao.id(), kPosLocation, kGridBuffer);
 
     // A 256^2 hash noise texture, repeated.
     std::vector<uint32_t> texels(256 * 256);
@@ -123,7 +129,7 @@ double calibrationMs(int frames, int repeats) {
 
     gl::Texture2D colorTex(GL_RGBA8, kSize, kSize), depthTex(GL_DEPTH_COMPONENT24, kSize, kSize);
     gl::Framebuffer fbo = gl::Framebuffer::create();
-    fbo.attach(GL_COLOR_ATTACHMENT0, colorTex);
+    fbo.attach(GL_COLOR_ATTACHMENT0 + kColorOutput, colorTex);
     fbo.attach(GL_DEPTH_ATTACHMENT, depthTex);
     fbo.finish(1);
     auto grid = link(kGridVert, kGridFrag), fetch = link(kFetchVert, kFetchFrag);
@@ -138,7 +144,7 @@ double calibrationMs(int frames, int repeats) {
         glDrawElements(GL_TRIANGLES, GLsizei(index.size()), GL_UNSIGNED_INT, nullptr);
         glDisable(GL_DEPTH_TEST);
         glUseProgram(fetch.id());
-        glBindTextureUnit(0, noise.id());
+        glBindTextureUnit(kNoiseUnit, noise.id());
         glBindVertexArray(emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
     };
