@@ -29,6 +29,18 @@ Buffer::Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags) : size_(byt
     glCreateBuffers(1, &id);
     h_ = Handle<detail::deleteBuffer>(id);
     glNamedBufferStorage(id, bytes, data, flags);
+    // A store that could not be allocated leaves the buffer empty (GL_OUT_OF_MEMORY): said
+    // here, not found later as wrong values (an error on one of several processes is then
+    // every process's, methods/common/agreeing_group.h).
+    GLint64 size = 0;
+    glGetNamedBufferParameteri64v(id, GL_BUFFER_SIZE, &size);
+    if (bytes > 0 && size != bytes) {
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        char mib[32];
+        std::snprintf(mib, sizeof mib, "%.1f", double(bytes) / double(1 << 20));
+        throw GlError(std::string("not enough graphics memory for a buffer of ") + mib + " MiB");
+    }
 }
 
 BufferTexture::BufferTexture(GLenum internalFormat, const Buffer& buffer) {

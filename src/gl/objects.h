@@ -60,7 +60,8 @@ private:
 class Buffer {
 public:
     Buffer() = default;
-    // Immutable storage of `bytes`, optionally initialised from `data`.
+    // Immutable storage of `bytes`, optionally initialised from `data`; GlError when the
+    // store cannot be allocated.
     Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
     GLuint id() const { return h_.id(); }
     GLsizeiptr size() const { return size_; }

@@ -30,11 +30,15 @@ DyeField::DyeField(const core::SurfaceMesh& mesh, const std::string& field, cons
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTextureSubImage3D(id, 0, 0, 0, 0, g.dims.x, g.dims.y, g.dims.z, GL_RED_INTEGER, GL_INT, band_.index.data());
     const size_t n = std::max<size_t>(band_.size(), 1);
-    bandData_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
-    values_ = gl::Buffer(GLsizeiptr(n * 3 * sizeof(glm::vec4)), nullptr);
-    departures_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
-    active_ = gl::Buffer(GLsizeiptr(n * sizeof(uint32_t)), nullptr);
-    flags_ = gl::Buffer(GLsizeiptr((band_.brickStart.size()) * sizeof(uint32_t)), nullptr);
+    try {
+        bandData_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
+        values_ = gl::Buffer(GLsizeiptr(n * 3 * sizeof(glm::vec4)), nullptr);
+        departures_ = gl::Buffer(GLsizeiptr(n * 2 * sizeof(glm::vec4)), nullptr);
+        active_ = gl::Buffer(GLsizeiptr(n * sizeof(uint32_t)), nullptr);
+        flags_ = gl::Buffer(GLsizeiptr((band_.brickStart.size()) * sizeof(uint32_t)), nullptr);
+    } catch (const GlError& e) {
+        throw GlError(std::string("dye: the band of ") + std::to_string(band_.size()) + " voxels: " + e.what());
+    }
     setVelocity(mesh, field);
     clear();
 }

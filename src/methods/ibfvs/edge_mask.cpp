@@ -1,10 +1,12 @@
 #include "methods/ibfvs/edge_mask.h"
 
+#include "core/errors.h"
 #include "methods/common/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstring>
+#include <string>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -80,7 +82,11 @@ uint32_t EdgeMask::drawOwn(const SurfaceGpu& surface, bool capture) {
     glGetNamedBufferSubData(capture_.id(), 0, 4, &count);
     if (count > capacity_) {  // the buffer was too small: grow it and capture again, drawing nothing
         capacity_ = count;
-        capture_ = gl::Buffer(kCaptureHeader + GLsizeiptr(capacity_) * 4 * GLsizeiptr(sizeof(glm::vec4)), nullptr);
+        try {
+            capture_ = gl::Buffer(kCaptureHeader + GLsizeiptr(capacity_) * 4 * GLsizeiptr(sizeof(glm::vec4)), nullptr);
+        } catch (const GlError& e) {
+            throw GlError("edge mask: the outlines of " + std::to_string(count) + " silhouette edges: " + e.what());
+        }
         glEnable(GL_RASTERIZER_DISCARD);
         draw();
         glDisable(GL_RASTERIZER_DISCARD);
