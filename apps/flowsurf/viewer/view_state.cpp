@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cmath>
-#include <sstream>
 
 namespace flowsurf::app::view {
 
@@ -224,17 +223,7 @@ void ViewerState::key(const std::string& k) {
 void ViewerState::set(const std::string& name, const std::string& value) {
     // Settings only a viewer has.
     if (name == "compare") {
-        compare.clear();
-        if (value != "off" && value != "none" && !value.empty()) {
-            std::stringstream ss(value);
-            for (std::string m; std::getline(ss, m, ',');) {
-                compare.emplace_back();
-                if (!methods::valueOf(methods::kMethodNames, m, &compare.back())) {
-                    compare.pop_back();
-                    throw ConfigError("compare: '" + m + "' is not one of " + methods::nameList(methods::kMethodNames));
-                }
-            }
-        }
+        compare = value == "off" || value == "none" ? std::vector<methods::Method>{} : parseMethodList(value, "compare");
         requests_.rebuild = true;
         return;
     }
