@@ -106,6 +106,33 @@ TEST(CliOptions, SizeAndColourSyntaxes) {
     }
 }
 
+// What a method list (--methods, the viewer's compare) and a view preset read as.
+TEST(CliOptions, MethodListsAndViewPresetsParseOnce) {
+    EXPECT_EQ(parseMethodList("isa,,hybrid", "--methods"),
+              (std::vector<methods::Method>{methods::Method::Isa, methods::Method::Hybrid}));
+    EXPECT_TRUE(parseMethodList("", "--methods").empty());
+    try {
+        parseMethodList("isa,lic", "--methods");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--methods: 'lic' is not one of isa, ibfvs, hybrid"), std::string::npos)
+            << e.what();
+    }
+    RenderOptions o;
+    setOption(o, "view", "-z");
+    EXPECT_EQ(o.view, ViewPreset::MinusZ);
+    EXPECT_EQ(findOption("view")->get(o), "-z");
+    setOption(o, "view", "");
+    EXPECT_EQ(o.view, ViewPreset::Default);
+    try {
+        setOption(o, "view", "top");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--view: 'top' is not one of +x, -x, +y, -y, +z, -z, iso"),
+                  std::string::npos) << e.what();
+    }
+}
+
 // Every option of the table: its default text reads back to the default, and the
 // help shows it (defaults are printed from the structs, never retyped).
 TEST(CliOptions, TableDefaultsRoundTrip) {
