@@ -185,9 +185,11 @@ PYBIND11_MODULE(_flowsurf, m) {
         for (const OptionInfo& o : Renderer::optionInfo())
             rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
                                  py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
-                                 py::arg("choices") = o.choices, py::arg("default") = o.defaultValue));
+                                 py::arg("choices") = o.choices, py::arg("default") = o.defaultValue,
+                                 py::arg("separator") = o.separator));
         return rows;
-    }, "The render options described (name, group, help, kind, min, max, choices, default), in --help order");
+    }, "The render options described (name, group, help, kind, min, max, choices, default, separator), in --help "
+       "order");
     py::class_<VideoWriter>(m, "_VideoWriter")
         .def(py::init<const std::string&, int, int, int, int>(), py::arg("path"), py::arg("width"), py::arg("height"),
              py::arg("fps") = 30, py::arg("crf") = 18)

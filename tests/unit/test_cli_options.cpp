@@ -104,6 +104,16 @@ TEST(CliOptions, SizeAndColourSyntaxes) {
         EXPECT_NE(std::string(e.what()).find("--dye: 'purplish' is not a colour"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("cyan"), std::string::npos) << e.what();
     }
+    // --time takes two numbers: a third is refused as not START:END (Python's time=(a, b, c)).
+    RenderOptions o;
+    setOption(o, "time", "0.5:2");
+    EXPECT_EQ(o.timeRange, std::make_pair(0.5, 2.0));
+    try {
+        setOption(o, "time", "0:1:2");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--time: '0:1:2' is not START:END"), std::string::npos) << e.what();
+    }
 }
 
 // What a method list (--methods, the viewer's compare) and a view preset read as.
