@@ -138,7 +138,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         const long triangles = long(steps.load(0).triangleCount());
         for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(bounds, vp, {0.3f, 0.4f, 1.0f});
-            if (o.camera == "paraview") {
+            if (o.camera == BenchCamera::ParaView) {
                 const float r = bounds.radius();
                 camera.fovDeg = 30.0f;
                 camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));

@@ -13,6 +13,12 @@
 
 namespace flowsurf::bench {
 
+// Camera placement: our default framing, or ParaView's ResetCamera (the bounding box's
+// sphere fills a 30 degree view), for like-for-like comparisons.
+enum class BenchCamera { Fit, ParaView };
+inline constexpr methods::EnumNames<BenchCamera, 2> kBenchCameraNames{
+    {{BenchCamera::Fit, "fit"}, {BenchCamera::ParaView, "paraview"}}};
+
 struct BenchOptions {
     std::string csv;                     // also write CSV here
     int frames = 20;                     // timed frames per row and case
@@ -43,9 +49,7 @@ struct BenchOptions {
     // Also time the fixed calibration frame (calibration.h) before each method's rows and
     // add one row, method "calib", with the median: the machine's speed in this run.
     bool calibration = false;
-    // Camera placement: "fit" (our default framing) or "paraview" (ParaView's ResetCamera:
-    // the bounding box's sphere fills a 30 degree view), for like-for-like comparisons.
-    std::string camera = "fit";
+    BenchCamera camera = BenchCamera::Fit;
 };
 
 struct BenchRow {

@@ -50,7 +50,7 @@ int runBench(const BenchOptions& o) {
     b.gridRes = o.grids;
     b.filterLengths = o.lengths;
     b.dynamicOnly = o.dynamicOnly;
-    b.camera = o.camera;
+    b.camera = parseName(bench::kBenchCameraNames, o.camera, "--camera");
     b.glPaths.clear();
     for (const auto& p : o.glPaths) b.glPaths.push_back(parseName(methods::kGlPathNames, p, "--gl-paths"));
     b.surfaceRasters.clear();
