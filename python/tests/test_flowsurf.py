@@ -177,6 +177,8 @@ def test_errors_raise_the_named_exceptions(tmp_path):
 def test_sequence_keywords_are_joined_as_the_option_table_says():
     r = flowsurf.Renderer(size=(64, 48), time=(0.5, 2), eye=np.array([0, 0, 5]))
     assert (r.get("size"), r.get("time"), r.get("eye")) == ("64x48", "0.5:2", "0,0,5")
+    r.set(color_range=(0, 2.5))  # a range: MIN:MAX (it was joined by commas and refused)
+    assert r.get("color_range") == "0:2.5"
     # A wrong count is refused by the option's own parser, naming it and its syntax.
     with pytest.raises(ValueError, match=r"size=\(64,\).*WIDTHxHEIGHT"):
         r.set(size=(64,))

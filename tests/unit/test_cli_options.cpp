@@ -195,6 +195,20 @@ TEST(CliOptions, ConfigFileRoundTrip) {
     std::remove(path.c_str());
 }
 
+// A JSON array is the option's numbers joined by its row's separator: [64, 48] is 64x48,
+// [0.5, 2] as time and [0, 2.5] as a colour range are START:END and MIN:MAX.
+TEST(CliOptions, ConfigArraysAreJoinedAsTheRowSays) {
+    const std::string path = ::testing::TempDir() + "flowsurf_config_arrays.json";
+    io::writeTextFile(path, "{\"size\": [64, 48], \"time\": [0.5, 2], \"color-range\": [0, 2.5], \"eye\": [0, 0, 5]}");
+    RenderOptions o;
+    applyConfigFile(path, o);
+    EXPECT_EQ(findOption("size")->get(o), "64x48");
+    EXPECT_EQ(findOption("time")->get(o), "0.5:2");
+    EXPECT_EQ(findOption("color-range")->get(o), "0:2.5");
+    EXPECT_EQ(findOption("eye")->get(o), "0,0,5");
+    std::remove(path.c_str());
+}
+
 TEST(CliOptions, ConfigFileErrorsNameFileAndKey) {
     const std::string path = ::testing::TempDir() + "flowsurf_config_bad.json";
     auto write = [&](const char* text) { std::FILE* f = std::fopen(path.c_str(), "w"); std::fputs(text, f); std::fclose(f); };

@@ -224,6 +224,7 @@ OptionSpec rangeOption(std::string name, OptionRole role, std::string help, Rang
                 if (r.x <= r.y) return formatFloat(r.x) + ":" + formatFloat(r.y);
                 return std::string(mode(m) == methods::RangeMode::Data ? "data" : "robust");
             },
+            .arraySeparator = ":",  // [0, 1] in a config file, (0, 1) in Python: 0:1
             .rescale = rescale};
 }
 
