@@ -183,18 +183,17 @@ private:
                 state_.setWindowSize(w, h);
         }
         try {
-            if (req.open) {
-                RenderOptions o = state_.options();
-                o.input = *req.open;
-                o.field.clear();  // a new file has its own arrays
-                o.eye.reset(), o.target.reset();
-                o.timeRange.reset(), o.timeStepGiven = false;
-                loadData(o);
-                state_.status = "opened " + o.input;
-            } else if (!req.reload.empty()) {
+            if (req.open || !req.reload.empty()) {
                 RenderOptions o = state_.options();
                 for (const auto& [name, value] : req.reload) setOption(o, name, value);
+                if (req.open) {
+                    o.input = *req.open;
+                    o.field.clear();  // a new file has its own arrays
+                    o.eye.reset(), o.target.reset();
+                    o.timeRange.reset(), o.timeStepGiven = false;
+                }
                 loadData(o);
+                if (req.open) state_.status = "opened " + o.input;
             }
         } catch (const std::exception& e) {
             report(e.what());  // the playback kept the data it had, and the options it was read with
