@@ -193,6 +193,22 @@ TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     EXPECT_EQ(s.clock(), 1u);
 }
 
+// The state's options are its playback's (the one copy the GL side renders with): panel
+// and log edits, live ones (dye) included, and the quality setting land there.
+TEST(ViewState, OptionsAndQualityLiveInThePlayback) {
+    ViewerState s = loaded();
+    EXPECT_EQ(&s.options(), &s.playback().options());
+    s.handle({0, EventType::Set, "alpha", "0.3"});
+    EXPECT_FLOAT_EQ(s.playback().options().params.common.alpha, 0.3f);
+    s.handle({0, EventType::Set, "dye", "0,0,1:0.1:red"});
+    EXPECT_EQ(s.playback().options().dye.size(), 1u);
+    s.handle({0, EventType::Set, "quality", "5"});
+    EXPECT_EQ(s.playback().qualityEvery(), 5);
+    s.handle({0, EventType::Set, "quality", "off"});
+    EXPECT_EQ(s.qualityEvery(), 0);
+    EXPECT_TRUE(s.error.empty()) << s.error;
+}
+
 // Time playback: data time per frame, held at the end (or looped), and the saved batch
 // options map frame `clock` to the time on screen.
 TEST(ViewState, TimePlaysToTheEndAndBatchOptionsReproduceIt) {
