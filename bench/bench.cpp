@@ -78,11 +78,8 @@ BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool
 }
 
 // The parameter sweep of one method: ISA grids, hybrid filter lengths, else one run.
-std::vector<std::pair<std::string, methods::MethodParams>> variants(const std::string& method,
-                                                                    const BenchOptions& o) {
+std::vector<std::pair<std::string, methods::MethodParams>> variants(methods::Method m, const BenchOptions& o) {
     std::vector<std::pair<std::string, methods::MethodParams>> v;
-    methods::Method m = methods::Method::Isa;
-    methods::valueOf(methods::kMethodNames, method, &m);
     if (m == methods::Method::Isa)
         for (int r : o.gridRes) {
             methods::MethodParams p;
@@ -141,15 +138,16 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         const long triangles = long(steps.load(0).triangleCount());
         for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(bounds, vp, {0.3f, 0.4f, 1.0f});
-            if (o.camera == "paraview") {
+            if (o.camera == BenchCamera::ParaView) {
                 const float r = bounds.radius();
                 camera.fovDeg = 30.0f;
                 camera.eye = camera.target + glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)) * (r / std::sin(glm::radians(15.0f)));
                 core::fitClipPlanes(camera, bounds);
             }
-            for (const std::string& name : o.methods) {
+            for (methods::Method m : o.methods) {
+                const std::string name(methods::nameOf(methods::kMethodNames, m));
                 if (o.calibration) calibration.push_back(calibrationMs(o.frames, 1));
-                for (const auto& [param, variantParams] : variants(name, o))
+                for (const auto& [param, variantParams] : variants(m, o))
                     for (methods::GlPath path : resolvedGlPaths(o.glPaths))
                     for (methods::SurfaceRaster raster : resolvedRasters(o.surfaceRasters, size_t(triangles), vp))
                     for (methods::EnhanceContrast enhance : o.enhanceContrast) {
@@ -158,11 +156,11 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                         params.common.surfaceRaster = raster;
                         params.common.enhanceContrast = enhance;
                         session::RenderOptions options;
-                        options.method = methods::methodFromName(name);
+                        options.method = m;
                         options.params = params;
                         options.size = vp;
                         session::Playback playback(options, steps);
-                        const int renders = name == o.slowdownMethod ? o.slowdownFactor : 1;
+                        const int renders = m == o.slowdownMethod ? o.slowdownFactor : 1;
                         for (bool dynamic : {false, true}) {
                             if (o.dynamicOnly && !dynamic) continue;
                             BenchRow r = timeCase(playback, camera, dynamic, o.frames, o.stageTimes, renders);

@@ -7,15 +7,26 @@
 #include "core/camera.h"
 #include "methods/common/params.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace flowsurf::bench {
 
+// Camera placement: our default framing, or ParaView's ResetCamera (the bounding box's
+// sphere fills a 30 degree view), for like-for-like comparisons.
+enum class BenchCamera { Fit, ParaView };
+inline constexpr methods::EnumNames<BenchCamera, 2> kBenchCameraNames{
+    {{BenchCamera::Fit, "fit"}, {BenchCamera::ParaView, "paraview"}}};
+
 struct BenchOptions {
     std::string csv;                     // also write CSV here
     int frames = 20;                     // timed frames per row and case
-    std::vector<std::string> methods = ::flowsurf::methods::names(::flowsurf::methods::kMethodNames);
+    std::vector<methods::Method> methods = [] {  // every method, in table order
+        std::vector<::flowsurf::methods::Method> all;
+        for (const auto& [m, name] : ::flowsurf::methods::kMethodNames) all.push_back(m);
+        return all;
+    }();
     std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
     std::vector<core::Viewport> imageSizes{{512, 512}, {1024, 1024}};
     std::vector<int> gridRes{128, 256, 512, 1024};   // ISA
@@ -33,14 +44,12 @@ struct BenchOptions {
     std::vector<methods::EnhanceContrast> enhanceContrast{methods::EnhanceContrast::Off};
     // Proof that the speed check fails (scripts/bench-check.sh): every frame of the method
     // named here is rendered `slowdownFactor` times, as if it had become that much slower.
-    std::string slowdownMethod;
+    std::optional<methods::Method> slowdownMethod;
     int slowdownFactor = 1;
     // Also time the fixed calibration frame (calibration.h) before each method's rows and
     // add one row, method "calib", with the median: the machine's speed in this run.
     bool calibration = false;
-    // Camera placement: "fit" (our default framing) or "paraview" (ParaView's ResetCamera:
-    // the bounding box's sphere fills a 30 degree view), for like-for-like comparisons.
-    std::string camera = "fit";
+    BenchCamera camera = BenchCamera::Fit;
 };
 
 struct BenchRow {

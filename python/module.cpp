@@ -71,12 +71,8 @@ py::array_t<float> flowTexture(const Renderer& r) {
     return out;
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_flowsurf, m) {
-    m.doc() = "flowsurf: dense, animated flow textures on triangle-mesh surfaces (C++ core)";
-
-    // Errors: what a user can cause maps to Python's own kinds.
+// Errors: what a user can cause maps to Python's own kinds.
+void bindErrors(py::module_& m) {
     static py::exception<FormatError> formatError(m, "FormatError", PyExc_ValueError);
     static py::exception<FieldError> fieldError(m, "FieldError", PyExc_ValueError);
     static py::exception<GlError> glError(m, "GlError", PyExc_RuntimeError);
@@ -95,7 +91,10 @@ PYBIND11_MODULE(_flowsurf, m) {
             glError(e.what());
         }
     });
+}
 
+// Surface (from arrays or read from a file) and read()'s options.
+void bindSurface(py::module_& m) {
     py::class_<Surface>(m, "Surface")
         .def(py::init(&makeSurface), py::arg("points"), py::arg("triangles"), py::arg("vectors"),
              py::arg("normals") = py::none(), py::arg("field") = "velocity",
@@ -128,13 +127,39 @@ PYBIND11_MODULE(_flowsurf, m) {
                    std::to_string(s.triangleCount()) + " triangles, field '" + s.field() + "', " +
                    std::to_string(s.stepCount()) + " step(s)>";
         });
-
     m.def("_read", &Surface::read, py::arg("path"), py::arg("field") = "",
           py::arg("options") = std::vector<std::pair<std::string, std::string>>{},
           py::call_guard<py::gil_scoped_release>(),
           "Read a surface: any format the command line reads, a file series, or builtin:NAME");
     m.def("read_option_names", &Surface::readOptionNames, "The options of read(): how the input is read");
+}
 
+// The quality of the last frames: metrics by the JSON report's names; None where not
+// measured (NaN).
+py::dict qualityDict(const Renderer& r) {
+    Quality q;
+    {
+        py::gil_scoped_release release;
+        q = r.quality();
+    }
+    auto named = [](const QualityMetrics& metrics) {
+        py::dict d;
+        for (const auto& [name, value] : metrics.named())
+            d[py::str(name)] = std::isnan(value) ? py::object(py::none()) : py::object(py::float_(value));
+        return d;
+    };
+    return py::dict(py::arg("frames") = q.frames, py::arg("median") = named(q.median), py::arg("worst") = named(q.worst));
+}
+
+py::dict cameraDict(const Renderer& r) {
+    const CameraView c = r.camera();
+    return py::dict(py::arg("eye") = py::make_tuple(c.eye[0], c.eye[1], c.eye[2]),
+                    py::arg("target") = py::make_tuple(c.target[0], c.target[1], c.target[2]),
+                    py::arg("up") = py::make_tuple(c.up[0], c.up[1], c.up[2]), py::arg("fov") = c.fovDeg);
+}
+
+// The renderer (flowsurf/__init__.py's Renderer wraps it with keywords).
+void bindRenderer(py::module_& m) {
     py::class_<Renderer>(m, "_Renderer")
         .def(py::init([]() { return std::make_unique<Renderer>(); }), py::call_guard<py::gil_scoped_release>())
         .def("set", &Renderer::set)
@@ -150,44 +175,33 @@ PYBIND11_MODULE(_flowsurf, m) {
             for (const auto& [stage, ms] : r.stageMs()) d[py::str(stage)] = ms;
             return d;
         })
-        .def("camera", [](const Renderer& r) {
-            CameraView c = r.camera();
-            return py::dict(py::arg("eye") = py::make_tuple(c.eye[0], c.eye[1], c.eye[2]),
-                            py::arg("target") = py::make_tuple(c.target[0], c.target[1], c.target[2]),
-                            py::arg("up") = py::make_tuple(c.up[0], c.up[1], c.up[2]), py::arg("fov") = c.fovDeg);
-        })
+        .def("camera", &cameraDict)
         .def_property_readonly("frame", &Renderer::frame)
         .def_property_readonly("time", &Renderer::time)
         .def_property_readonly("width", &Renderer::width)
         .def_property_readonly("height", &Renderer::height)
         .def("gl_renderer", &Renderer::glRenderer)
         .def("set_quality_every", &Renderer::setQualityEvery)
-        .def("quality", [](const Renderer& r) {
-            Quality q;
-            {
-                py::gil_scoped_release release;
-                q = r.quality();
-            }
-            // Metrics by the JSON report's names; None where not measured (NaN).
-            auto named = [](const QualityMetrics& m) {
-                py::dict d;
-                for (const auto& [name, value] : m.named())
-                    d[py::str(name)] = std::isnan(value) ? py::object(py::none()) : py::object(py::float_(value));
-                return d;
-            };
-            return py::dict(py::arg("frames") = q.frames, py::arg("median") = named(q.median),
-                            py::arg("worst") = named(q.worst));
-        });
+        .def("quality", &qualityDict);
+}
 
+// The option table as the keyword layer reads it.
+void bindOptions(py::module_& m) {
     m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
     m.def("option_info", [] {
         py::list rows;
         for (const OptionInfo& o : Renderer::optionInfo())
             rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
                                  py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
-                                 py::arg("choices") = o.choices, py::arg("default") = o.defaultValue));
+                                 py::arg("choices") = o.choices, py::arg("default") = o.defaultValue,
+                                 py::arg("separator") = o.separator));
         return rows;
-    }, "The render options described (name, group, help, kind, min, max, choices, default), in --help order");
+    }, "The render options described (name, group, help, kind, min, max, choices, default, separator), in --help "
+       "order");
+}
+
+// Writers of what Python renders: MP4 (Animation) and PNG.
+void bindWriters(py::module_& m) {
     py::class_<VideoWriter>(m, "_VideoWriter")
         .def(py::init<const std::string&, int, int, int, int>(), py::arg("path"), py::arg("width"), py::arg("height"),
              py::arg("fps") = 30, py::arg("crf") = 18)
@@ -206,4 +220,15 @@ PYBIND11_MODULE(_flowsurf, m) {
         if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("image must have shape (h, w, 3)");
         writePng(path, int(rgb.shape(1)), int(rgb.shape(0)), rgb.data());
     });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_flowsurf, m) {
+    m.doc() = "flowsurf: dense, animated flow textures on triangle-mesh surfaces (C++ core)";
+    bindErrors(m);
+    bindSurface(m);
+    bindRenderer(m);
+    bindOptions(m);
+    bindWriters(m);
 }

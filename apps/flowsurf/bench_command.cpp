@@ -16,18 +16,11 @@ namespace flowsurf::app {
 
 namespace {
 
-methods::GlPath glPathNamed(const std::string& name) {
-    for (const auto& [value, n] : methods::kGlPathNames)
-        if (n == name) return value;
-    throw ConfigError("--gl-paths: unknown path '" + name + "'");
-}
-
 // --slowdown METHOD:K (hidden): K renders per timed frame of METHOD.
 void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
     const size_t colon = text.find(':');
-    const std::string method = text.substr(0, colon);
     methods::Method named{};
-    const bool known = methods::valueOf(methods::kMethodNames, method, &named);
+    const bool known = methods::valueOf(methods::kMethodNames, text.substr(0, colon), &named);
     int factor = 0;
     if (colon != std::string::npos) {
         try {
@@ -40,7 +33,7 @@ void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
     }
     if (!known || factor < 1 || factor > 100)
         throw ConfigError("--slowdown: '" + text + "' is not METHOD:K (a method name, K renders per frame, 1..100)");
-    b.slowdownMethod = method;
+    b.slowdownMethod = named;
     b.slowdownFactor = factor;
 }
 
@@ -49,31 +42,23 @@ void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
 int runBench(const BenchOptions& o) {
     bench::BenchOptions b;
     b.frames = o.frames;
-    b.methods = o.methods;
+    b.methods.clear();
+    for (const auto& m : o.methods) b.methods.push_back(parseName(methods::kMethodNames, m, "--methods"));
     b.triangles = o.triangles;
     b.imageSizes.clear();
     for (const auto& s : o.sizes) b.imageSizes.push_back(parseSize(s, "--sizes"));
     b.gridRes = o.grids;
     b.filterLengths = o.lengths;
     b.dynamicOnly = o.dynamicOnly;
-    b.camera = o.camera;
+    b.camera = parseName(bench::kBenchCameraNames, o.camera, "--camera");
     b.glPaths.clear();
-    for (const auto& p : o.glPaths) b.glPaths.push_back(glPathNamed(p));
+    for (const auto& p : o.glPaths) b.glPaths.push_back(parseName(methods::kGlPathNames, p, "--gl-paths"));
     b.surfaceRasters.clear();
-    for (const auto& r : o.surfaceRasters) {
-        methods::SurfaceRaster value{};
-        if (!methods::valueOf(methods::kSurfaceRasterNames, r, &value))
-            throw ConfigError("--surface-rasters: unknown raster '" + r + "'");
-        b.surfaceRasters.push_back(value);
-    }
+    for (const auto& r : o.surfaceRasters)
+        b.surfaceRasters.push_back(parseName(methods::kSurfaceRasterNames, r, "--surface-rasters"));
     b.enhanceContrast.clear();
-    for (const auto& e : o.enhanceContrast) {
-        methods::EnhanceContrast value{};
-        if (!methods::valueOf(methods::kEnhanceContrastNames, e, &value))
-            throw ConfigError("--enhance-contrast: '" + e + "' is not one of " +
-                              methods::nameList(methods::kEnhanceContrastNames));
-        b.enhanceContrast.push_back(value);
-    }
+    for (const auto& e : o.enhanceContrast)
+        b.enhanceContrast.push_back(parseName(methods::kEnhanceContrastNames, e, "--enhance-contrast"));
     b.stageTimes = !o.noStageTimes;
     b.calibration = o.calibration;
     if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);
@@ -95,7 +80,7 @@ int runBench(const BenchOptions& o) {
     }
     if (b.slowdownFactor > 1)
         std::printf("--slowdown: every frame of %s rendered %d times (a test of the speed check, not a measurement)\n",
-                    b.slowdownMethod.c_str(), b.slowdownFactor);
+                    std::string(methods::nameOf(methods::kMethodNames, *b.slowdownMethod)).c_str(), b.slowdownFactor);
     std::vector<bench::BenchRow> rows = bench::runBench(b);
     if (!o.csv.empty()) {
         std::string tmp = o.csv + ".tmp";

@@ -14,19 +14,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <sstream>
 
 namespace flowsurf::app {
 
 std::vector<methods::Method> splitMethods(const std::string& list) {
-    std::vector<methods::Method> out;
-    std::stringstream ss(list);
-    for (std::string m; std::getline(ss, m, ',');) {
-        if (m.empty()) continue;
-        out.emplace_back();
-        if (!methods::valueOf(methods::kMethodNames, m, &out.back()))
-            throw ConfigError("--methods: '" + m + "' is not one of " + methods::nameList(methods::kMethodNames));
-    }
+    const std::vector<methods::Method> out = parseMethodList(list, "--methods");
     if (out.empty()) throw ConfigError("--methods: give at least one method, e.g. isa,ibfvs");
     return out;
 }

@@ -1,5 +1,6 @@
 // flowsurf — command-line program: render, info, bench. One catch here maps each error
 // type to its exit code (exit_codes.h); the library never exits the process.
+#include "bench.h"
 #include "commands.h"
 #include "session/options/config_file.h"
 #include "session/scene_setup.h"
@@ -127,7 +128,7 @@ CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
         ->capture_default_str()->check(CLI::Range(64, 1024));
     benchCmd->add_flag("--dynamic-only", bench.dynamicOnly, "Only the dynamic case (the cost while animating)");
     benchCmd->add_option("--camera", bench.camera, "Camera placement: fit, or paraview (ParaView's ResetCamera framing)")
-        ->capture_default_str()->check(CLI::IsMember({"fit", "paraview"}));
+        ->capture_default_str()->check(CLI::IsMember(methods::names(bench::kBenchCameraNames)));
     benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(1, 1001));
     {

@@ -68,6 +68,8 @@ struct OptionInfo {
     double min = 0.0, max = 0.0;       // inclusive range of int and float options
     std::vector<std::string> choices;  // the values a choice takes
     std::string defaultValue;  // as text; empty when it has none (e.g. the fitted camera)
+    // What joins the numbers of a value given as several (size 800x600, time 0:1, x,y,z).
+    std::string separator = ",";
 };
 
 class Renderer {

@@ -35,9 +35,10 @@ __all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "Animatio
            "FormatError", "FieldError", "GlError", "option_names", "option_info", "read_option_names"]
 
 # The keywords, from the C++ option table: a Renderer's (what the frame loop applies) and
-# read()'s (how the input is read).
+# read()'s (how the input is read); and what the table says of each Renderer option.
 _OPTIONS = set(option_names())
 _READ_OPTIONS = set(read_option_names())
+_INFO = {o["name"]: o for o in option_info()}
 
 
 def _dye_text(source):
@@ -56,22 +57,18 @@ def _dye_text(source):
 
 
 def _option_text(name, value):
-    """A Python value as the command line's text for option `name`."""
+    """A Python value as the command line's text for option `name`: a sequence of numbers
+    joined as the option table says (size (800, 600): 800x600, time (0, 1): 0.0:1.0, eye:
+    x,y,z); the option's own parser then checks it."""
     if name == "dye" and isinstance(value, (tuple, list)) and value and not isinstance(value[0], (int, float)):
         return ";".join(_dye_text(s) for s in value)  # several sources
     if isinstance(value, (bool, _np.bool_)):
         return "on" if value else "off"  # flags and on/off switches both read it
     if isinstance(value, (tuple, list, _np.ndarray)):
+        info = _INFO.get(name, {})
         items = [v.item() if hasattr(v, "item") else v for v in value]
-        if name == "size":
-            if len(items) != 2:
-                raise ValueError("size must be (width, height), got %r" % (value,))
-            return "%dx%d" % (int(items[0]), int(items[1]))
-        if name == "time":
-            if len(items) != 2:
-                raise ValueError("time must be (start, end), got %r" % (value,))
-            return "%r:%r" % (float(items[0]), float(items[1]))
-        return ",".join(repr(float(v)) for v in items)
+        number = (lambda v: "%d" % int(v)) if info.get("kind") in ("size", "int") else (lambda v: repr(float(v)))
+        return info.get("separator", ",").join(number(v) for v in items)
     if isinstance(value, float):
         return repr(value)
     return str(value)

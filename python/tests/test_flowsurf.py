@@ -174,6 +174,18 @@ def test_errors_raise_the_named_exceptions(tmp_path):
         flowsurf.render(s, method="lic")
 
 
+def test_sequence_keywords_are_joined_as_the_option_table_says():
+    r = flowsurf.Renderer(size=(64, 48), time=(0.5, 2), eye=np.array([0, 0, 5]))
+    assert (r.get("size"), r.get("time"), r.get("eye")) == ("64x48", "0.5:2", "0,0,5")
+    r.set(color_range=(0, 2.5))  # a range: MIN:MAX (it was joined by commas and refused)
+    assert r.get("color_range") == "0:2.5"
+    # A wrong count is refused by the option's own parser, naming it and its syntax.
+    with pytest.raises(ValueError, match=r"size=\(64,\).*WIDTHxHEIGHT"):
+        r.set(size=(64,))
+    with pytest.raises(ValueError, match="START:END"):
+        r.set(time=(0, 1, 2))
+
+
 def test_inputs_need_not_be_contiguous_or_float32():
     pts, tris, vel, _ = sphere(16, 32)
     a = flowsurf.render(flowsurf.Surface(pts.astype(np.float32), tris.astype(np.int32), vel.astype(np.float32)),

@@ -157,7 +157,7 @@ std::vector<OptionInfo> Renderer::optionInfo() {
     for (const auto& spec : session::renderOptionTable())
         if (spec.takes(session::FrontEnd::Renderer))
             out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)],
-                           spec.min, spec.max, spec.choices, session::defaultText(spec)});
+                           spec.min, spec.max, spec.choices, session::defaultText(spec), spec.arraySeparator});
     return out;
 }
 

@@ -37,6 +37,29 @@ void Playback::open(core::StepProvider& steps) {
     builtViews_ = requestedViews_;
 }
 
+void Playback::reopen(core::StepProvider& steps, const RenderOptions& o) {
+    FLOWSURF_CHECK(&steps != steps_);
+    if (!isOpen()) {
+        const RenderOptions before = options_;
+        options_ = o;
+        try {
+            open(steps);
+        } catch (...) {
+            options_ = before;
+            throw;
+        }
+        return;
+    }
+    // The new surface and renderers beside the open ones: a failure leaves those untouched.
+    Parts parts = make(o, steps);
+    close();
+    options_ = o;
+    steps_ = &steps;
+    install(std::move(parts));
+    built_ = options_;
+    builtViews_ = requestedViews_;
+}
+
 void Playback::close() {
     // What a new playback would start with; options, views, timing and quality settings stay.
     methods_.clear();
@@ -60,8 +83,18 @@ void Playback::requireOpen(const char* call) const {
 
 // --- build and options -------------------------------------------------------------------
 
-std::vector<methods::Method> Playback::shownViews() const {
-    return requestedViews_.empty() ? std::vector<methods::Method>{options_.method} : requestedViews_;
+std::vector<methods::Method> Playback::shownViews(const RenderOptions& o) const {
+    return requestedViews_.empty() ? std::vector<methods::Method>{o.method} : requestedViews_;
+}
+
+Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps) const {
+    Parts parts;
+    parts.surface = std::make_unique<AnimatedSurface>(o, steps, group_);
+    const methods::MethodParams params = parts.surface->paramsFor(o.params);
+    parts.views = shownViews(o);
+    for (methods::Method m : parts.views) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
+    for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
+    return parts;
 }
 
 void Playback::build() {
@@ -69,13 +102,16 @@ void Playback::build() {
     methods_.clear();
     surface_.reset();
     cameras_.reset();
+    install(make(options_, *steps_));
+}
+
+void Playback::install(Parts parts) {
+    cameras_.reset();
     dye_.dropBand();
     dye_.restart();
-    surface_ = std::make_unique<AnimatedSurface>(options_, *steps_, group_);
-    const methods::MethodParams params = surface_->paramsFor(options_.params);
-    views_ = shownViews();
-    for (methods::Method m : views_) methods_.push_back(methods::makeRenderer(m, params, options_.size));
-    for (auto& m : methods_) m->timer().setEnabled(stageTiming_);
+    surface_ = std::move(parts.surface);
+    views_ = std::move(parts.views);
+    methods_ = std::move(parts.methods);
     rebuildPending_ = camerasPending_ = false;
     clock_ = 0;
     warmedUp_ = 0;
@@ -130,7 +166,7 @@ OptionEffect Playback::setOptions(const RenderOptions& o) {
 
 void Playback::setViews(std::vector<methods::Method> views) {
     requestedViews_ = std::move(views);
-    if (shownViews() != views_) rebuildPending_ = true;
+    if (shownViews(options_) != views_) rebuildPending_ = true;
 }
 
 void Playback::setStageTiming(bool on) {

@@ -55,6 +55,13 @@ public:
     // Drops surface and renderers (with the GL context current) and forgets the steps.
     void close();
     bool isOpen() const { return steps_ != nullptr; }
+    // open(steps) with options `o` (the input's included) in one step, for a front end that
+    // reads its input again (the viewer's reload, File > Open): on success as open(); when
+    // the new steps fail (ConfigError, IoError, ... rethrown), the playback is left as it
+    // was: the steps it had open (which must still live), its options, views, surface,
+    // renderers, textures and clock. The new surface and renderers are made while the old
+    // ones live, so `steps` must be another provider than the open one.
+    void reopen(core::StepProvider& steps, const RenderOptions& o);
 
     // --- options -----------------------------------------------------------------------
     const RenderOptions& options() const { return options_; }
@@ -153,11 +160,19 @@ public:
     const DyeInjection& dyeInjection() const { return dye_; }
 
 private:
+    // What a build makes from the steps and options, before the playback takes it.
+    struct Parts {
+        std::unique_ptr<AnimatedSurface> surface;
+        std::vector<methods::Method> views;
+        std::vector<std::unique_ptr<methods::FlowMethod>> methods;
+    };
+    Parts make(const RenderOptions& o, core::StepProvider& steps) const;  // throws; changes nothing
+    void install(Parts parts);          // the parts, and the clock, dye and quality restart for them
     void build();                       // surface, renderers, cameras from options_
     void requireOpen(const char* call) const;  // ConfigError naming `call` while closed
     bool applyPending();                // a pending rebuild (true) or camera change, before a frame
     void restart();                     // the animation over, after a rebuild
-    std::vector<methods::Method> shownViews() const;
+    std::vector<methods::Method> shownViews(const RenderOptions& o) const;
     // Every method's stage list once at noise clock k.
     void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
     void animationFrame(int f, uint32_t k);

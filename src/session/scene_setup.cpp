@@ -19,13 +19,21 @@ ViewFrame viewFrame(int upAxis) {
     return f;
 }
 
-glm::vec3 viewDirection(const std::string& view, int upAxis) {
+glm::vec3 viewDirection(ViewPreset view, int upAxis) {
     const ViewFrame f = viewFrame(upAxis);
-    if (view.empty()) return glm::normalize(0.45f * f.right + 0.35f * f.up + f.front);
-    if (view == "iso") return glm::normalize(f.right + f.up + f.front);
-    glm::vec3 look(0.0f);  // the direction the camera looks along
-    look[view[1] - 'x'] = view[0] == '+' ? 1.0f : -1.0f;
-    return -look;
+    using enum ViewPreset;
+    switch (view) {
+    case Default: return glm::normalize(0.45f * f.right + 0.35f * f.up + f.front);
+    case Iso: return glm::normalize(f.right + f.up + f.front);
+    // From the target toward the eye: against the direction the camera looks along.
+    case PlusX: return {-1, 0, 0};
+    case MinusX: return {1, 0, 0};
+    case PlusY: return {0, -1, 0};
+    case MinusY: return {0, 1, 0};
+    case PlusZ: return {0, 0, -1};
+    case MinusZ: return {0, 0, 1};
+    }
+    return -f.front;  // not reached: every preset is listed
 }
 
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
@@ -35,7 +43,7 @@ core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
     glm::vec3 dir = viewDirection(o.view, o.upAxis);
     const glm::vec3 extent = bounds.hi - bounds.lo;
     const float largest = std::max({extent.x, extent.y, extent.z});
-    if (o.view.empty())
+    if (o.view == ViewPreset::Default)
         for (int a = 0; a < 3; ++a)
             if (extent[a] <= 0.02f * largest) {
                 dir = glm::vec3(0.0f);
@@ -43,7 +51,7 @@ core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds) {
             }
     if (o.eye) dir = *o.eye - (o.target ? *o.target : bounds.center());
     core::Camera cam = core::fitCamera(bounds, o.size, dir, o.fov);
-    if (!o.view.empty() || o.upAxis != 1) {
+    if (o.view != ViewPreset::Default || o.upAxis != 1) {
         // Up is the data's up axis; seen along it, the front of the data faces down.
         const ViewFrame f = viewFrame(o.upAxis);
         const float along = glm::dot(glm::normalize(dir), f.up);

@@ -23,8 +23,8 @@ struct ViewFrame {
     glm::vec3 up, right, front;
 };
 ViewFrame viewFrame(int upAxis);
-// From the target toward the eye for a --view preset ("" = the default view).
-glm::vec3 viewDirection(const std::string& view, int upAxis);
+// From the target toward the eye for a --view preset.
+glm::vec3 viewDirection(ViewPreset view, int upAxis);
 
 core::Camera makeCamera(const RenderOptions& o, const core::Bounds& bounds);
 

@@ -78,3 +78,38 @@ TEST(PlaybackOptions, ReopenedPlaybackRendersAsANewOne) {
     p.still(4);
     EXPECT_EQ(image(p), expected);
 }
+
+// The viewer's reload: new steps and options in one step; when the new data fails, the
+// playback goes on with the data, options, textures and clock it had.
+TEST(PlaybackOptions, ReopenKeepsWhatItHadWhenTheNewDataFails) {
+    core::DatasetSteps sphere(core::makeBuiltin("builtin:sphere:2000"));
+    core::DatasetSteps plane(core::makeBuiltin("builtin:uniform-plane"));
+    session::Playback p(smallOptions());
+    p.open(sphere);
+    p.start(false);
+    for (int f = 0; f < 3; ++f) p.advance();
+    const std::vector<uint8_t> before = image(p);
+
+    session::RenderOptions bad = smallOptions();
+    bad.input = "builtin:uniform-plane";
+    bad.field = "no-such-field";
+    EXPECT_THROW(p.reopen(plane, bad), Error);
+    EXPECT_TRUE(p.isOpen());
+    EXPECT_EQ(p.options().input, "builtin:sphere:2000");
+    EXPECT_EQ(p.options().field, "");
+    EXPECT_EQ(p.frame(), 3);
+    EXPECT_EQ(p.clock(), 3u);
+    EXPECT_EQ(image(p), before);
+    EXPECT_NO_THROW(p.advance());  // and renders on
+
+    session::RenderOptions good = smallOptions();
+    good.input = "builtin:uniform-plane";
+    p.reopen(plane, good);
+    EXPECT_EQ(p.options().input, "builtin:uniform-plane");
+    EXPECT_EQ(p.frame(), 0);
+    EXPECT_EQ(p.clock(), 0u);
+    p.still(2);
+    session::Playback fresh(good, plane);
+    fresh.still(2);
+    EXPECT_EQ(image(p), image(fresh));
+}

@@ -104,6 +104,43 @@ TEST(CliOptions, SizeAndColourSyntaxes) {
         EXPECT_NE(std::string(e.what()).find("--dye: 'purplish' is not a colour"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("cyan"), std::string::npos) << e.what();
     }
+    // --time takes two numbers: a third is refused as not START:END (Python's time=(a, b, c)).
+    RenderOptions o;
+    setOption(o, "time", "0.5:2");
+    EXPECT_EQ(o.timeRange, std::make_pair(0.5, 2.0));
+    try {
+        setOption(o, "time", "0:1:2");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--time: '0:1:2' is not START:END"), std::string::npos) << e.what();
+    }
+}
+
+// What a method list (--methods, the viewer's compare) and a view preset read as.
+TEST(CliOptions, MethodListsAndViewPresetsParseOnce) {
+    EXPECT_EQ(parseMethodList("isa,,hybrid", "--methods"),
+              (std::vector<methods::Method>{methods::Method::Isa, methods::Method::Hybrid}));
+    EXPECT_TRUE(parseMethodList("", "--methods").empty());
+    try {
+        parseMethodList("isa,lic", "--methods");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--methods: 'lic' is not one of isa, ibfvs, hybrid"), std::string::npos)
+            << e.what();
+    }
+    RenderOptions o;
+    setOption(o, "view", "-z");
+    EXPECT_EQ(o.view, ViewPreset::MinusZ);
+    EXPECT_EQ(findOption("view")->get(o), "-z");
+    setOption(o, "view", "");
+    EXPECT_EQ(o.view, ViewPreset::Default);
+    try {
+        setOption(o, "view", "top");
+        ADD_FAILURE() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("--view: 'top' is not one of +x, -x, +y, -y, +z, -z, iso"),
+                  std::string::npos) << e.what();
+    }
 }
 
 // Every option of the table: its default text reads back to the default, and the
@@ -155,6 +192,20 @@ TEST(CliOptions, ConfigFileRoundTrip) {
         }
     EXPECT_EQ(*b.eye, *a.eye);
     EXPECT_EQ(b.params.common.background, a.params.common.background);
+    std::remove(path.c_str());
+}
+
+// A JSON array is the option's numbers joined by its row's separator: [64, 48] is 64x48,
+// [0.5, 2] as time and [0, 2.5] as a colour range are START:END and MIN:MAX.
+TEST(CliOptions, ConfigArraysAreJoinedAsTheRowSays) {
+    const std::string path = ::testing::TempDir() + "flowsurf_config_arrays.json";
+    io::writeTextFile(path, "{\"size\": [64, 48], \"time\": [0.5, 2], \"color-range\": [0, 2.5], \"eye\": [0, 0, 5]}");
+    RenderOptions o;
+    applyConfigFile(path, o);
+    EXPECT_EQ(findOption("size")->get(o), "64x48");
+    EXPECT_EQ(findOption("time")->get(o), "0.5:2");
+    EXPECT_EQ(findOption("color-range")->get(o), "0:2.5");
+    EXPECT_EQ(findOption("eye")->get(o), "0,0,5");
     std::remove(path.c_str());
 }
 

@@ -200,19 +200,19 @@ TEST(ViewPresets, ExpectedAxisFacesTheCamera) {
                                                        {"-y", {0, 1, 0}},  {"+z", {0, 0, -1}}, {"-z", {0, 0, 1}}};
     for (int up = 0; up < 3; ++up)
         for (const auto& [view, toward] : cases) {
-            o.view = view;
+            session::setOption(o, "view", view);
             o.upAxis = up;
             const core::Camera c = session::makeCamera(o, b);
             EXPECT_GT(glm::dot(glm::normalize(c.eye - c.target), toward), 0.999f) << view << " up " << up;
             EXPECT_LT(std::abs(glm::dot(glm::normalize(c.up), glm::normalize(c.eye - c.target))), 1e-3f);
         }
-    o.view = "iso";
+    session::setOption(o, "view", "iso");
     o.upAxis = 2;
     const core::Camera iso = session::makeCamera(o, b);
     EXPECT_GT(glm::dot(iso.up, glm::vec3(0, 0, 1)), 0.99f);
     EXPECT_GT((iso.eye - iso.target).z, 0.0f);
     // z-up default view: from the front (-y), a little above (+z).
-    o.view = "";
+    session::setOption(o, "view", "");
     const core::Camera def = session::makeCamera(o, b);
     EXPECT_LT((def.eye - def.target).y, 0.0f);
     EXPECT_GT((def.eye - def.target).z, 0.0f);

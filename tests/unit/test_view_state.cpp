@@ -109,28 +109,28 @@ TEST(ViewEvents, BadLinesNameFileAndLine) {
 // d * kDegPerPixel degrees, keeping its distance; a vertical drag changes the elevation.
 TEST(ViewState, TurntableDragTurnsByStatedDegreesPerPixel) {
     ViewerState s = loaded();
-    const glm::vec3 eye0 = *s.options.eye, target = *s.options.target;
+    const glm::vec3 eye0 = *s.options().eye, target = *s.options().target;
     drag(s, "left", {200, 150}, {320, 150});
-    const glm::vec3 eye1 = *s.options.eye;
+    const glm::vec3 eye1 = *s.options().eye;
     float turned = azimuthDeg(eye0 - target) - azimuthDeg(eye1 - target);
     EXPECT_NEAR(turned, 120.0f * kDegPerPixel, 0.01f);
     EXPECT_NEAR(glm::length(eye1 - target), glm::length(eye0 - target), 1e-4f);
     EXPECT_NEAR(eye1.y, eye0.y, 1e-4f);  // same elevation
     // Dragging down raises the camera; the elevation stops short of the pole.
     drag(s, "left", {200, 150}, {200, 2000});
-    const glm::vec3 up = glm::normalize(*s.options.eye - target);
+    const glm::vec3 up = glm::normalize(*s.options().eye - target);
     EXPECT_GT(up.y, std::cos(glm::radians(1.5f)));
     EXPECT_LT(up.y, 1.0f);
 }
 
 TEST(ViewState, PanZoomAndViewKeys) {
     ViewerState s = loaded();
-    const glm::vec3 eye0 = *s.options.eye, t0 = *s.options.target;
+    const glm::vec3 eye0 = *s.options().eye, t0 = *s.options().target;
     drag(s, "left", {200, 150}, {240, 150}, /*shift=*/true);  // pan
-    EXPECT_NEAR(glm::length(*s.options.eye - *s.options.target), glm::length(eye0 - t0), 1e-4f);
-    EXPECT_GT(glm::length(*s.options.target - t0), 0.01f);
+    EXPECT_NEAR(glm::length(*s.options().eye - *s.options().target), glm::length(eye0 - t0), 1e-4f);
+    EXPECT_GT(glm::length(*s.options().target - t0), 0.01f);
     s.handle({0, EventType::Key, "r"});
-    EXPECT_NEAR(glm::length(*s.options.target - t0), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(*s.options().target - t0), 0.0f, 1e-5f);
     // Zoom at the centre of the view: towards the target by the stated factor per step.
     Event at{0, EventType::MouseMove};
     at.x = 199.5f, at.y = 149.5f;
@@ -138,43 +138,46 @@ TEST(ViewState, PanZoomAndViewKeys) {
     Event wheel{0, EventType::Scroll};
     wheel.x = 2;
     s.handle(wheel);
-    EXPECT_NEAR(glm::length(*s.options.eye - *s.options.target), glm::length(eye0 - t0) * kZoomPerStep * kZoomPerStep,
+    EXPECT_NEAR(glm::length(*s.options().eye - *s.options().target), glm::length(eye0 - t0) * kZoomPerStep * kZoomPerStep,
                 1e-3f);
     s.handle({0, EventType::Key, "x"});  // view direction +x: the eye on the -x side
-    glm::vec3 dir = glm::normalize(*s.options.target - *s.options.eye);
+    glm::vec3 dir = glm::normalize(*s.options().target - *s.options().eye);
     EXPECT_NEAR(dir.x, 1.0f, 1e-5f);
     s.handle({0, EventType::Key, "Y"});  // along -y: up must not be parallel
-    dir = glm::normalize(*s.options.target - *s.options.eye);
+    dir = glm::normalize(*s.options().target - *s.options().eye);
     EXPECT_NEAR(dir.y, -1.0f, 1e-5f);
-    EXPECT_LT(std::abs(glm::dot(*s.options.up, dir)), 0.01f);
+    EXPECT_LT(std::abs(glm::dot(*s.options().up, dir)), 0.01f);
 }
 
 TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     ViewerState s = loaded();
     s.handle({0, EventType::Key, "m"});
-    EXPECT_EQ(s.options.method, methods::Method::Ibfvs);
+    EXPECT_EQ(s.options().method, methods::Method::Ibfvs);
     EXPECT_TRUE(s.takeRequests().rebuild);
     s.handle({0, EventType::Set, "alpha", "0.2"});
-    EXPECT_FLOAT_EQ(s.options.params.common.alpha, 0.2f);
+    EXPECT_FLOAT_EQ(s.options().params.common.alpha, 0.2f);
     EXPECT_TRUE(s.takeRequests().rebuild);
     s.handle({0, EventType::Set, "field", "wallShearStress"});
     Requests r = s.takeRequests();
-    EXPECT_TRUE(r.reload);
+    // The input's options wait in the request until the data is read with them.
+    ASSERT_EQ(r.reload.size(), 1u);
+    EXPECT_EQ(r.reload[0], std::make_pair(std::string("field"), std::string("wallShearStress")));
+    EXPECT_EQ(s.options().field, "");
     // OpenFOAM's patches and case kind are read with the input: set after the first load
     // they read it again (they were once silently ignored).
     s.handle({0, EventType::Set, "patches", "wall.*"});
-    EXPECT_TRUE(s.takeRequests().reload);
+    EXPECT_FALSE(s.takeRequests().reload.empty());
     s.handle({0, EventType::Set, "foam-case", "decomposed"});
-    EXPECT_TRUE(s.takeRequests().reload);
+    EXPECT_FALSE(s.takeRequests().reload.empty());
     s.handle({0, EventType::Set, "fov", "45"});
     r = s.takeRequests();
-    EXPECT_FALSE(r.rebuild || r.reload);  // a camera change needs no new renderers
+    EXPECT_FALSE(r.rebuild || !r.reload.empty());  // a camera change needs no new renderers
     s.handle({0, EventType::Set, "fps", "60"});
     r = s.takeRequests();
-    EXPECT_FALSE(r.rebuild || r.reload);  // an output setting needs nothing
+    EXPECT_FALSE(r.rebuild || !r.reload.empty());  // an output setting needs nothing
     s.handle({0, EventType::Set, "alpha", "7"});
     EXPECT_NE(s.error.find("--alpha"), std::string::npos) << s.error;
-    EXPECT_FLOAT_EQ(s.options.params.common.alpha, 0.2f);  // unchanged
+    EXPECT_FLOAT_EQ(s.options().params.common.alpha, 0.2f);  // unchanged
     s.handle({0, EventType::Key, "j"});
     EXPECT_NE(s.error.find("unknown key 'j'"), std::string::npos);
     s.handle({0, EventType::Set, "compare", "isa,hybrid"});
@@ -188,6 +191,22 @@ TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     s.frameDone();
     EXPECT_FALSE(s.advancing());
     EXPECT_EQ(s.clock(), 1u);
+}
+
+// The state's options are its playback's (the one copy the GL side renders with): panel
+// and log edits, live ones (dye) included, and the quality setting land there.
+TEST(ViewState, OptionsAndQualityLiveInThePlayback) {
+    ViewerState s = loaded();
+    EXPECT_EQ(&s.options(), &s.playback().options());
+    s.handle({0, EventType::Set, "alpha", "0.3"});
+    EXPECT_FLOAT_EQ(s.playback().options().params.common.alpha, 0.3f);
+    s.handle({0, EventType::Set, "dye", "0,0,1:0.1:red"});
+    EXPECT_EQ(s.playback().options().dye.size(), 1u);
+    s.handle({0, EventType::Set, "quality", "5"});
+    EXPECT_EQ(s.playback().qualityEvery(), 5);
+    s.handle({0, EventType::Set, "quality", "off"});
+    EXPECT_EQ(s.qualityEvery(), 0);
+    EXPECT_TRUE(s.error.empty()) << s.error;
 }
 
 // Time playback: data time per frame, held at the end (or looped), and the saved batch

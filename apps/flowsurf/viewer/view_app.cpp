@@ -35,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 
 class Session {
 public:
-    Session(const RenderOptions& o, const ViewOptions& v) : view_(v), state_(o) {
+    Session(const RenderOptions& o, const ViewOptions& v) : view_(v), state_(o), pipeline_(state_.playback()) {
         if (!v.compare.empty()) {
             state_.set("compare", v.compare);  // throws ConfigError naming a method it does not know
             state_.takeRequests();             // the first build comes with the data
@@ -60,7 +60,7 @@ public:
         }
         // The initial data: headless, an error ends the run; in a window it is shown.
         try {
-            loadData(state_.options);
+            loadData(state_.options());
         } catch (const std::exception& e) {
             if (v.headless) throw;
             report(e.what());
@@ -87,8 +87,6 @@ public:
             Requests req = state_.takeRequests();
             applyRequests(req);
             // (3) render
-            if (pipeline_.ready() && pipeline_.playback().qualityEvery() != state_.qualityEvery)
-                pipeline_.playback().setQuality(state_.qualityEvery);
             const bool rendered = renderIfNeeded();
             lastRendered_ = rendered;
             if (recorder_ && rendered) recordFrame();
@@ -135,13 +133,12 @@ private:
         lastError_ = message;
     }
 
-    // Reads `o`'s input; the state takes it only on success.
+    // Reads `o`'s input; the playback takes `o` only on success (a newly opened file comes
+    // with its own camera and time).
     void loadData(const RenderOptions& o) {
         RenderOptions sized = o;
         sized.size = state_.viewSize();
         pipeline_.load(sized, state_.shownMethods());
-        loaded_ = o;
-        state_.options = o;  // a newly opened file comes with its own camera and time
         state_.dataLoaded(pipeline_.bounds(), pipeline_.times(), pipeline_.mapping());
         seenTimes_ = pipeline_.times();
         seenMapping_ = pipeline_.mapping();
@@ -149,11 +146,9 @@ private:
         if (window_) window_->setTitle("flowsurf view — " + o.input);
     }
 
-    // New renderers for the state's options, methods and view size.
+    // New renderers for the options, the state's methods and view size.
     void build() {
-        RenderOptions o = state_.options;
-        o.size = state_.viewSize();
-        pipeline_.build(o, state_.shownMethods());
+        pipeline_.build(state_.viewSize(), state_.shownMethods());
         // Time options (--time, --time-per-frame, --time-step) change the time range.
         const core::TimeMapping& m = pipeline_.mapping();
         if (pipeline_.times() != seenTimes_ || m.start != seenMapping_.start || m.end != seenMapping_.end ||
@@ -188,22 +183,20 @@ private:
                 state_.setWindowSize(w, h);
         }
         try {
-            if (req.open) {
-                RenderOptions o = state_.options;
-                o.input = *req.open;
-                o.field.clear();  // a new file has its own arrays
-                o.eye.reset(), o.target.reset();
-                o.timeRange.reset(), o.timeStepGiven = false;
+            if (req.open || !req.reload.empty()) {
+                RenderOptions o = state_.options();
+                for (const auto& [name, value] : req.reload) setOption(o, name, value);
+                if (req.open) {
+                    o.input = *req.open;
+                    o.field.clear();  // a new file has its own arrays
+                    o.eye.reset(), o.target.reset();
+                    o.timeRange.reset(), o.timeStepGiven = false;
+                }
                 loadData(o);
-                state_.status = "opened " + o.input;
-            } else if (req.reload) {
-                loadData(state_.options);
+                if (req.open) state_.status = "opened " + o.input;
             }
         } catch (const std::exception& e) {
-            // Keep the data that was loaded: restore the options it was read with.
-            for (const OptionSpec& spec : renderOptionTable())
-                if (spec.role.effect == OptionEffect::Reload) spec.set(state_.options, spec.get(loaded_));
-            report(e.what());
+            report(e.what());  // the playback kept the data it had, and the options it was read with
         }
         const bool sizeChanged = pipeline_.ready() && (pipeline_.viewSize().width != state_.viewSize().width ||
                                                        pipeline_.viewSize().height != state_.viewSize().height ||
@@ -222,7 +215,7 @@ private:
                 const core::Viewport v = pipeline_.viewSize();
                 recorder_ = std::make_unique<io::VideoWriter>(
                     *req.recordStart, v.width * int(pipeline_.viewCount()), v.height,
-                    io::VideoOptions{state_.options.fps, state_.options.crf});
+                    io::VideoOptions{state_.options().fps, state_.options().crf});
                 recordPath_ = *req.recordStart;
                 state_.recording = true;
                 state_.status = "recording " + recordPath_;
@@ -239,16 +232,12 @@ private:
             camera = state_.camera();
         } catch (const std::exception& e) {
             report(e.what());
-            state_.options.cameraPath.clear();
+            state_.dropCameraPath();
             return false;
         }
         const bool changed = mustRender_ || !core::sameCamera(camera, lastCamera_) || state_.time != lastTime_;
         if (!state_.advancing() && !changed) return false;
         try {
-            // Options that apply live (effect None: the dye sources) go to the playback as they are.
-            for (const OptionSpec& spec : renderOptionTable())
-                if (spec.role.effect == OptionEffect::None && spec.get(state_.options) != spec.get(pipeline_.playback().options()))
-                    pipeline_.playback().set(spec.name, spec.get(state_.options));
             pipeline_.render({camera, state_.time, state_.timePerFrame}, state_.advancing());
         } catch (const std::exception& e) {
             report(e.what());
@@ -316,7 +305,7 @@ private:
             default: return;
             }
             state_.status = "wrote " + e.value;
-            if (!state_.options.quiet) std::fprintf(stderr, "flowsurf view: wrote %s\n", e.value.c_str());
+            if (!state_.options().quiet) std::fprintf(stderr, "flowsurf view: wrote %s\n", e.value.c_str());
         } catch (const std::exception& ex) {
             report(ex.what());
         }
@@ -330,15 +319,15 @@ private:
             io::writeTextFile(view_.recordEvents, formatEventLog(log));
         }
         if (!view_.stats.empty())
-            io::writeTextFile(view_.stats, statsJson(pipeline_, frameMs_, renderer_, state_.qualityEvery > 0));
+            io::writeTextFile(view_.stats, statsJson(pipeline_, frameMs_, renderer_, state_.qualityEvery() > 0));
     }
 
+    // In this order: the playback (in state_) goes while the GL context lives.
     ViewOptions view_;
-    ViewerState state_;
     std::unique_ptr<gl::HeadlessContext> context_;
     std::unique_ptr<Window> window_;
+    ViewerState state_;
     ViewPipeline pipeline_;
-    RenderOptions loaded_;
     std::vector<Event> replay_, recorded_;
     size_t next_ = 0;
     std::string renderer_, lastError_, recordPath_;

@@ -25,7 +25,7 @@ std::string upper(std::string s) {
 }  // namespace
 
 void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool visibleRange) {
-    const std::string current = spec.get(state.options);
+    const std::string current = spec.get(state.options());
     const char* label = spec.name.c_str();
     switch (spec.kind) {
     case OptionKind::Flag: {
@@ -105,7 +105,7 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool
 
 void Window::dyePanel(const ViewerState& state) {
     ImGui::TextWrapped("ctrl + click on the surface releases dye there");
-    std::vector<methods::DyeSource> sources = state.options.dye;
+    std::vector<methods::DyeSource> sources = state.options().dye;
     int removed = -1;
     bool moved = false;
     for (size_t i = 0; i < sources.size(); ++i) {
@@ -191,7 +191,7 @@ void Window::methodSection(const ViewerState& state, const ViewPipeline& pipelin
     for (const auto& [m, name] : methods::kMethodNames) {
         if (!all.empty()) ImGui::SameLine();
         all += (all.empty() ? "" : ",") + std::string(name);
-        if (ImGui::RadioButton(upper(std::string(name)).c_str(), state.compare.empty() && state.options.method == m))
+        if (ImGui::RadioButton(upper(std::string(name)).c_str(), state.compare.empty() && state.options().method == m))
             emitSet("method", std::string(name)), emitSet("compare", "off");
     }
     bool side = !state.compare.empty();
@@ -300,12 +300,12 @@ void Window::keysSection() {
 // costs a surface pass, a read-back and CPU work); on, every N-th frame is measured. The
 // widgets emit `set quality N|off`, recorded like every edit.
 void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
-    bool on = state.qualityEvery > 0;
+    bool on = state.qualityEvery() > 0;
     if (on) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // turned on by an event or a replay
     if (!ImGui::CollapsingHeader("Quality")) return;
     if (ImGui::Checkbox("measure", &on)) emitSet("quality", on ? "10" : "off");
     if (on) {
-        int every = state.qualityEvery;
+        int every = state.qualityEvery();
         ImGui::SameLine();
         ImGui::SetNextItemWidth(100);
         if (ImGui::SliderInt("every N frames", &every, 2, 60)) emitSet("quality", std::to_string(every));

@@ -48,12 +48,10 @@ void ViewPipeline::load(const RenderOptions& o, const std::vector<methods::Metho
     std::vector<std::string> fields;
     for (const auto& f : first.fields) fields.push_back(f.name);
     // The playback checks the field and loads the first step: errors surface here, and
-    // the old data and its playback stay.
-    auto playback = std::make_unique<session::Playback>(o, *steps, views);
-    playback->setStageTiming(true);
-    playback_ = std::move(playback);
+    // the old data and its renderers stay.
+    playback_.setViews(views);
+    playback_.reopen(*steps, o);
     steps_ = std::move(steps);
-    lastViews_ = views;
     bounds_ = bounds;
     fields_ = std::move(fields);
     input_ = o.input;
@@ -61,42 +59,42 @@ void ViewPipeline::load(const RenderOptions& o, const std::vector<methods::Metho
     framebuffers();
 }
 
-void ViewPipeline::build(const RenderOptions& o, const std::vector<methods::Method>& views) {
-    if (!playback_) throw ConfigError("no data loaded");
-    playback_->setViews(views);
+void ViewPipeline::build(core::Viewport viewSize, const std::vector<methods::Method>& views) {
+    if (!ready()) throw ConfigError("no data loaded");
+    RenderOptions o = playback_.options();
+    o.size = viewSize;
+    playback_.setOptions(o);
+    playback_.setViews(views);
     try {
-        playback_->setOptions(o);
-        playback_->rebuild();
+        playback_.rebuild();  // on failure: the options and views of the last build that worked
     } catch (...) {
-        playback_->setViews(lastViews_);
         framebuffers();
         throw;
     }
-    lastViews_ = views;
     framebuffers();
 }
 
 void ViewPipeline::framebuffers() {
     readFbos_.clear();
-    for (size_t i = 0; playback_ && i < playback_->viewCount(); ++i) {
+    for (size_t i = 0; i < playback_.viewCount(); ++i) {
         readFbos_.push_back(gl::Framebuffer::create());
-        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, playback_->view(i).composite());
+        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, playback_.view(i).composite());
         glNamedFramebufferReadBuffer(readFbos_.back().id(), GL_COLOR_ATTACHMENT0);
     }
 }
 
 std::string ViewPipeline::methodName(size_t i) const {
-    return std::string(methods::nameOf(methods::kMethodNames, playback_->viewMethod(i)));
+    return std::string(methods::nameOf(methods::kMethodNames, playback_.viewMethod(i)));
 }
 
 void ViewPipeline::render(const session::Playback::LiveFrame& f, bool advance) {
-    if (!playback_) return;
-    playback_->render(f, advance);
-    triangles_ = playback_->surface().atTime(f.time).triangleCount();
+    if (!ready()) return;
+    playback_.render(f, advance);
+    triangles_ = playback_.surface().atTime(f.time).triangleCount();
 }
 
 std::optional<glm::vec2> ViewPipeline::visibleColorRange(double time) {
-    if (!playback_ || viewCount() == 0) return std::nullopt;
+    if (!ready() || viewCount() == 0) return std::nullopt;
     const methods::FlowMethod& m = method(0);
     const std::vector<float> value = gl::readChannel(m.surfaceShade(), 3), depth = gl::readDepth(m.surfaceDepth());
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
@@ -104,8 +102,8 @@ std::optional<glm::vec2> ViewPipeline::visibleColorRange(double time) {
         if (depth[i] < 1.0f && std::isfinite(value[i])) lo = std::min(lo, value[i]), hi = std::max(hi, value[i]);
     if (!(lo < hi)) return std::nullopt;
     // Back through the range and scale the shade's value 0..1 was made with (SurfaceGpu).
-    const glm::vec2 r = playback_->surface().atTime(time).colorRange();
-    const bool log = playback_->options().params.common.colorScale == methods::ColorScale::Log && r.x > 0.0f;
+    const glm::vec2 r = playback_.surface().atTime(time).colorRange();
+    const bool log = playback_.options().params.common.colorScale == methods::ColorScale::Log && r.x > 0.0f;
     auto value01 = [&](float t) {
         if (!log) return r.x + t * (r.y - r.x);
         const double a = std::log10(double(r.x)), b = std::log10(double(r.y));

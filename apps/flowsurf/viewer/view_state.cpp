@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cmath>
-#include <sstream>
 
 namespace flowsurf::app::view {
 
@@ -46,8 +45,10 @@ bool parseBool(const std::string& name, const std::string& v) {
 
 }  // namespace
 
-ViewerState::ViewerState(RenderOptions o) : options(std::move(o)), window_(options.size) {
-    if (options.up) turntableUp_ = glm::normalize(*options.up);
+ViewerState::ViewerState(const RenderOptions& o)
+    : playback_(std::make_unique<session::Playback>(o)), window_(o.size) {
+    if (o.up) turntableUp_ = glm::normalize(*o.up);
+    playback_->setStageTiming(true);  // the panel shows each stage's time
 }
 
 void ViewerState::setWindowSize(int width, int height) {
@@ -59,7 +60,7 @@ void ViewerState::setWindowSize(int width, int height) {
 }
 
 void ViewerState::fit() {
-    RenderOptions o = options;
+    RenderOptions o = options();
     o.eye.reset();
     o.target.reset();
     o.up = turntableUp_;
@@ -69,7 +70,7 @@ void ViewerState::fit() {
 }
 
 std::vector<methods::Method> ViewerState::shownMethods() const {
-    return compare.empty() ? std::vector<methods::Method>{options.method} : compare;
+    return compare.empty() ? std::vector<methods::Method>{options().method} : compare;
 }
 
 core::Viewport ViewerState::viewSize() const {
@@ -82,10 +83,10 @@ void ViewerState::dataLoaded(const core::Bounds& bounds, const std::vector<doubl
     bounds_ = bounds;
     haveData_ = true;
     // Fitted: no camera given (a reload keeps the fitted camera's eye, and its fit).
-    const bool fitted = fitted_ || (!options.eye && !options.target);
+    const bool fitted = fitted_ || (!options().eye && !options().target);
     fitted_ = false;
-    if (options.orbit == 0.0f && options.cameraPath.empty()) {
-        RenderOptions fit = options;
+    if (options().orbit == 0.0f && options().cameraPath.empty()) {
+        RenderOptions fit = options();
         fit.size = viewSize();
         setCamera(makeCamera(fit, bounds_));
         fitted_ = fitted;
@@ -104,7 +105,7 @@ void ViewerState::setTimes(const std::vector<double>& times, const core::TimeMap
 }
 
 core::Camera ViewerState::camera() const {
-    RenderOptions o = options;
+    RenderOptions o = options();
     o.size = viewSize();
     if (!haveData_) return core::Camera{};
     if (o.orbit != 0.0f || !o.cameraPath.empty()) return FrameCameras(o, bounds_).at(int(clock_));
@@ -112,22 +113,30 @@ core::Camera ViewerState::camera() const {
 }
 
 void ViewerState::setCamera(const core::Camera& c) {
-    options.eye = c.eye;
-    options.target = c.target;
-    options.up = glm::normalize(c.up);
-    options.fov = c.fovDeg;
-    options.ortho = c.orthoHeight;
+    edit([&](RenderOptions& o) {
+        o.eye = c.eye;
+        o.target = c.target;
+        o.up = glm::normalize(c.up);
+        o.fov = c.fovDeg;
+        o.ortho = c.orthoHeight;
+    });
 }
 
 void ViewerState::takeOverCamera() {
     fitted_ = false;  // the user's camera from now on
     if (!haveData_) return;
-    if (options.orbit != 0.0f || !options.cameraPath.empty()) {
-        core::Camera c = camera();
-        options.orbit = 0.0f;
-        options.cameraPath.clear();
+    if (options().orbit != 0.0f || !options().cameraPath.empty()) {
+        const core::Camera c = camera();
+        edit([](RenderOptions& o) {
+            o.orbit = 0.0f;
+            o.cameraPath.clear();
+        });
         setCamera(c);
     }
+}
+
+void ViewerState::dropCameraPath() {
+    edit([](RenderOptions& o) { o.cameraPath.clear(); });
 }
 
 void ViewerState::frameDone() {
@@ -150,11 +159,11 @@ void ViewerState::resetView() {
 void ViewerState::viewAlong(const glm::vec3& dir) {
     if (!haveData_) return;
     takeOverCamera();
-    core::Camera c = core::fitCamera(bounds_, viewSize(), -dir, options.fov);
+    core::Camera c = core::fitCamera(bounds_, viewSize(), -dir, options().fov);
     glm::vec3 up = turntableUp_;
     if (std::abs(glm::dot(up, dir)) > 0.99f) up = std::abs(dir.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
     c.up = up;
-    c.orthoHeight = options.ortho;
+    c.orthoHeight = options().ortho;
     if (c.orthographic()) c.eye = c.target - dir * bounds_.radius() * 3.0f;
     setCamera(c);
 }
@@ -179,8 +188,9 @@ void ViewerState::key(const std::string& k) {
     else if (k == "n") { paused = true; stepOnce = true; }
     else if (k == "m") {
         const auto& names = methods::kMethodNames;
-        auto it = std::find_if(names.begin(), names.end(), [this](const auto& n) { return n.first == options.method; });
-        options.method = it == names.end() || it + 1 == names.end() ? names.front().first : (it + 1)->first;
+        auto it = std::find_if(names.begin(), names.end(), [this](const auto& n) { return n.first == options().method; });
+        const methods::Method next = it == names.end() || it + 1 == names.end() ? names.front().first : (it + 1)->first;
+        edit([next](RenderOptions& o) { o.method = next; });
         compare.clear();
         requests_.rebuild = true;
     } else if (k == "c") {
@@ -197,12 +207,13 @@ void ViewerState::key(const std::string& k) {
         static int shot = 0;
         char name[64];
         std::snprintf(name, sizeof name, "flowsurf_screenshot_%03d.png", ++shot);
-        const bool own = options.output != "flowsurf.png" && outputKind(options.output) == OutputKind::Png;
-        requests_.outputs.push_back({0, EventType::Screenshot, "", own ? options.output : name});
+        const std::string& output = options().output;
+        const bool own = output != "flowsurf.png" && outputKind(output) == OutputKind::Png;
+        requests_.outputs.push_back({0, EventType::Screenshot, "", own ? output : name});
     } else if (k == "v") {
         if (recording) requests_.recordStop = true;
-        else requests_.recordStart = outputKind(options.output) == OutputKind::Mp4 ? options.output
-                                                                                    : "flowsurf_recording.mp4";
+        else requests_.recordStart = outputKind(options().output) == OutputKind::Mp4 ? options().output
+                                                                                      : "flowsurf_recording.mp4";
     } else if (k == "s") requests_.outputs.push_back({0, EventType::SaveConfig, "", "flowsurf_view.json"});
     else if (k == "k") requests_.outputs.push_back({0, EventType::SaveKeyframe, "", "flowsurf_camera_path.json"});
     else if (k == "q" || k == "escape") requests_.quit = true;
@@ -212,17 +223,7 @@ void ViewerState::key(const std::string& k) {
 void ViewerState::set(const std::string& name, const std::string& value) {
     // Settings only a viewer has.
     if (name == "compare") {
-        compare.clear();
-        if (value != "off" && value != "none" && !value.empty()) {
-            std::stringstream ss(value);
-            for (std::string m; std::getline(ss, m, ',');) {
-                compare.emplace_back();
-                if (!methods::valueOf(methods::kMethodNames, m, &compare.back())) {
-                    compare.pop_back();
-                    throw ConfigError("compare: '" + m + "' is not one of " + methods::nameList(methods::kMethodNames));
-                }
-            }
-        }
+        compare = value == "off" || value == "none" ? std::vector<methods::Method>{} : parseMethodList(value, "compare");
         requests_.rebuild = true;
         return;
     }
@@ -242,7 +243,7 @@ void ViewerState::set(const std::string& name, const std::string& value) {
         const long n = value == "off" ? 0 : std::strtol(value.c_str(), &end, 10);
         if (value != "off" && (value.empty() || *end != '\0' || n < 1 || n > 100000))
             throw ConfigError("quality: '" + value + "' is not a frame count 1..100000 or off");
-        qualityEvery = int(n);
+        if (int(n) != playback_->qualityEvery()) playback_->setQuality(int(n));  // a new setting starts a new log
         return;
     }
     if (name == "time-now") {
@@ -256,15 +257,18 @@ void ViewerState::set(const std::string& name, const std::string& value) {
     }
     const OptionEffect effect = effectOf(name);  // throws ConfigError for an unknown name
     if (effect == OptionEffect::Camera) takeOverCamera();
-    RenderOptions changed = options;
-    setOption(changed, name, value);  // throws ConfigError naming the option
-    if (name == "size") {
-        requests_.resize = glm::ivec2(changed.size.width * int(shownMethods().size()), changed.size.height);
+    if (name == "size" || effect == OptionEffect::Reload) {
+        RenderOptions checked = options();
+        setOption(checked, name, value);  // throws ConfigError naming the option
+        // The views' size is the window's (a resize asks for it); the input's options
+        // are taken when the data is read again.
+        if (name == "size")
+            requests_.resize = glm::ivec2(checked.size.width * int(shownMethods().size()), checked.size.height);
+        else requests_.reload.emplace_back(name, value);
         return;
     }
-    options = changed;
-    if (name == "up" && options.up) turntableUp_ = glm::normalize(*options.up);
-    if (effect == OptionEffect::Reload) requests_.reload = true;
+    playback_->set(name, value);  // throws ConfigError naming the option
+    if (name == "up" && options().up) turntableUp_ = glm::normalize(*options().up);
     if (effect == OptionEffect::Rebuild) requests_.rebuild = true;
 }
 
@@ -299,7 +303,7 @@ Requests ViewerState::takeRequests() {
 }
 
 RenderOptions ViewerState::batchOptions() const {
-    RenderOptions b = options;
+    RenderOptions b = options();
     b.size = viewSize();
     b.method = shownMethods().front();
     b.frames = int(clock_);

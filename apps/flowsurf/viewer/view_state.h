@@ -1,19 +1,23 @@
 // flowsurf view — the viewer's state and what input does to it, free of GL and of any
-// window so unit tests drive it directly. The state is a RenderOptions (the camera lives
-// in its eye/target/up/fov, so a saved config renders the same view offline) plus what
-// only a viewer has: the frame clock, pause, time playback, side-by-side methods, the
-// mouse. Input arrives as Events (view_events.h), from GLFW or a replayed log alike.
+// window so unit tests drive it directly. The state is a session::Playback, the one owner
+// of the options (the camera lives in their eye/target/up/fov, so a saved config renders
+// the same view offline; the GL side opens data in it, view_pipeline.h), plus what only a
+// viewer has: the frame clock, pause, time playback, side-by-side methods, the mouse.
+// Input arrives as Events (view_events.h), from GLFW or a replayed log alike.
 #pragma once
 
 #include "core/camera.h"
 #include "core/time_series.h"
 #include "cli_options.h"
+#include "session/playback.h"
 #include "view_events.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flowsurf::app::view {
@@ -34,7 +38,9 @@ enum class RotateMode { Turntable, Trackball };
 
 // What the GL side must do after events changed the state.
 struct Requests {
-    bool reload = false;    // input, field or time options changed: read the data again
+    // The input's options (input, field, patches...) changed, as `set` name and value in
+    // order: read the data again with them (the playback keeps its data when that fails).
+    std::vector<std::pair<std::string, std::string>> reload;
     bool rebuild = false;   // method or parameters changed: new renderers (clock restarts)
     bool quit = false;
     std::vector<Event> outputs;  // screenshot, flow-texture, save-config, ... after the frame
@@ -46,11 +52,15 @@ struct Requests {
 
 class ViewerState {
 public:
-    explicit ViewerState(RenderOptions options);
+    explicit ViewerState(const RenderOptions& options);
 
-    // The options as they stand: method, parameters, camera (explicit once data is loaded).
-    RenderOptions options;
-    std::vector<methods::Method> compare;  // methods side by side; empty: options.method alone
+    // The options as they stand: method, parameters, camera (explicit once data is loaded);
+    // the input's as last read (a change waits in Requests::reload until the data is read).
+    const RenderOptions& options() const { return playback_->options(); }
+    // Closed until the GL side opens data in it; destroy it with that GL context current.
+    session::Playback& playback() { return *playback_; }
+    const session::Playback& playback() const { return *playback_; }
+    std::vector<methods::Method> compare;  // methods side by side; empty: options().method alone
     RotateMode rotateMode = RotateMode::Turntable;
     bool paused = false;               // no advection frames (the view still follows the camera)
     bool stepOnce = false;             // advance one frame while paused
@@ -58,7 +68,6 @@ public:
     // The panel folded to its title bar (its arrow, or `set panel-collapsed`): the views take
     // the window's whole width. A window-only setting: a headless replay has no panel.
     bool panelCollapsed = false;
-    int qualityEvery = 0;              // measure the texture every N frames (0: off; doc/algorithms.md §9)
     bool recording = false;            // an MP4 is being written (set by the window side)
     // Time playback of a series (data time per frame: timePerFrame; held or looped at the end).
     bool timePlaying = true;
@@ -80,6 +89,8 @@ public:
     // One view's size and the methods shown, left to right.
     core::Viewport viewSize() const;
     std::vector<methods::Method> shownMethods() const;
+    // Measure the texture every N frames (0: off; doc/algorithms.md §9): the playback's setting.
+    int qualityEvery() const { return playback_->qualityEvery(); }
 
     // The camera for the current frame (orbit / camera path play until the user takes over).
     core::Camera camera() const;
@@ -99,6 +110,8 @@ public:
     // A render option by name, as from the panel or `set`: what must happen is the option
     // table's effect (reload, rebuild, a camera that the user takes over, or nothing).
     void set(const std::string& name, const std::string& value);
+    // The camera path could not be read: the camera stays where it is, the user's from now on.
+    void dropCameraPath();
 
     // The options that render this very view offline: `render --config` with --frames
     // = clock() gives the frame on screen (see README, Viewer).
@@ -109,6 +122,13 @@ public:
 
 private:
     void key(const std::string& name);
+    // Options the viewer changes as values, not text (camera, method): through the playback.
+    template <class Edit>
+    void edit(Edit change) {
+        RenderOptions o = options();
+        change(o);
+        playback_->setOptions(o);
+    }
     void mouseMove(float x, float y);
     void scroll(float steps);
     void takeOverCamera();
@@ -120,6 +140,7 @@ private:
     // Which view (side by side) the window pixel x falls into, and its NDC.
     glm::vec2 cursorNdc(float x, float y) const;
 
+    std::unique_ptr<session::Playback> playback_;
     core::Bounds bounds_;
     bool haveData_ = false;
     core::Viewport window_{800, 600};

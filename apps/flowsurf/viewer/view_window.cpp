@@ -191,7 +191,7 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
     const glm::vec4 ndc((x + 0.5f) / float(v.width) * 2.0f - 1.0f, (y + 0.5f) / float(v.height) * 2.0f - 1.0f,
                         depth * 2.0f - 1.0f, 1.0f);
     const glm::vec4 p = inv * ndc;
-    std::vector<methods::DyeSource> sources = state.options.dye;
+    std::vector<methods::DyeSource> sources = state.options().dye;
     sources.push_back(session::dyeSource(glm::vec3(p) / p.w, 0.0f, std::nullopt, sources.size(), "--dye"));
     emitSet("dye", session::dyeSourcesText(sources));
 }
@@ -204,7 +204,7 @@ void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fw, fh);
     glDisable(GL_SCISSOR_TEST);
-    const glm::vec3 bg = state.options.params.common.background;
+    const glm::vec3 bg = state.options().params.common.background;
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     if (pipeline.ready()) {

@@ -95,14 +95,7 @@ OptionSpec choice(std::string name, OptionRole role, std::string help, const met
             .help = std::move(help),
             .kind = OptionKind::Choice,
             .choices = std::move(choices),
-            .set = [n, &names, ref](RenderOptions& o, const std::string& t) {
-                for (const auto& [value, text] : names)
-                    if (t == text) {
-                        ref(o) = value;
-                        return;
-                    }
-                throw ConfigError(dashed(n) + ": '" + t + "' is not one of " + methods::nameList(names));
-            },
+            .set = [n, &names, ref](RenderOptions& o, const std::string& t) { ref(o) = parseName(names, t, dashed(n)); },
             .get = [&names, ref](const RenderOptions& o) {
                 for (const auto& [value, text] : names)
                     if (ref(const_cast<RenderOptions&>(o)) == value) return std::string(text);
@@ -231,6 +224,7 @@ OptionSpec rangeOption(std::string name, OptionRole role, std::string help, Rang
                 if (r.x <= r.y) return formatFloat(r.x) + ":" + formatFloat(r.y);
                 return std::string(mode(m) == methods::RangeMode::Data ? "data" : "robust");
             },
+            .arraySeparator = ":",  // [0, 1] in a config file, (0, 1) in Python: 0:1
             .rescale = rescale};
 }
 

@@ -7,15 +7,29 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/errors.h"
 #include "methods/common/dye_source.h"
 #include "methods/common/params.h"
 
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace flowsurf::session {
+
+// --view: ParaView's camera buttons (look along that direction), iso, or the default view
+// (front, a little above and to the right; its name is empty).
+enum class ViewPreset { Default, PlusX, MinusX, PlusY, MinusY, PlusZ, MinusZ, Iso };
+inline constexpr methods::EnumNames<ViewPreset, 8> kViewPresetNames{{{ViewPreset::Default, ""},
+                                                                    {ViewPreset::PlusX, "+x"},
+                                                                    {ViewPreset::MinusX, "-x"},
+                                                                    {ViewPreset::PlusY, "+y"},
+                                                                    {ViewPreset::MinusY, "-y"},
+                                                                    {ViewPreset::PlusZ, "+z"},
+                                                                    {ViewPreset::MinusZ, "-z"},
+                                                                    {ViewPreset::Iso, "iso"}}};
 
 struct RenderOptions {
     std::string input;                  // file or builtin:NAME
@@ -45,7 +59,7 @@ struct RenderOptions {
     // Frames advected before the first written frame of an MP4 or PNG sequence (and the
     // viewer's start); -1: enough to look converged (3 / alpha for ISA/IBFVS, 0 hybrid).
     int warmup = -1;
-    std::string view;                   // --view +x|-x|+y|-y|+z|-z|iso (empty: the default view)
+    ViewPreset view = ViewPreset::Default;  // --view +x|-x|+y|-y|+z|-z|iso
     int upAxis = 1;                     // --up-axis x|y|z: 0, 1, 2
     float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
@@ -170,6 +184,20 @@ double parseNumber(const std::string& text, const std::string& what);
 core::Viewport parseSize(const std::string& text, const std::string& what = "--size");
 glm::vec3 parseVec3(const std::string& text, const std::string& what);
 glm::vec3 parseColor(const std::string& text, const std::string& what = "--background");
+
+// A name of `names` as its value: the one parse of an enum's text, for the option rows and
+// the lists outside the table (--methods, bench's lists); ConfigError naming `what` and
+// the names it takes.
+template <typename E, size_t N>
+E parseName(const methods::EnumNames<E, N>& names, std::string_view text, const std::string& what) {
+    E value{};
+    if (!methods::valueOf(names, text, &value))
+        throw ConfigError(what + ": '" + std::string(text) + "' is not one of " + methods::nameList(names));
+    return value;
+}
+// Method names separated by commas (isa,hybrid), empty items skipped: compare's and bench's
+// --methods, the viewer's --compare. ConfigError naming `what` for a name it does not know.
+std::vector<methods::Method> parseMethodList(const std::string& text, const std::string& what);
 
 // Numbers as text that parse back to the same value.
 std::string formatFloat(float value);

@@ -93,7 +93,8 @@ std::vector<OptionSpec> timeRows() {
          .set = [](RenderOptions& o, const std::string& v) {
              if (v.empty()) { o.timeRange.reset(); return; }
              auto colon = v.find(':');
-             if (colon == std::string::npos) throw ConfigError("--time: '" + v + "' is not START:END");
+             if (colon == std::string::npos || v.find(':', colon + 1) != std::string::npos)
+                 throw ConfigError("--time: '" + v + "' is not START:END");
              o.timeRange = std::make_pair(parseNumber(v.substr(0, colon), "--time"),
                                           parseNumber(v.substr(colon + 1), "--time"));
          },

@@ -52,10 +52,10 @@ std::vector<OptionSpec> cameraRows() {
         number("orbit", {G::Camera, E::Camera, CommandLine | Config | Renderer},
                "Camera turns this many degrees per frame about the up axis (dynamic case)", &RenderOptions::orbit,
                -180, 180),
-        textChoice("view", {G::Camera, E::Camera, CommandLine | Config | Renderer},
-                   "View preset as ParaView's camera buttons: +x, -x, +y, -y, +z, -z (look along that direction) "
-                   "or iso (default: front, a little above and to the right)",
-                   {"", "+x", "-x", "+y", "-y", "+z", "-z", "iso"}, FS_REF(view)),
+        choice("view", {G::Camera, E::Camera, CommandLine | Config | Renderer},
+               "View preset as ParaView's camera buttons: +x, -x, +y, -y, +z, -z (look along that direction) "
+               "or iso (default: front, a little above and to the right)",
+               kViewPresetNames, FS_REF(view)),
         {.name = "up-axis",
          .role = {G::Camera, E::Camera, CommandLine | Config | Renderer},
          .help = "The data's up axis (many CFD cases are z-up): orients --view and the default view",

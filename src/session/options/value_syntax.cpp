@@ -36,6 +36,14 @@ T parseFinite(const std::string& s, const std::string& what) {
 
 float parseFloat(const std::string& s, const std::string& what) { return parseFinite<float>(s, what); }
 
+std::vector<methods::Method> parseMethodList(const std::string& text, const std::string& what) {
+    std::vector<methods::Method> out;
+    std::stringstream ss(text);
+    for (std::string m; std::getline(ss, m, ',');)
+        if (!m.empty()) out.push_back(parseName(methods::kMethodNames, m, what));
+    return out;
+}
+
 namespace {
 
 std::string lower(std::string s) {
