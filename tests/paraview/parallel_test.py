@@ -74,6 +74,8 @@ def render(TAG, PARTITIONS, server=None):
     split.NumberOfPartitions = PARTITIONS
     pieces = ExtractSurface(Input=ProcessIdScalars(Input=split))
     view = CreateRenderView()
+    if server:
+        view.RemoteRenderThreshold = 0.0  # the view's own copy of the setting, as well
     view.ViewSize = [W, H]
     view.OrientationAxesVisibility = 0
     try:

@@ -121,11 +121,20 @@ cs() {
   wait "$server" 2>/dev/null
   return $rc
 }
+# ParaView may also decide to render on the client (seen once under load: the client's own
+# FlowSurf reported the missing array, unnumbered, and the server's log held no FlowSurf
+# line), which would compare a 1-process render: tried again too.
 for attempt in 1 2 3; do
   cs
   rc=$?
-  grep -q -e "bad X server connection" -e "Xvfb failed to start" "$OUT/cs2_server.log" "$OUT/cs2.log" || break
-  echo "no X display (attempt $attempt), again"
+  if grep -q -e "bad X server connection" -e "Xvfb failed to start" "$OUT/cs2_server.log" "$OUT/cs2.log"; then
+    echo "no X display (attempt $attempt), again"
+  elif [ $rc -eq 0 ] && ! grep -q "pvserver.*vtkFlowSurfMapper" "$OUT/cs2_server.log"; then
+    echo "ParaView rendered on the client, not on the server's ranks (attempt $attempt), again"
+    rc=1
+  else
+    break
+  fi
   sleep 2
 done
 grep -E "RENDERED" "$OUT/cs2.log"

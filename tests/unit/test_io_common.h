@@ -162,4 +162,20 @@ inline vtkSmartPointer<vtkPolyData> makeGrid(int nx, int ny, bool triangles = fa
     return grid;
 }
 
+// Runs readDataset and checks the exception type and that the message names `mustName`.
+template <class Error>
+inline void expectReadError(const std::string& path, const std::string& mustName,
+                     const std::string& mustSay = "") {
+    SCOPED_TRACE(path);
+    try {
+        io::readDataset(path);
+        ADD_FAILURE() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(mustName), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "wrong exception type: " << e.what();
+    }
+}
+
 }  // namespace flowsurf::testing_io
