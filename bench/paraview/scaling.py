@@ -70,6 +70,7 @@ rep.DiffuseColor = [1, 1, 1]
 rep.Ambient, rep.Diffuse, rep.Specular = 1.0, 0.0, 0.0
 rep.ColorArrayName = ['POINTS', '']
 Render(view)
+print('FIRST_RENDER', flush=True)  # past ParaView's start-up (scaling.sh watches for it)
 view.CameraPosition, view.CameraFocalPoint = [0.0, -4.0, 3.0], [0.0, 0.0, 0.0]
 view.CameraViewUp, view.CameraViewAngle = [0.0, 0.0, 1.0], 30.0
 rep.SetRepresentationType('FlowSurf')
