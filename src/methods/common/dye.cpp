@@ -159,11 +159,17 @@ void DyeField::receiveHalo(const std::vector<uint8_t>& active, int readReach) {
         const std::vector<uint8_t> wanted = halo(q);
         const std::vector<uint8_t>& theirs = shared_->pieceBricks(q);
         std::vector<uint8_t>& out = sends[size_t(q)];
+        // Runs of consecutive bricks are consecutive voxels: one read-back per run.
+        const auto sent = [&](size_t b) { return wanted[b] && !theirs[b] && hadDye_[b] && shared_->keeper(b) == me; };
         for (size_t b = 0; b < wanted.size(); ++b) {
-            if (!wanted[b] || theirs[b] || !hadDye_[b] || shared_->keeper(b) != me) continue;
-            const size_t at = out.size(), bytes = voxels(b) * sizeof(glm::vec4);
+            if (!sent(b)) continue;
+            size_t end = b + 1;
+            while (end < wanted.size() && sent(end)) ++end;
+            const size_t at = out.size();
+            const size_t bytes = size_t(band_.brickStart[end] - band_.brickStart[b]) * sizeof(glm::vec4);
             out.resize(at + bytes);
             glGetNamedBufferSubData(values_.id(), offset(b), GLsizeiptr(bytes), out.data() + at);
+            b = end - 1;
         }
         haloBytesSent_ += out.size();
     }
