@@ -5,8 +5,11 @@
 
 namespace flowsurf::gl {
 
+void waitForRendering() { glFinish(); }
+
 std::vector<float> readRgbaFloat(const Texture2D& t) {
     std::vector<float> px(size_t(t.width()) * t.height() * 4);
+    waitForRendering();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(px.size() * sizeof(float)), px.data());
     return px;
@@ -21,6 +24,7 @@ std::vector<float> readChannel(const Texture2D& t, int channel) {
 std::vector<uint8_t> readRgb8TopDown(const Texture2D& t) {
     const int w = t.width(), h = t.height();
     std::vector<uint8_t> rgb(size_t(w) * h * 3), flipped(rgb.size());
+    waitForRendering();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(t.id(), 0, GL_RGB, GL_UNSIGNED_BYTE, GLsizei(rgb.size()), rgb.data());
     for (int y = 0; y < h; ++y)
@@ -42,6 +46,7 @@ std::vector<uint16_t> readGray16TopDown(const Texture2D& t) {
 
 std::vector<float> readDepth(const Texture2D& t) {
     std::vector<float> d(size_t(t.width()) * t.height());
+    waitForRendering();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(t.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(d.size() * sizeof(float)), d.data());
     return d;

@@ -1,5 +1,5 @@
-// flowsurf — reading textures back to the CPU (final output and tests only: the
-// per-frame pipeline never reads back).
+// flowsurf — reading textures back to the CPU: final output, tests, and the parallel
+// modes' exchanges (screen_tiles.h, process_group.h).
 #pragma once
 
 #include "gl/objects.h"
@@ -8,6 +8,14 @@
 #include <vector>
 
 namespace flowsurf::gl {
+
+// Waits until every GL command issued so far has run. Every texture read-back calls it
+// first: llvmpipe (Mesa 22.3) was seen returning a texture half rasterised (a 64 x 64 bin
+// drawn to its 40th row) when the pass that drew it had been handed to its rasterizer
+// threads and another framebuffer bound before the read, under CPU load (the hybrid's
+// time levels are drawn between its seeds and their read-back). A read waits for its data
+// anyway; this adds only the wait for commands issued after that data's pass.
+void waitForRendering();
 
 // One channel as float, rows bottom to top (GL order). `channel` 0..3.
 std::vector<float> readChannel(const Texture2D& texture, int channel = 0);

@@ -1,6 +1,7 @@
 #include "methods/common/process_group.h"
 
 #include "core/errors.h"
+#include "gl/readback.h"
 
 #include <climits>
 #include <string>
@@ -24,6 +25,7 @@ GLenum pixelFormat(int channels) {
 
 std::vector<float> readBack(const gl::Texture2D& t, GLenum format, int channels) {
     std::vector<float> v(size_t(t.width()) * size_t(t.height()) * size_t(channels));
+    gl::waitForRendering();
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(t.id(), 0, format, GL_FLOAT, GLsizei(v.size() * sizeof(float)), v.data());
     return v;

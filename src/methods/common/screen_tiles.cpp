@@ -1,6 +1,7 @@
 #include "methods/common/screen_tiles.h"
 
 #include "core/errors.h"
+#include "gl/readback.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -35,6 +36,7 @@ PixelFormat pixelFormatOf(GLenum internalFormat) {
 
 // `layer` -1: a 2D texture; else the z of a 3D texture.
 void readRect(GLuint texture, int layer, const PixelRect& r, const PixelFormat& f, void* out) {
+    gl::waitForRendering();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureSubImage(texture, 0, r.x0, r.y0, std::max(layer, 0), r.width(), r.height(), 1, f.format, f.type,
                          GLsizei(r.area() * f.bytes), out);
@@ -100,6 +102,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     depth_.assign(full.area(), 1.0f);
     if (!fp.empty()) {  // read into the full-size array: rows of w pixels
         const size_t at = size_t(fp.y0) * size_t(w) + size_t(fp.x0);
+        gl::waitForRendering();
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glPixelStorei(GL_PACK_ROW_LENGTH, w);
         glGetTextureSubImage(depth.id(), 0, fp.x0, fp.y0, 0, fp.width(), fp.height(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
