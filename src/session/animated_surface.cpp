@@ -137,7 +137,7 @@ void AnimatedSurface::upload(const core::SurfaceMesh& mesh, const std::string& w
     std::optional<methods::SurfaceStatistics> whole;
     std::optional<methods::PieceSeams> seams;
     if (group_) whole = methods::wholeSurfaceStatistics(*group_, mesh, field_, common_);
-    if (group_ && group_->size() > 1 && options_.params.ibfvs.edgeMask) seams = methods::pieceSeams(*group_, mesh);
+    if (options_.params.ibfvs.edgeMask) seams = methods::pieceSeams(group_, mesh);
     surface_ = std::make_unique<methods::SurfaceGpu>(mesh, field_, common_, options_.params.ibfvs.edgeMask,
                                                      whole ? &*whole : nullptr, seams ? &*seams : nullptr);
 }

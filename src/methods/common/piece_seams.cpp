@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
 namespace flowsurf::methods {
@@ -45,15 +46,28 @@ std::vector<uint32_t> weld(const std::vector<glm::vec3>& points, float eps) {
     return rep;
 }
 
+// Whether two of `points` are the same point (a seam within one process needs that).
+bool anyTwice(const std::vector<glm::vec3>& points) {
+    std::vector<uint32_t> order(points.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = uint32_t(i);
+    const auto key = [&](uint32_t i) { return std::tie(points[i].x, points[i].y, points[i].z); };
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    for (size_t i = 1; i < order.size(); ++i)
+        if (key(order[i - 1]) == key(order[i])) return true;
+    return false;
+}
+
 struct OneSided {
     uint32_t v0, v1, a;  // local vertices: v0 -> v1 in the winding of triangle (v0, v1, a)
 };
 
 }  // namespace
 
-PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
+PieceSeams pieceSeams(ProcessGroup* group, const core::SurfaceMesh& piece) {
+    if (!group && !anyTwice(piece.positions)) return {};
     // The piece's edges with one triangle.
     std::unordered_map<uint64_t, std::pair<OneSided, int>> count;
+    count.reserve(piece.triangles.size() * 2);
     for (const glm::uvec3& t : piece.triangles)
         for (int e = 0; e < 3; ++e) {
             const uint32_t a = t[e], b = t[(e + 1) % 3], c = t[(e + 2) % 3];
@@ -73,7 +87,9 @@ PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
                              piece.positions[mine[i].a]};
         std::memcpy(bytes.data() + i * sizeof(AdjacentEdge), &e, sizeof e);
     }
-    const std::vector<std::vector<uint8_t>> all = allGather(group, std::move(bytes));
+    const std::vector<std::vector<uint8_t>> all =
+        group ? allGather(*group, std::move(bytes)) : std::vector<std::vector<uint8_t>>{std::move(bytes)};
+    const int rank = group ? group->rank() : 0;
 
     // Every process's one-sided edges, in (rank, order), their end points welded within a
     // millionth of their extent (a piece's end may be computed apart from its neighbour's:
@@ -81,7 +97,7 @@ PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
     // of a seam (a piece's own duplicated vertices included).
     std::vector<AdjacentEdge> edges;
     std::vector<int> rankOf;
-    for (int q = 0; q < group.size(); ++q) {
+    for (int q = 0; q < int(all.size()); ++q) {
         const std::vector<uint8_t>& msg = all[size_t(q)];
         for (size_t i = 0; i + sizeof(AdjacentEdge) <= msg.size(); i += sizeof(AdjacentEdge)) {
             edges.emplace_back();
@@ -106,7 +122,7 @@ PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece) {
         sides[(uint64_t(std::min(r0, r1)) << 32) | std::max(r0, r1)].push_back(i);
     }
     size_t first = 0;  // this process's first edge in `edges`
-    while (first < edges.size() && rankOf[first] != group.rank()) ++first;
+    while (first < edges.size() && rankOf[first] != rank) ++first;
     PieceSeams seams;
     for (size_t k = 0; k < mine.size(); ++k) {
         const size_t i = first + k;

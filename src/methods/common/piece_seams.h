@@ -30,7 +30,8 @@ struct PieceSeams {
     std::vector<AdjacentEdge> drawn;  // the seams this process draws, both sides known
 };
 
-// Collective over `group`.
-PieceSeams pieceSeams(ProcessGroup& group, const core::SurfaceMesh& piece);
+// Collective over `group`; nullptr: one process, whose surface may still be made of pieces
+// (ParaView's client rendering the pieces it was delivered, appended patches).
+PieceSeams pieceSeams(ProcessGroup* group, const core::SurfaceMesh& piece);
 
 }  // namespace flowsurf::methods
