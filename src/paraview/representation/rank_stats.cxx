@@ -26,7 +26,7 @@ std::unique_ptr<RankStats> RankStats::fromEnvironment()
   return dir && *dir ? std::unique_ptr<RankStats>(new RankStats(dir)) : nullptr;
 }
 
-void RankStats::begin(session::Playback& playback)
+void RankStats::begin(session::Playback& playback, const VtkProcessGroup* group)
 {
   for (size_t i = 0; i < playback.viewCount(); ++i)
   {
@@ -35,10 +35,12 @@ void RankStats::begin(session::Playback& playback)
   playback.setStageTiming(true);
   wallMs_ = clockMs(CLOCK_MONOTONIC);
   cpuMs_ = clockMs(CLOCK_PROCESS_CPUTIME_ID);
+  mpiCpuMs_ = group ? group->mpiCpuMs() : 0.0;
 }
 
-void RankStats::end(session::Playback& playback, int rank, int ranks, bool warmup)
+void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, bool warmup)
 {
+  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
   glFinish();
   methods::FlowMethod& method = playback.view(0);
   const methods::TileTraffic t = method.tileTraffic();
@@ -47,6 +49,7 @@ void RankStats::end(session::Playback& playback, int rank, int ranks, bool warmu
     { "parallel", methods::nameOf(methods::kParallelModeNames, playback.options().params.common.parallel) },
     { "warmup", warmup }, { "dynamic", method.lastFrameDynamic() },
     { "wall_ms", clockMs(CLOCK_MONOTONIC) - wallMs_ }, { "cpu_ms", clockMs(CLOCK_PROCESS_CPUTIME_ID) - cpuMs_ },
+    { "mpi_cpu_ms", group ? group->mpiCpuMs() - mpiCpuMs_ : 0.0 },
     { "bytes_sent", t.bytesSent }, { "bytes_received", t.bytesReceived }, { "tile_px", t.tilePixels },
     { "guard_px", t.guardPixels }, { "covered_px", t.coveredPixels } };
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();

@@ -363,7 +363,7 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   const bool frames = warmup || timeChanged || cameraChanged;
   if (stats && frames)
   {
-    stats->begin(*playback);
+    stats->begin(*playback, group.get());
   }
   inSection([&] {  // an error on one process inside a frame stops the frame on all
     if (warmup)
@@ -378,7 +378,7 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   });
   if (stats && frames)
   {
-    stats->end(*playback, group ? group->rank() : 0, group ? group->size() : 1, warmup);
+    stats->end(*playback, group.get(), warmup);
   }
   lastTime = viewTime;
   lastCamera = camera;

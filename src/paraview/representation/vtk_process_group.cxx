@@ -7,6 +7,7 @@
 #include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 
+#include <ctime>
 #include <memory>
 #include <numeric>
 #include <string>
@@ -14,6 +15,30 @@
 namespace flowsurf::paraview {
 
 namespace {
+// Adds the calling thread's CPU time over its lifetime to `total` (ms).
+class ThreadCpu
+{
+public:
+  explicit ThreadCpu(double& total)
+    : total_(total)
+    , start_(now())
+  {
+  }
+  ~ThreadCpu() { total_ += now() - start_; }
+  ThreadCpu(const ThreadCpu&) = delete;
+  ThreadCpu& operator=(const ThreadCpu&) = delete;
+
+private:
+  static double now()
+  {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+  }
+  double& total_;
+  double start_;
+};
+
 void check(int ok, const char* what)
 {
   if (!ok)
@@ -40,6 +65,7 @@ int VtkProcessGroup::size() const
 
 void VtkProcessGroup::minInPlace(std::span<float> values)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   std::vector<float> in(values.begin(), values.end());
   check(controller_->AllReduce(in.data(), values.data(), vtkIdType(in.size()), vtkCommunicator::MIN_OP),
     "depth reduction");
@@ -47,6 +73,7 @@ void VtkProcessGroup::minInPlace(std::span<float> values)
 
 void VtkProcessGroup::minInPlace(std::span<int32_t> values)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   std::vector<int> in(values.begin(), values.end()), out(values.size());
   check(controller_->AllReduce(in.data(), out.data(), vtkIdType(in.size()), vtkCommunicator::MIN_OP),
     "owner reduction");
@@ -55,6 +82,7 @@ void VtkProcessGroup::minInPlace(std::span<int32_t> values)
 
 void VtkProcessGroup::sumInPlace(std::span<float> values)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   std::vector<float> in(values.begin(), values.end());
   check(controller_->AllReduce(in.data(), values.data(), vtkIdType(in.size()), vtkCommunicator::SUM_OP),
     "image merge");
@@ -62,6 +90,7 @@ void VtkProcessGroup::sumInPlace(std::span<float> values)
 
 std::vector<float> VtkProcessGroup::gather(std::span<const float> values)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   const int n = this->size();
   vtkIdType mine = vtkIdType(values.size());
   std::vector<vtkIdType> lengths(static_cast<size_t>(n)), offsets(static_cast<size_t>(n), 0);
@@ -75,6 +104,7 @@ std::vector<float> VtkProcessGroup::gather(std::span<const float> values)
 
 std::vector<std::vector<uint8_t>> VtkProcessGroup::exchange(const std::vector<std::vector<uint8_t>>& sends)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   auto* mpi = vtkMPIController::SafeDownCast(controller_);
   if (!mpi)
   {
@@ -131,6 +161,7 @@ std::vector<std::vector<uint8_t>> VtkProcessGroup::exchange(const std::vector<st
 
 std::string VtkProcessGroup::sameValue(bool has, double value, const std::string& what)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   const int n = this->size();
   const double mine[2] = { has ? 1.0 : 0.0, value };
   std::vector<double> all(2 * static_cast<size_t>(n));
@@ -162,6 +193,7 @@ std::string VtkProcessGroup::sameValue(bool has, double value, const std::string
 
 bool VtkProcessGroup::any(bool flag)
 {
+  const ThreadCpu cpu(mpiCpuMs_);
   int in = flag ? 1 : 0, out = 0;
   check(controller_->AllReduce(&in, &out, 1, vtkCommunicator::MAX_OP), "decision");
   return out != 0;

@@ -29,8 +29,13 @@ public:
   // error naming `what` and the first two processes that differ, the same on every process.
   std::string sameValue(bool has, double value, const std::string& what);
 
+  // CPU time this process's calling thread has spent inside the collectives above (MPI's
+  // copies and its polling while waiting for the others), in ms since construction.
+  double mpiCpuMs() const { return mpiCpuMs_; }
+
 private:
   vtkMultiProcessController* controller_;
+  double mpiCpuMs_ = 0;
 };
 
 // The group of this process when ParaView runs on more than one (null otherwise).
