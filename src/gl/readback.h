@@ -10,11 +10,11 @@
 namespace flowsurf::gl {
 
 // Waits until every GL command issued so far has run. Every texture read-back calls it
-// first: llvmpipe (Mesa 22.3) was seen returning a texture half rasterised (a 64 x 64 bin
-// drawn to its 40th row) when the pass that drew it had been handed to its rasterizer
-// threads and another framebuffer bound before the read, under CPU load (the hybrid's
-// time levels are drawn between its seeds and their read-back). A read waits for its data
-// anyway; this adds only the wait for commands issued after that data's pass.
+// first: under CPU load llvmpipe (Mesa 22.3) handed the tile exchange the hybrid's seeds
+// partly undrawn (one 64 x 64 bin up to its 40th row; the hybrid draws its time levels into
+// another framebuffer between the seeds and their read-back), which this wait prevents
+// (TiledParallelUnsteady). A read waits for its data anyway; this adds only the wait for
+// the commands issued after that data's pass.
 void waitForRendering();
 
 // One channel as float, rows bottom to top (GL order). `channel` 0..3.
