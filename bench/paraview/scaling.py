@@ -9,8 +9,10 @@ representation (white, unlit: the gray is the texture). Per method (hybrid with 
 IBFVS): one warm-up render, then --frames renders each after turning the camera by
 --azimuth degrees (every render is a dynamic frame: new G-buffers, exchange, image stages),
 each timed as Render(view) plus a 1-pixel read-back of rank 0's window (the frame, IceT's
-compositing included, is finished). Writes DIR/timings.json (median and every render's ms)
-and DIR/<method>.png (the last image, for comparing across rank counts).
+compositing included, is finished). Then the same loop with ParaView's Outline
+representation of the same data (12 lines): what ParaView's own frame costs at this size and
+rank count whatever is shown ("paraview_ms"). Writes DIR/timings.json (median and every
+render's ms) and DIR/<method>.png (the last image, for comparing across rank counts).
 """
 import argparse
 import json
@@ -82,9 +84,10 @@ pixel = vtkUnsignedCharArray()
 
 results = {'ranks': NRANKS, 'triangles': ntri, 'size': [W, H], 'parallel': args.parallel,
            'frames': args.frames, 'azimuth_deg': args.azimuth, 'methods': {}}
-for method in args.methods.split(','):
-    rep.FlowSurfMethod = method
-    Render(view)  # warm-up: programs, buffers, the first split
+
+
+def timed_renders():
+    """--frames renders, each after turning the camera; ms of each, the camera turned back."""
     ms = []
     for k in range(args.frames):
         camera.Azimuth(args.azimuth)
@@ -93,10 +96,22 @@ for method in args.methods.split(','):
         view.GetRenderWindow().GetRGBACharPixelData(0, 0, 0, 0, 0, pixel)
         ms.append((time.perf_counter() - t) * 1e3)
     camera.Azimuth(-args.azimuth * args.frames)
+    return ms
+
+
+for method in args.methods.split(','):
+    rep.FlowSurfMethod = method
+    Render(view)  # warm-up: programs, buffers, the first split
+    ms = timed_renders()
     SaveScreenshot(os.path.join(args.out, '%s.png' % method), view, ImageResolution=[W, H])
     results['methods'][method] = {'median_ms': statistics.median(ms), 'ms': ms}
     print('%-6s %s %d ranks: median %.1f ms per render (%s)'
           % (method, args.parallel, NRANKS, statistics.median(ms), ' '.join('%.0f' % v for v in ms)), flush=True)
+rep.SetRepresentationType('Outline')
+Render(view)
+ms = timed_renders()
+results['paraview_ms'] = statistics.median(ms)
+print('ParaView alone (Outline) %d ranks: median %.1f ms per render' % (NRANKS, statistics.median(ms)), flush=True)
 with open(os.path.join(args.out, 'timings.json'), 'w') as f:
     json.dump(results, f, indent=1)
 print('DONE', flush=True)

@@ -2,7 +2,9 @@
 
 Medians over the rounds of each run's median ms per render; speedups T(1 rank) / T(2 ranks)
 against the issue's bars scaled by the machine's two-process speedup (min(1, S_hw / 1.9));
-2 ranks of one thread against 1 rank of two llvmpipe threads; whether each 2-rank image is
+2 ranks of one thread against 1 rank of two llvmpipe threads; the same speedups less
+ParaView's own frame (its Outline representation's render time in the same run, when
+recorded); whether each 2-rank image is
 byte-identical to the 1-rank image; and, when present, the per-rank CPU accounting of the
 oversubscribed runs (FLOWSURF_RANK_STATS)."""
 import filecmp
@@ -24,11 +26,14 @@ def load(path):
 cal = open(os.path.join(OUT, 'calibration.txt')).read()
 s_hw = float(re.search(r'S_hw = ([0-9.]+)', cal).group(1))
 scale = min(1.0, s_hw / 1.9)
-runs = {}
+runs, paraview = {}, {}
 for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
     run = os.path.basename(os.path.dirname(path))
-    for method, v in load(path)['methods'].items():
+    timings = load(path)
+    for method, v in timings['methods'].items():
         runs.setdefault(run, {}).setdefault(method, []).append(v['median_ms'])
+    if 'paraview_ms' in timings:
+        paraview.setdefault(run, []).append(timings['paraview_ms'])
 lp2 = os.path.join(OUT, 'np1_lp2', 'timings.json')
 lp2 = load(lp2)['methods'] if os.path.exists(lp2) else {}
 info = open(os.path.join(OUT, 'plugin', 'info.txt')).read().strip().splitlines()
@@ -52,6 +57,17 @@ if first:
         l2 = lp2.get(method, {}).get('median_ms', float('nan'))
         print('| %s | %.0f | %.0f | **%.2f** | %.0f | %.2f | %.0f | %.2f | %d |'
               % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, tt / l2, len(runs['np1'][method])))
+
+    if 'np1' in paraview and 'np2_tiles' in paraview:
+        p1, p2 = statistics.median(paraview['np1']), statistics.median(paraview['np2_tiles'])
+        print('\nParaView\'s own frame (its Outline representation of the same data, same loop): %.0f ms at 1 '
+              'rank, %.0f ms at 2. Less that, FlowSurf\'s part of a render:\n' % (p1, p2))
+        print('| method | 1 rank ms | 2 ranks tiles ms | speedup of FlowSurf\'s part |')
+        print('|---|---:|---:|---:|')
+        for method in runs.get('np1', {}):
+            t1 = statistics.median(runs['np1'][method]) - p1
+            tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')])) - p2
+            print('| %s | %.0f | %.0f | %.2f |' % (method, t1, tt, t1 / tt))
 
     print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
     same, total = 0, 0
