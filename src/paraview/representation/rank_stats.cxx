@@ -1,24 +1,16 @@
 #include "rank_stats.h"
 
+#include "clock_ms.h"
+
 #include "methods/common/params.h"
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 
 namespace flowsurf::paraview {
-
-namespace {
-double clockMs(clockid_t id)
-{
-  timespec t{};
-  clock_gettime(id, &t);
-  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-}  // namespace
 
 std::unique_ptr<RankStats> RankStats::fromEnvironment()
 {

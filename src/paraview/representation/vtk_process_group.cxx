@@ -1,5 +1,7 @@
 #include "vtk_process_group.h"
 
+#include "clock_ms.h"
+
 #include "core/errors.h"
 
 #include "vtkCommunicator.h"
@@ -7,7 +9,6 @@
 #include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 
-#include <ctime>
 #include <memory>
 #include <numeric>
 #include <string>
@@ -21,20 +22,14 @@ class ThreadCpu
 public:
   explicit ThreadCpu(double& total)
     : total_(total)
-    , start_(now())
+    , start_(clockMs(CLOCK_THREAD_CPUTIME_ID))
   {
   }
-  ~ThreadCpu() { total_ += now() - start_; }
+  ~ThreadCpu() { total_ += clockMs(CLOCK_THREAD_CPUTIME_ID) - start_; }
   ThreadCpu(const ThreadCpu&) = delete;
   ThreadCpu& operator=(const ThreadCpu&) = delete;
 
 private:
-  static double now()
-  {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-  }
   double& total_;
   double start_;
 };
