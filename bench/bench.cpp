@@ -3,8 +3,12 @@
 #include "calibration.h"
 
 #include "core/builtin_scenes.h"
+#include "core/time_series.h"
+#include "gl/context.h"
+#include "methods/common/agreeing_group.h"
 #include "methods/common/gl_path.h"
 #include "methods/common/stages.h"
+#include "methods/common/thread_group.h"
 #include "methods/make_renderer.h"
 #include "session/playback.h"
 
@@ -14,8 +18,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
 
 namespace flowsurf::bench {
 
@@ -34,6 +41,7 @@ const std::vector<Column> kColumns = {
     {"noise", {S::SolidNoise}},
     {"overlay", {S::Overlay, S::EdgeMask}},
     {"contrast", {S::ContrastTexture, S::ContrastColour}},  // --enhance-contrast
+    {"exchange", {S::TileExchange, S::TileReturn}},         // --ranks: the tiles' transfers, waits for peers included
 };
 
 double columnMs(const BenchRow& r, const Column& c) {
@@ -75,6 +83,79 @@ BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool
     method.timer().setEnabled(false);
     row.stageMs = method.timer().meanMs();
     return row;
+}
+
+// The static (unless dynamicOnly) and the dynamic case of one playback.
+std::vector<BenchRow> timeCases(session::Playback& playback, const core::Camera& camera, const BenchOptions& o,
+                                int renders) {
+    std::vector<BenchRow> rows;
+    for (bool dynamic : {false, true})
+        if (dynamic || !o.dynamicOnly) rows.push_back(timeCase(playback, camera, dynamic, o.frames, o.stageTimes, renders));
+    return rows;
+}
+
+// `mesh` cut into `n` slabs along x with equal triangle counts (by centroid), one per rank.
+std::vector<core::SurfaceMesh> slabs(const core::SurfaceMesh& mesh, int n) {
+    std::vector<float> xs;
+    xs.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) xs.push_back((mesh.positions[t.x].x + mesh.positions[t.y].x + mesh.positions[t.z].x) / 3.0f);
+    std::sort(xs.begin(), xs.end());
+    std::vector<float> cuts;  // slab r holds centroids in [cuts[r - 1], cuts[r])
+    for (int r = 1; r < n; ++r) cuts.push_back(xs[xs.size() * size_t(r) / size_t(n)]);
+    std::vector<core::SurfaceMesh> pieces;
+    for (int r = 0; r < n; ++r)
+        pieces.push_back(core::pieceOf(mesh, [&cuts, r](glm::vec3 c) {
+            return std::upper_bound(cuts.begin(), cuts.end(), c.x) - cuts.begin() == r;
+        }));
+    return pieces;
+}
+
+// timeCases with `pieces.size()` threads as one group, each rendering its piece with its own
+// GL context, as the plugin's ranks do (an AgreeingGroup over the group, every rank's error
+// the same on all). Each case's row: the slowest rank's frame and stage times.
+std::vector<BenchRow> timeRanks(const std::vector<core::SurfaceMesh>& pieces, const session::RenderOptions& options,
+                                const core::Camera& camera, const BenchOptions& o, int renders) {
+    const int n = int(pieces.size());
+    methods::ThreadGroup group(n);
+    std::vector<std::vector<BenchRow>> perRank(static_cast<size_t>(n));
+    std::vector<std::string> errors(static_cast<size_t>(n));
+    std::vector<std::thread> threads;
+    for (int r = 0; r < n; ++r)
+        threads.emplace_back([&, r] {
+            methods::ThreadGroup::Member member(group, r);
+            methods::AgreeingGroup agreeing(member);
+            try {
+                methods::collectiveSection(&agreeing, [&] {
+                    gl::HeadlessContext context;
+                    core::DatasetSteps steps(core::Dataset{"bench slab " + std::to_string(r), {{0.0, pieces[size_t(r)]}}});
+                    session::Playback playback(options, steps, {}, &agreeing);
+                    perRank[size_t(r)] = timeCases(playback, camera, o, renders);
+                });
+            } catch (const std::exception& e) {
+                errors[size_t(r)] = e.what();
+            }
+        });
+    for (auto& t : threads) t.join();
+    for (const std::string& e : errors)
+        if (!e.empty()) throw std::runtime_error(e);
+    std::vector<BenchRow> rows = perRank[0];
+    for (size_t c = 0; c < rows.size(); ++c)
+        for (int r = 1; r < n; ++r) {
+            const BenchRow& other = perRank[size_t(r)][c];
+            rows[c].frameMs = std::max(rows[c].frameMs, other.frameMs);
+            for (auto& [name, ms] : rows[c].stageMs)
+                for (const auto& [otherName, otherMs] : other.stageMs)
+                    if (otherName == name) ms = std::max(ms, otherMs);
+            for (const auto& [otherName, otherMs] : other.stageMs)  // a stage rank 0 did not run
+                if (std::none_of(rows[c].stageMs.begin(), rows[c].stageMs.end(),
+                                 [&](const auto& st) { return st.first == otherName; }))
+                    rows[c].stageMs.emplace_back(otherName, otherMs);
+        }
+    for (BenchRow& row : rows) {
+        row.ranks = n;
+        row.parallel = std::string(methods::nameOf(methods::kParallelModeNames, options.params.common.parallel));
+    }
+    return rows;
 }
 
 // The parameter sweep of one method: ISA grids, hybrid filter lengths, else one run.
@@ -131,11 +212,14 @@ std::vector<methods::SurfaceRaster> resolvedRasters(const std::vector<methods::S
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<BenchRow> rows;
     std::vector<double> calibration;  // ms, one per method group
-    std::fputs(tableHeader().c_str(), stdout);
+    const bool withRanks = o.ranks != std::vector<int>{1};
+    std::fputs(tableHeader(withRanks).c_str(), stdout);
     for (long tris : o.triangles) {
         core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:" + std::to_string(tris)));
         const core::Bounds bounds = steps.bounds();
-        const long triangles = long(steps.load(0).triangleCount());
+        const core::SurfaceMesh whole = steps.load(0);
+        const long triangles = long(whole.triangleCount());
+        std::map<int, std::vector<core::SurfaceMesh>> pieces;  // by rank count, cut once per mesh
         for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(bounds, vp, {0.3f, 0.4f, 1.0f});
             if (o.camera == BenchCamera::ParaView) {
@@ -150,20 +234,29 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                 for (const auto& [param, variantParams] : variants(m, o))
                     for (methods::GlPath path : resolvedGlPaths(o.glPaths))
                     for (methods::SurfaceRaster raster : resolvedRasters(o.surfaceRasters, size_t(triangles), vp))
-                    for (methods::EnhanceContrast enhance : o.enhanceContrast) {
+                    for (methods::EnhanceContrast enhance : o.enhanceContrast)
+                    for (int ranks : o.ranks)
+                    for (methods::ParallelMode parallel : o.parallel) {
+                        if (ranks == 1 && parallel != o.parallel.front()) continue;  // one rank: no mode
                         methods::MethodParams params = variantParams;
                         params.common.glPath = path;
                         params.common.surfaceRaster = raster;
                         params.common.enhanceContrast = enhance;
+                        params.common.parallel = parallel;
                         session::RenderOptions options;
                         options.method = m;
                         options.params = params;
                         options.size = vp;
-                        session::Playback playback(options, steps);
                         const int renders = m == o.slowdownMethod ? o.slowdownFactor : 1;
-                        for (bool dynamic : {false, true}) {
-                            if (o.dynamicOnly && !dynamic) continue;
-                            BenchRow r = timeCase(playback, camera, dynamic, o.frames, o.stageTimes, renders);
+                        std::vector<BenchRow> cases;
+                        if (ranks == 1) {
+                            session::Playback playback(options, steps);
+                            cases = timeCases(playback, camera, o, renders);
+                        } else {
+                            if (!pieces.count(ranks)) pieces[ranks] = slabs(whole, ranks);
+                            cases = timeRanks(pieces[ranks], options, camera, o, renders);
+                        }
+                        for (BenchRow& r : cases) {
                             r.method = name;
                             r.triangles = triangles;
                             r.image = vp;
@@ -172,7 +265,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                                 r.param += "+" + std::string(methods::nameOf(methods::kEnhanceContrastNames, enhance));
                             r.glPath = glPathName(path);
                             r.raster = raster == methods::SurfaceRaster::Compute ? "compute" : "gl";
-                            std::fputs(formatRow(r).c_str(), stdout);
+                            std::fputs(formatRow(r, withRanks).c_str(), stdout);
                             std::fflush(stdout);
                             rows.push_back(std::move(r));
                         }
@@ -194,16 +287,17 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     return rows;
 }
 
-std::string tableHeader() {
+std::string tableHeader(bool ranks) {
     char line[512];
     int n = std::snprintf(line, sizeof line, "%-6s %-8s %9s %10s %7s %-8s %-7s | %9s %7s |", "method", "case",
                           "triangles", "image", "param", "gl path", "raster", "ms/frame", "fps");
     for (const auto& c : kColumns) n += std::snprintf(line + n, sizeof line - n, " %9s", c.title);
+    if (ranks) n += std::snprintf(line + n, sizeof line - n, " | ranks");
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
 }
 
-std::string formatRow(const BenchRow& r) {
+std::string formatRow(const BenchRow& r, bool ranks) {
     char line[512], image[32];
     std::snprintf(image, sizeof image, "%dx%d", r.image.width, r.image.height);
     int n = std::snprintf(line, sizeof line, "%-6s %-8s %9ld %10s %7s %-8s %-7s | %9.2f %7.1f |", r.method.c_str(),
@@ -212,6 +306,7 @@ std::string formatRow(const BenchRow& r) {
     for (const auto& c : kColumns)
         n += r.stageMs.empty() ? std::snprintf(line + n, sizeof line - n, " %9s", "-")
                                : std::snprintf(line + n, sizeof line - n, " %9.2f", columnMs(r, c));
+    if (ranks) n += std::snprintf(line + n, sizeof line - n, " | %d %s", r.ranks, r.ranks > 1 ? r.parallel.c_str() : "");
     std::snprintf(line + n, sizeof line - n, "\n");
     return line;
 }
@@ -220,7 +315,7 @@ std::string formatCsv(const std::vector<BenchRow>& rows) {
     std::ostringstream s;
     s << "method,case,triangles,width,height,param,gl_path,frame_ms,fps,raster";
     for (const auto& c : kColumns) s << ',' << c.title << "_ms";
-    s << '\n';
+    s << ",ranks,parallel\n";
     for (const auto& r : rows) {
         s << r.method << ',' << r.caseName << ',' << r.triangles << ',' << r.image.width << ',' << r.image.height
           << ',' << r.param << ',' << r.glPath << ',' << r.frameMs << ',' << 1000.0 / r.frameMs << ',' << r.raster;
@@ -228,7 +323,7 @@ std::string formatCsv(const std::vector<BenchRow>& rows) {
             s << ',';
             if (!r.stageMs.empty()) s << columnMs(r, c);  // empty: stages not timed
         }
-        s << '\n';
+        s << ',' << r.ranks << ',' << r.parallel << '\n';
     }
     return s.str();
 }

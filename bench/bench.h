@@ -50,6 +50,12 @@ struct BenchOptions {
     // add one row, method "calib", with the median: the machine's speed in this run.
     bool calibration = false;
     BenchCamera camera = BenchCamera::Fit;
+    // Ranks [issue 27], each count its rows. Above 1: that many threads of this program, each
+    // with its own GL context and a slab of the sphere (equal triangle counts along x), as
+    // one methods::ThreadGroup — the ParaView plugin's ranks with memory instead of MPI —
+    // in each mode of `parallel`. A row's frame and stage times are the slowest rank's.
+    std::vector<int> ranks{1};
+    std::vector<methods::ParallelMode> parallel{methods::ParallelMode::Tiles};
 };
 
 struct BenchRow {
@@ -61,12 +67,15 @@ struct BenchRow {
     std::string raster;                  // who rasterised the surface: "gl" or "compute"
     double frameMs = 0;                  // whole frame, pipelined (timer off)
     std::vector<std::pair<std::string, double>> stageMs;  // per stage (synchronised pass)
+    int ranks = 1;                       // threads rendering the view together
+    std::string parallel = "-";          // their parallel mode: "tiles" or "replicate"
 };
 
 // Runs the suite (needs a current GL context); prints the table as it goes.
 std::vector<BenchRow> runBench(const BenchOptions& options);
-std::string tableHeader();
-std::string formatRow(const BenchRow& row);
+// `ranks`: with the ranks column (a run with more than one rank).
+std::string tableHeader(bool ranks = false);
+std::string formatRow(const BenchRow& row, bool ranks = false);
 std::string formatCsv(const std::vector<BenchRow>& rows);
 
 }  // namespace flowsurf::bench

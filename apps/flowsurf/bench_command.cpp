@@ -59,6 +59,9 @@ int runBench(const BenchOptions& o) {
     b.enhanceContrast.clear();
     for (const auto& e : o.enhanceContrast)
         b.enhanceContrast.push_back(parseName(methods::kEnhanceContrastNames, e, "--enhance-contrast"));
+    b.ranks = o.ranks;
+    b.parallel.clear();
+    for (const auto& m : o.parallel) b.parallel.push_back(parseName(methods::kParallelModeNames, m, "--parallel"));
     b.stageTimes = !o.noStageTimes;
     b.calibration = o.calibration;
     if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);

@@ -41,6 +41,8 @@ struct BenchOptions {
     std::vector<std::string> glPaths{"auto"};
     std::vector<std::string> surfaceRasters{"auto"};
     std::vector<std::string> enhanceContrast{"off"};  // --enhance-contrast: each variant a row
+    std::vector<int> ranks{1};                        // --ranks: each count a row
+    std::vector<std::string> parallel{"tiles"};       // --parallel: each mode a row (ranks > 1)
     bool noStageTimes = false;
     bool calibration = false;
     bool transfers = false;   // --transfers: only the host transfer timings (bench/transfers.h)

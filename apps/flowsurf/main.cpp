@@ -146,6 +146,12 @@ CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
     benchCmd->add_option("--enhance-contrast", bench.enhanceContrast,
                          "Contrast enhancement variants to time, each a row (off, texture, color, both)")
         ->delimiter(',')->capture_default_str()->check(CLI::IsMember(methods::names(methods::kEnhanceContrastNames)));
+    benchCmd->add_option("--ranks", bench.ranks, "Ranks rendering each row together, each count a row: above 1, that "
+                                                 "many threads with a GL context and a slab of the sphere each, as "
+                                                 "ParaView's ranks with memory for MPI (the slowest rank's times)")
+        ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 64));
+    benchCmd->add_option("--parallel", bench.parallel, "The ranks' parallel modes, each a row (tiles, replicate)")
+        ->delimiter(',')->capture_default_str()->check(CLI::IsMember(methods::names(methods::kParallelModeNames)));
     benchCmd->add_flag("--no-stage-times", bench.noStageTimes,
                        "Time whole frames only (skips the second, synchronised pass per stage)");
     benchCmd->add_flag("--calibration", bench.calibration, "Also time a fixed GL frame no flowsurf change touches "

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace flowsurf::detail {
 void checkFailed(const char* expr, const char* file, int line) {
@@ -84,6 +85,35 @@ Bounds SurfaceMesh::bounds() const {
     Bounds b;
     for (const auto& p : positions) b.extend(p);
     return b;
+}
+
+SurfaceMesh pieceOf(const SurfaceMesh& mesh, const std::function<bool(glm::vec3)>& keep) {
+    SurfaceMesh p;
+    p.units = mesh.units;
+    std::unordered_map<uint32_t, uint32_t> index;  // mesh's vertex -> the piece's
+    auto vertex = [&](uint32_t v) {
+        auto [it, fresh] = index.try_emplace(v, uint32_t(p.positions.size()));
+        if (fresh) {
+            p.positions.push_back(mesh.positions[v]);
+            if (v < mesh.normals.size()) p.normals.push_back(mesh.normals[v]);
+        }
+        return it->second;
+    };
+    for (const auto& t : mesh.triangles) {
+        const glm::vec3 c = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
+        if (keep(c)) p.triangles.push_back({vertex(t.x), vertex(t.y), vertex(t.z)});
+    }
+    for (const auto& f : mesh.fields) {
+        VectorField g{f.name, std::vector<glm::vec3>(p.positions.size())};
+        for (auto [from, to] : index) g.values[to] = f.values[from];
+        p.fields.push_back(std::move(g));
+    }
+    for (const auto& s : mesh.scalars) {
+        ScalarField g{s.name, std::vector<float>(p.positions.size())};
+        for (auto [from, to] : index) g.values[to] = s.values[from];
+        p.scalars.push_back(std::move(g));
+    }
+    return p;
 }
 
 Bounds Dataset::bounds() const {

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
@@ -57,6 +58,11 @@ struct SurfaceMesh {
     const ScalarField* findScalar(const std::string& name) const;
     Bounds bounds() const;
 };
+
+// The triangles of `mesh` whose centroid `keep` accepts, with their vertices and every
+// per-vertex array; a vertex shared with rejected triangles appears in both pieces, as on
+// the seams of a partitioned dataset (the pieces ParaView's ranks hold).
+SurfaceMesh pieceOf(const SurfaceMesh& mesh, const std::function<bool(glm::vec3)>& keep);
 
 struct TimeStep {
     double time = 0.0;

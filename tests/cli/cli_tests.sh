@@ -170,6 +170,15 @@ if "$FLOWSURF" bench --methods ibfvs --triangles 8 --sizes 64x64 --frames 1 --gl
 else
     bad "bench gl_path column and calibration row: $(cut -d, -f1,7 "$WORK/b.csv" 2>&1 | tr '\n' ' ')"
 fi
+# bench --ranks: a row per rank count and (above one rank) per parallel mode, as threads.
+expect_fail "bench unknown parallel mode" 2 "parallel" "$WORK/b3.csv" -- bench --parallel mpi --csv "$WORK/b3.csv"
+if "$FLOWSURF" bench --methods isa --grids 128 --triangles 2000 --sizes 64x64 --frames 1 --dynamic-only --no-stage-times \
+       --ranks 1,2 --parallel tiles,replicate --csv "$WORK/r.csv" >/dev/null &&
+   [ "$(awk -F, '{print $1 "," $(NF-1) "," $NF}' "$WORK/r.csv" | tr '\n' ' ')" = "method,ranks,parallel isa,1,- isa,2,tiles isa,2,replicate " ]; then
+    ok "bench --ranks rows"
+else
+    bad "bench --ranks rows: $(awk -F, '{print $1 "," $(NF-1) "," $NF}' "$WORK/r.csv" 2>&1 | tr '\n' ' ')"
+fi
 if "$FLOWSURF" info builtin:double-gyre | grep -q "time values: 0 1 2"; then ok "info lists time values"; else bad "info lists time values"; fi
 if command -v ffmpeg >/dev/null; then
     if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 4 --orbit 2 -q -o "$WORK/a.mp4" && [ -s "$WORK/a.mp4" ]; then

@@ -65,7 +65,7 @@ std::vector<Outcome> runWithFailure(const std::string& method, int at) {
     const core::Dataset data = core::makeBuiltin("builtin:sphere:20000");
     const core::Viewport vp{96, 96};
     const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.2f, 1.0f});
-    test::ThreadGroup threads(2);
+    methods::ThreadGroup threads(2);
     std::vector<Outcome> out(2);
     std::mutex m;
     std::condition_variable cv;
@@ -75,12 +75,12 @@ std::vector<Outcome> runWithFailure(const std::string& method, int at) {
         workers.emplace_back([&, r] {
             try {
                 gl::HeadlessContext context;
-                test::ThreadGroup::Member member(threads, r);
+                methods::ThreadGroup::Member member(threads, r);
                 methods::AgreeingGroup group(member);
                 FaultyGroup faulty(group);  // fails between two of the agreeing group's steps
                 // Two pieces with a seam through the view.
                 const core::SurfaceMesh piece =
-                    test::pieceOf(data.steps.front().mesh, [r](glm::vec3 c) { return (c.x < 0.0f) == (r == 0); });
+                    core::pieceOf(data.steps.front().mesh, [r](glm::vec3 c) { return (c.x < 0.0f) == (r == 0); });
                 methods::MethodParams params;
                 const methods::SurfaceStatistics whole =
                     methods::wholeSurfaceStatistics(group, piece, "velocity", params.common);

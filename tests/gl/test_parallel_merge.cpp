@@ -33,7 +33,7 @@ using test::depthComposite;
 using test::difference;
 using test::Images;
 using test::inThreads;
-using test::pieceOf;
+using core::pieceOf;
 
 Images renderWith(const std::string& method, const core::SurfaceMesh& mesh,
                   const std::function<core::Camera(int)>& cameraAt, const core::Viewport& vp, int frames,
@@ -128,14 +128,14 @@ TEST(ParallelContrast, ReplicateEqualsOneProcessTilesColorRefused) {
         }
     }
     params.common.parallel = methods::ParallelMode::Tiles;
-    test::ThreadGroup group(2);
+    methods::ThreadGroup group(2);
     std::vector<std::string> errors(2);
     std::vector<std::thread> threads;
     for (int r = 0; r < 2; ++r)
         threads.emplace_back([&, r] {
             try {
                 gl::HeadlessContext context;
-                test::ThreadGroup::Member member(group, r);
+                methods::ThreadGroup::Member member(group, r);
                 renderWith("hybrid", pieces[size_t(r)], still, vp, 1, &member, params);
             } catch (const std::exception& e) {
                 errors[size_t(r)] = e.what();

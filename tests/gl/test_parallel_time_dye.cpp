@@ -25,7 +25,7 @@ using test::depthComposite;
 using test::difference;
 using test::Images;
 using test::inThreads;
-using test::pieceOf;
+using core::pieceOf;
 
 }  // namespace
 
