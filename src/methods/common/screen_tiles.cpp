@@ -7,6 +7,7 @@
 
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 namespace flowsurf::methods {
 
@@ -51,6 +52,19 @@ void writeRect(GLuint texture, int layer, const PixelRect& r, const PixelFormat&
 void readRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, void* out) { readRect(t.id(), -1, r, f, out); }
 void writeRect(const gl::Texture2D& t, const PixelRect& r, const PixelFormat& f, const void* in) {
     writeRect(t.id(), -1, r, f, in);
+}
+
+// Calls f(std::integral_constant<size_t, N>{}) for pixels of N = `bytes` bytes, so that the
+// per-pixel copies below are copies of a fixed size (inlined, not a library call each).
+template <class F>
+void withPixelSize(size_t bytes, F&& f) {
+    switch (bytes) {
+        case 2: return f(std::integral_constant<size_t, 2>{});
+        case 4: return f(std::integral_constant<size_t, 4>{});
+        case 8: return f(std::integral_constant<size_t, 8>{});
+        case 16: return f(std::integral_constant<size_t, 16>{});
+        default: throw GlError("screen tiles: pixels of " + std::to_string(bytes) + " bytes cannot be exchanged");
+    }
 }
 
 // Messages are plain byte strings, read in order.
@@ -133,75 +147,72 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect(full);
 
     // This piece's layers over its covered rectangle.
-    std::vector<std::vector<uint8_t>> local(layers.size());
+    std::vector<std::vector<uint8_t>>& local = local_;
+    local.resize(layers.size());
     if (!covered.empty())
         for (size_t i = 0; i < layers.size(); ++i) {
             local[i].resize(covered.area() * formats[i].bytes);
             readRect(layers[i].local, layers[i].layer, covered, formats[i], local[i].data());
         }
+    const auto coveredIndex = [&](int x, int y) {
+        return uint32_t(size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0));
+    };
 
     // Messages: to each tile's owner, this piece over that tile plus guard: the rectangle,
-    // the depth of each pixel, then every layer's bytes at each covered pixel.
+    // the depth of each pixel, then each layer's bytes at the covered pixels (row order),
+    // layer after layer.
     sent_.assign(size_t(n), PixelRect{});
-    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    std::vector<std::vector<uint8_t>>& sends = sends_;
+    sends.resize(size_t(n));
     for (int t = 0; t < n; ++t) {
+        sends[size_t(t)].clear();
         const PixelRect& tt = tiles_[size_t(t)];
         const PixelRect r = tt.empty() ? PixelRect{} : tt.grown(guardPx).intersect(full).intersect(covered);
         sent_[size_t(t)] = r.empty() ? PixelRect{} : r;
         if (t == me || r.empty()) continue;
-        std::vector<uint8_t>& out = sends[size_t(t)];
-        size_t coveredHere = 0;
+        std::vector<uint32_t>& idx = pixelIndex_;  // the covered pixels of r, in row order
+        idx.clear();
         for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x) coveredHere += depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
-        out.resize(16 + r.area() * 4 + coveredHere * layerBytes);
+            for (int x = r.x0; x < r.x1; ++x)
+                if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) idx.push_back(coveredIndex(x, y));
+        std::vector<uint8_t>& out = sends[size_t(t)];
+        out.resize(16 + r.area() * 4 + idx.size() * layerBytes);
         const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
         std::memcpy(out.data(), header, 16);
         uint8_t* at = out.data() + 16;
         for (int y = r.y0; y < r.y1; ++y, at += size_t(r.width()) * 4)
             std::memcpy(at, &depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * 4);
-        for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x) {
-                if (!(depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f)) continue;
-                const size_t px = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
-                for (size_t i = 0; i < layers.size(); ++i) {
-                    std::memcpy(at, &local[i][px * formats[i].bytes], formats[i].bytes);
-                    at += formats[i].bytes;
+        for (size_t i = 0; i < layers.size(); ++i)
+            withPixelSize(formats[i].bytes, [&](auto size) {
+                constexpr size_t N = decltype(size)::value;
+                const uint8_t* from = local[i].data();
+                for (uint32_t k : idx) {
+                    std::memcpy(at, from + size_t(k) * N, N);
+                    at += N;
                 }
-            }
+            });
         traffic_.bytesSent += out.size();
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);
 
     // The merge over the region, in rank order: a strictly nearer fragment wins, so on a tie
-    // the lowest rank keeps the pixel (as mergeByDepth).
+    // the lowest rank keeps the pixel (as mergeByDepth). First the winner of each pixel (its
+    // process and the index of its values there), then each layer copied from the winners.
     const PixelRect& R = region_;
-    std::vector<float> best(R.area(), 1.0f);
-    std::vector<std::vector<uint8_t>> merged(layers.size());
-    for (size_t i = 0; i < layers.size(); ++i) {
-        merged[i].assign(R.area() * formats[i].bytes, 0);
-        const float fill = formats[i].depth ? 1.0f : layers[i].fill;
-        if (fill != 0.0f) {
-            const size_t channels = formats[i].depth ? 1 : formats[i].bytes / (formats[i].type == GL_FLOAT ? 4 : 2);
-            std::vector<uint8_t> pixel(formats[i].bytes);
-            for (size_t c = 0; c < channels; ++c) {
-                if (formats[i].type == GL_FLOAT) std::memcpy(&pixel[c * 4], &fill, 4);
-                else {
-                    const uint16_t half = glm::packHalf1x16(fill);
-                    std::memcpy(&pixel[c * 2], &half, 2);
-                }
-            }
-            for (size_t p = 0; p < R.area(); ++p) std::memcpy(&merged[i][p * formats[i].bytes], pixel.data(), pixel.size());
-        }
-    }
+    best_.assign(R.area(), 1.0f);
+    winner_.assign(R.area(), -1);
+    winnerAt_.resize(R.area());
+    std::vector<std::vector<const uint8_t*>> values(static_cast<size_t>(n));  // [process][layer]: its values' start
     received_.assign(size_t(n), PixelRect{});
-    receivedDepth_.assign(size_t(n), {});
+    receivedDepth_.resize(size_t(n));
     for (int q = 0; q < n; ++q) {
         PixelRect r;
         const float* qDepth = nullptr;
-        const uint8_t* qValues = nullptr;  // q's covered pixels' layer bytes, in order
         std::vector<float>& keep = receivedDepth_[size_t(q)];
+        keep.clear();
         if (q == me) {
             r = sent_[size_t(me)];
+            for (size_t i = 0; i < layers.size(); ++i) values[size_t(q)].push_back(local[i].data());
         } else {
             if (in[size_t(q)].empty()) continue;
             traffic_.bytesReceived += in[size_t(q)].size();
@@ -212,35 +223,54 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             keep.resize(r.area());
             std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
             qDepth = keep.data();
-            qValues = rd.in.data() + rd.at;
+            size_t count = 0;
+            for (float d : keep) count += d < 1.0f;
+            const uint8_t* v = rd.take(count * layerBytes);
+            if (rd.at != in[size_t(q)].size())
+                throw GlError("screen tiles: a message from process " + std::to_string(q) + " has trailing bytes");
+            for (size_t i = 0; i < layers.size(); ++i) {
+                values[size_t(q)].push_back(v);
+                v += count * formats[i].bytes;
+            }
         }
         received_[size_t(q)] = r;
         if (r.empty()) continue;
-        size_t k = 0;  // q's covered pixels so far
+        uint32_t k = 0;  // q's covered pixels so far
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x) {
                 const float d = q == me ? depth_[size_t(y) * size_t(w) + size_t(x)]
                                         : qDepth[size_t(y - r.y0) * size_t(r.width()) + size_t(x - r.x0)];
                 if (!(d < 1.0f)) continue;
-                const size_t p = size_t(y - R.y0) * size_t(R.width()) + size_t(x - R.x0);
-                const uint8_t* src = nullptr;
-                if (q != me) {
-                    if (qValues + (k + 1) * layerBytes > in[size_t(q)].data() + in[size_t(q)].size())
-                        throw GlError("screen tiles: a message from process " + std::to_string(q) + " is truncated");
-                    src = qValues + k * layerBytes;
-                }
+                const uint32_t at = q == me ? coveredIndex(x, y) : k;
                 ++k;
-                if (!(d < best[p])) continue;
-                best[p] = d;
-                const size_t at = size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0);
-                for (size_t i = 0; i < layers.size(); ++i) {
-                    const uint8_t* from = q == me ? &local[i][at * formats[i].bytes] : src;
-                    std::memcpy(&merged[i][p * formats[i].bytes], from, formats[i].bytes);
-                    if (q != me) src += formats[i].bytes;
-                }
+                const size_t p = size_t(y - R.y0) * size_t(R.width()) + size_t(x - R.x0);
+                if (!(d < best_[p])) continue;
+                best_[p] = d;
+                winner_[p] = q;
+                winnerAt_[p] = at;
             }
-        if (q == me) keep.clear();
     }
+    std::vector<std::vector<uint8_t>>& merged = merged_;
+    merged.resize(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i)
+        withPixelSize(formats[i].bytes, [&](auto size) {
+            constexpr size_t N = decltype(size)::value;
+            merged[i].resize(R.area() * N);
+            uint8_t background[N] = {};  // every channel `fill` (a depth layer's 1)
+            const float fill = formats[i].depth ? 1.0f : layers[i].fill;
+            if (formats[i].type == GL_FLOAT)
+                for (size_t c = 0; c < N / 4; ++c) std::memcpy(&background[c * 4], &fill, 4);
+            else
+                for (size_t c = 0; c < N / 2; ++c) {
+                    const uint16_t half = glm::packHalf1x16(fill);
+                    std::memcpy(&background[c * 2], &half, 2);
+                }
+            uint8_t* to = merged[i].data();
+            for (size_t p = 0; p < R.area(); ++p, to += N) {
+                const int q = winner_[p];
+                std::memcpy(to, q < 0 ? background : values[size_t(q)][i] + size_t(winnerAt_[p]) * N, N);
+            }
+        });
 
     // Upload; what the last region held and this one does not is cleared.
     for (size_t i = 0; i < layers.size(); ++i) {
@@ -255,7 +285,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
-    for (float d : best) traffic_.coveredPixels += d < 1.0f;
+    for (float d : best_) traffic_.coveredPixels += d < 1.0f;
 }
 
 void ScreenTiles::reportCost(ProcessGroup& group, float ms) {

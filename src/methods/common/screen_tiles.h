@@ -126,6 +126,13 @@ private:
     std::vector<PixelRect> received_;
     std::vector<std::vector<float>> receivedDepth_;
     std::vector<float> values_;             // scratch for returnValues
+    // Scratch for distribute, kept between frames (no allocation per frame): this piece's
+    // layers, the messages, the covered pixels of one message, the merge's nearest depth,
+    // winning process and its value index per pixel of the region, the merged layers.
+    std::vector<std::vector<uint8_t>> local_, sends_, merged_;
+    std::vector<uint32_t> pixelIndex_, winnerAt_;
+    std::vector<float> best_;
+    std::vector<int32_t> winner_;
     // The last split's cell weights, the measured cost scale per cell, and the balance.
     std::vector<float> weights_, costScale_;
     int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
