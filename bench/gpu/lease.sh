@@ -6,6 +6,7 @@
 #   info.txt       machine, GPU, driver, GL renderer
 #   transfers.txt  host read-back / upload per layer format (flowsurf bench --transfers)
 #   t1.txt         the one-process frame of the parallel benchmark's cases (docs/parallel.md)
+#   ranks.txt      those cases with 2 ranks sharing the GPU (flowsurf bench --ranks)
 #   grid/          bench/gpu/run.sh's grid (bench.txt streamed row by row, bench.csv at the end)
 #   bench/gpu/lease.sh CARRIED_DIR [GRID_SECONDS]
 set -uo pipefail
@@ -37,6 +38,9 @@ cat "$OUT/transfers.txt"
 # 2. T(1): the parallel benchmark's cases (hybrid L=31, ISA R=256, IBFVS), camera orbiting.
 timeout 120 "$F" bench --methods isa,ibfvs,hybrid --triangles 1000000,10000000 \
   --sizes 1024x1024,1920x1080 --lengths 31 --grids 256 --dynamic-only --frames 20 2>&1 | tee "$OUT/t1.txt"
+# 2b. The tiled mode's exchange with ranks sharing this GPU (threads, one context each).
+timeout 90 "$F" bench --methods isa,ibfvs,hybrid --triangles 1000000 --sizes 1024x1024,1920x1080 --lengths 31 \
+  --grids 256 --dynamic-only --frames 10 --ranks 1,2 2>&1 | tee "$OUT/ranks.txt"
 # 3. The grid, bounded in time, the large meshes first: rows stream into grid/bench.txt.
 FLOWSURF_BENCH_TRIANGLES=${FLOWSURF_BENCH_TRIANGLES:-1000000 10000000 100000 10000} \
   FLOWSURF_BENCH_FRAMES=${FLOWSURF_BENCH_FRAMES:-10} timeout "$GRID_SECONDS" \
