@@ -160,6 +160,7 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     if (tiled && !madeWith_[source_].empty()) {
         timer_.begin(stageName(Stage::TileExchange));
         tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
+        timer_.begin(stageName(Stage::TextureAdvection));
     }
     const auto advected = std::chrono::steady_clock::now();
     if (!tiled || !tiles_->tile().empty())
