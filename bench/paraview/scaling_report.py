@@ -35,6 +35,7 @@ for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
     if 'paraview_ms' in timings:
         paraview.setdefault(run, []).append(timings['paraview_ms'])
 lp2 = os.path.join(OUT, 'np1_lp2', 'timings.json')
+lp2_paraview = load(lp2).get('paraview_ms') if os.path.exists(lp2) else None
 lp2 = load(lp2)['methods'] if os.path.exists(lp2) else {}
 info = open(os.path.join(OUT, 'plugin', 'info.txt')).read().strip().splitlines()
 rounds = sorted(glob.glob(os.path.join(OUT, 'r*', 'np1', 'timings.json')))
@@ -63,12 +64,16 @@ if first:
         p1, p2 = statistics.median(paraview['np1']), statistics.median(paraview['np2_tiles'])
         print('\nParaView\'s own frame (its Outline representation of the same data, same loop): %.0f ms at 1 '
               'rank, %.0f ms at 2. Less that, FlowSurf\'s part of a render:\n' % (p1, p2))
-        print('| method | 1 rank ms | 2 ranks tiles ms | speedup of FlowSurf\'s part |')
-        print('|---|---:|---:|---:|')
+        if lp2_paraview is not None:
+            print('(1 rank on llvmpipe\'s 2 threads: ParaView\'s own frame %.0f ms.)\n' % lp2_paraview)
+        print('| method | 1 rank ms | 2 ranks tiles ms | speedup of FlowSurf\'s part '
+              '| 1 rank, 2 llvmpipe threads ms | 2 ranks tiles / that |')
+        print('|---|---:|---:|---:|---:|---:|')
         for method in runs.get('np1', {}):
             t1 = statistics.median(runs['np1'][method]) - p1
             tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')])) - p2
-            print('| %s | %.0f | %.0f | %.2f |' % (method, t1, tt, t1 / tt))
+            l2 = lp2.get(method, {}).get('median_ms', float('nan')) - (lp2_paraview or float('nan'))
+            print('| %s | %.0f | %.0f | %.2f | %.0f | %.2f |' % (method, t1, tt, t1 / tt, l2, tt / l2))
 
     print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
     same, total = 0, 0
