@@ -21,7 +21,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
-#include <stdexcept>
+#include <exception>
 #include <thread>
 
 namespace flowsurf::bench {
@@ -118,7 +118,7 @@ std::vector<BenchRow> timeRanks(const std::vector<core::SurfaceMesh>& pieces, co
     const int n = int(pieces.size());
     methods::ThreadGroup group(n);
     std::vector<std::vector<BenchRow>> perRank(static_cast<size_t>(n));
-    std::vector<std::string> errors(static_cast<size_t>(n));
+    std::vector<std::exception_ptr> errors(static_cast<size_t>(n));
     std::vector<std::thread> threads;
     for (int r = 0; r < n; ++r)
         threads.emplace_back([&, r] {
@@ -131,13 +131,13 @@ std::vector<BenchRow> timeRanks(const std::vector<core::SurfaceMesh>& pieces, co
                     session::Playback playback(options, steps, {}, &agreeing);
                     perRank[size_t(r)] = timeCases(playback, camera, o, renders);
                 });
-            } catch (const std::exception& e) {
-                errors[size_t(r)] = e.what();
+            } catch (...) {
+                errors[size_t(r)] = std::current_exception();  // the same PeerFailure on every rank
             }
         });
     for (auto& t : threads) t.join();
-    for (const std::string& e : errors)
-        if (!e.empty()) throw std::runtime_error(e);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
     std::vector<BenchRow> rows = perRank[0];
     for (size_t c = 0; c < rows.size(); ++c)
         for (int r = 1; r < n; ++r) {
