@@ -1,5 +1,7 @@
 #include "gl_test_util.h"
 
+#include "../common/autocorrelation.h"
+
 #include "gl/readback.h"
 #include "methods/make_renderer.h"
 #include "quality/structure_tensor.h"
@@ -82,32 +84,7 @@ core::Camera orthoFront(float height) {
 }
 
 float correlationLength(const Rendered& r, int x0, int y0, int x1, int y1, int dx, int dy) {
-    double sum = 0, sum2 = 0;
-    int n = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            sum += r.f(x, y);
-            sum2 += double(r.f(x, y)) * r.f(x, y);
-            ++n;
-        }
-    double mean = sum / n, var = sum2 / n - mean * mean;
-    double prev = 1.0;
-    for (int lag = 1; lag < 200; ++lag) {
-        double c = 0;
-        int m = 0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                int xs = x + lag * dx, ys = y + lag * dy;
-                if (xs < x0 || xs >= x1 || ys < y0 || ys >= y1) continue;
-                c += (r.f(x, y) - mean) * (r.f(xs, ys) - mean);
-                ++m;
-            }
-        if (m == 0) return float(lag);
-        double rho = c / m / var;
-        if (rho < 0.5) return float(lag - 1) + float((prev - 0.5) / (prev - rho));  // linear crossing
-        prev = rho;
-    }
-    return 200.0f;
+    return autocorrelationLength([&](int x, int y) { return double(r.f(x, y)); }, x0, y0, x1, y1, dx, dy, 200, true);
 }
 
 double pearson(const std::vector<double>& a, const std::vector<double>& b) {

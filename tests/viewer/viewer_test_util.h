@@ -5,6 +5,8 @@
 
 #include "io/image_writer.h"
 
+#include "../common/autocorrelation.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -132,33 +134,9 @@ inline double surfaceCorrelation(const io::PngImage& a, const io::PngImage& b) {
 // Lag (pixels) where the autocorrelation of a 16-bit gray image along (dx, dy) drops
 // below 0.5, over the central half of the image.
 inline float correlationLength(const io::PngImage& im, int dx, int dy) {
-    const int x0 = im.width / 4, x1 = 3 * im.width / 4, y0 = im.height / 4, y1 = 3 * im.height / 4;
-    double mean = 0, var = 0;
-    int n = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) mean += im.samples[size_t(y) * im.width + x], ++n;
-    mean /= n;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            double d = im.samples[size_t(y) * im.width + x] - mean;
-            var += d * d;
-        }
-    var /= n;
-    double prev = 1.0;
-    for (int lag = 1; lag < 40; ++lag) {
-        double c = 0;
-        int m = 0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                c += (im.samples[size_t(y) * im.width + x] - mean) *
-                     (im.samples[size_t(y + lag * dy) * im.width + x + lag * dx] - mean);
-                ++m;
-            }
-        c /= m * var;
-        if (c < 0.5) return float(lag - 1) + float((prev - 0.5) / (prev - c));
-        prev = c;
-    }
-    return 40.0f;
+    const auto sample = [&](int x, int y) { return double(im.samples[size_t(y) * im.width + x]); };
+    return test::autocorrelationLength(sample, im.width / 4, im.height / 4, 3 * im.width / 4, 3 * im.height / 4, dx, dy,
+                                       40, false);
 }
 
 inline nlohmann::json readJson(const std::string& p) {
