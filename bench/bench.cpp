@@ -217,8 +217,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     for (long tris : o.triangles) {
         core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:" + std::to_string(tris)));
         const core::Bounds bounds = steps.bounds();
-        const core::SurfaceMesh whole = steps.load(0);
-        const long triangles = long(whole.triangleCount());
+        const long triangles = long(steps.load(0).triangleCount());
         std::map<int, std::vector<core::SurfaceMesh>> pieces;  // by rank count, cut once per mesh
         for (const core::Viewport& vp : o.imageSizes) {
             core::Camera camera = core::fitCamera(bounds, vp, {0.3f, 0.4f, 1.0f});
@@ -253,7 +252,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                             session::Playback playback(options, steps);
                             cases = timeCases(playback, camera, o, renders);
                         } else {
-                            if (!pieces.count(ranks)) pieces[ranks] = slabs(whole, ranks);
+                            if (!pieces.count(ranks)) pieces[ranks] = slabs(steps.load(0), ranks);
                             cases = timeRanks(pieces[ranks], options, camera, o, renders);
                         }
                         for (BenchRow& r : cases) {

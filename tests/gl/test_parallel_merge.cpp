@@ -167,18 +167,8 @@ std::vector<core::SurfaceMesh> sectors(const core::SurfaceMesh& mesh, int parts,
 // `pieces` as one mesh, each seam's vertices in it twice (what ParaView's client renders when
 // the server delivers a split surface's geometry).
 core::SurfaceMesh appended(const std::vector<core::SurfaceMesh>& pieces) {
-    core::SurfaceMesh all;
-    for (const core::SurfaceMesh& p : pieces) {
-        const uint32_t base = uint32_t(all.positions.size());
-        all.positions.insert(all.positions.end(), p.positions.begin(), p.positions.end());
-        all.normals.insert(all.normals.end(), p.normals.begin(), p.normals.end());
-        for (const glm::uvec3& t : p.triangles) all.triangles.push_back(t + base);
-        all.fields.resize(p.fields.size());
-        for (size_t f = 0; f < p.fields.size(); ++f) {
-            all.fields[f].name = p.fields[f].name;
-            all.fields[f].values.insert(all.fields[f].values.end(), p.fields[f].values.begin(), p.fields[f].values.end());
-        }
-    }
+    core::SurfaceMesh all = pieces.front();
+    for (size_t i = 1; i < pieces.size(); ++i) core::appendMesh(all, pieces[i]);
     return all;
 }
 

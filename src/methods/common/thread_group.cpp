@@ -1,6 +1,7 @@
 #include "methods/common/thread_group.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace flowsurf::methods {
 
@@ -44,7 +45,7 @@ std::vector<std::vector<uint8_t>> ThreadGroup::Member::exchange(const std::vecto
     g_.sync_.arrive_and_wait();
     std::vector<std::vector<uint8_t>> received(size_t(g_.n_));
     for (int q = 0; q < g_.n_; ++q)
-        if (q != rank_) received[size_t(q)] = g_.messages_[size_t(q)][size_t(rank_)];
+        if (q != rank_) received[size_t(q)] = std::move(g_.messages_[size_t(q)][size_t(rank_)]);  // read by this rank only
     g_.sync_.arrive_and_wait();
     return received;
 }
