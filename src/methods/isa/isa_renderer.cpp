@@ -124,10 +124,12 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
     const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
     const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi, tiled);
+    // Tiles: the vertices this tile's pixels interpolate, the only ones it reads.
+    const std::optional<PixelRect> vertices = tiled ? std::optional(meshVertices(tiles_->tile())) : std::nullopt;
     const auto computeMesh = [&] {
         advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
                                in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
-                               params_.isa.edgeEpsilon);
+                               params_.isa.edgeEpsilon, vertices);
     };
     computeMesh();
     if (tiled) {
@@ -184,17 +186,23 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     tiles_->returnValues(*in.group, flow_.texture(target));
 }
 
+// The advection mesh's vertices [x0, x1) x [y0, y1) that the pixels of `tile` interpolate.
+PixelRect IsaRenderer::meshVertices(const PixelRect& tile) const {
+    if (tile.empty()) return {};
+    const int r = params_.isa.gridRes, w = viewport_.width, h = viewport_.height;
+    return {std::clamp(tile.x0 * r / w, 0, r), std::clamp(tile.y0 * r / h, 0, r),
+            std::clamp((tile.x1 * r + w - 1) / w + 1, 0, r) + 1, std::clamp((tile.y1 * r + h - 1) / h + 1, 0, r) + 1};
+}
+
 // Where the pixels of `tile` read the source F_a: the box of the advection mesh's source
 // coordinates over the vertices the tile's pixels interpolate, plus the bicubic's reach.
 PixelRect IsaRenderer::footprint(const PixelRect& tile) const {
-    if (tile.empty()) return {};
-    const int r = params_.isa.gridRes, w = viewport_.width, h = viewport_.height;
-    const int i0 = std::clamp(tile.x0 * r / w, 0, r), i1 = std::clamp((tile.x1 * r + w - 1) / w + 1, 0, r);
-    const int j0 = std::clamp(tile.y0 * r / h, 0, r), j1 = std::clamp((tile.y1 * r + h - 1) / h + 1, 0, r);
-    const int nx = i1 - i0 + 1, ny = j1 - j0 + 1;
-    std::vector<glm::vec4> v(size_t(nx) * size_t(ny));
+    const PixelRect m = meshVertices(tile);
+    if (m.empty()) return {};
+    const int w = viewport_.width, h = viewport_.height;
+    std::vector<glm::vec4> v(m.area());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureSubImage(advectionMesh_.vertices().id(), 0, i0, j0, 0, nx, ny, 1, GL_RGBA, GL_FLOAT,
+    glGetTextureSubImage(advectionMesh_.vertices().id(), 0, m.x0, m.y0, 0, m.width(), m.height(), 1, GL_RGBA, GL_FLOAT,
                          GLsizei(v.size() * sizeof(glm::vec4)), v.data());
     glm::vec2 lo{float(w), float(h)}, hi{0.0f, 0.0f};
     for (const glm::vec4& p : v) {

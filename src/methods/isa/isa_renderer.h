@@ -13,6 +13,7 @@
 #include "methods/common/surface_gbuffer.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace flowsurf::methods::isa {
@@ -74,6 +75,7 @@ private:
     std::vector<PixelRect> madeWith_[2];
     std::vector<PixelRect> depthMadeWith_[3];  // of mergedDepth_[0], [1] and frozenDepth_
     PixelRect footprint_;
+    PixelRect meshVertices(const PixelRect& tile) const;
     PixelRect footprint(const PixelRect& tile) const;
     int guardPx() const;
 };
