@@ -33,6 +33,8 @@ ap.add_argument('--methods', default='hybrid,isa,ibfvs')
 ap.add_argument('--parallel', default='tiles', help="FlowSurfParallel: tiles or replicate")
 ap.add_argument('--frames', type=int, default=9)
 ap.add_argument('--azimuth', type=float, default=0.5)
+ap.add_argument('--fxaa', choices=['default', 'on', 'off'], default='default',
+                help="the view's FXAA: ParaView's setting (on in 5.11), or forced on or off")
 args = ap.parse_args()
 
 LoadPlugin(args.plugin, ns=globals())
@@ -67,6 +69,8 @@ try:
 except AttributeError:
     pass
 view.Background = [0, 0, 0]
+if args.fxaa != 'default':
+    view.UseFXAA = int(args.fxaa == 'on')
 rep = Show(surface, view)
 rep.DiffuseColor = [1, 1, 1]
 rep.Ambient, rep.Diffuse, rep.Specular = 1.0, 0.0, 0.0
@@ -83,7 +87,7 @@ camera = view.GetActiveCamera()
 pixel = vtkUnsignedCharArray()
 
 results = {'ranks': NRANKS, 'triangles': ntri, 'size': [W, H], 'parallel': args.parallel,
-           'frames': args.frames, 'azimuth_deg': args.azimuth, 'methods': {}}
+           'frames': args.frames, 'azimuth_deg': args.azimuth, 'fxaa': int(view.UseFXAA), 'methods': {}}
 
 
 def timed_renders():

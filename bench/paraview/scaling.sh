@@ -4,7 +4,7 @@
 # each rank bound to its own core; the machine's own two-process speedup first.
 #
 #   bench/paraview/scaling.sh [--triangles 1000000] [--size 1024x1024] [--rounds 5]
-#       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8]
+#       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8] [--fxaa default|on|off]
 #
 # Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
 # machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
@@ -24,6 +24,7 @@ FRAMES=9
 METHODS=hybrid,isa,ibfvs
 OUT="$ROOT/out/paraview_scaling"
 STATS_RANKS=""
+FXAA=default
 while [ $# -gt 0 ]; do
   case "$1" in
     --triangles) TRIANGLES=$2; shift 2 ;;
@@ -33,6 +34,7 @@ while [ $# -gt 0 ]; do
     --methods) METHODS=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --ranks-stats) STATS_RANKS=$2; shift 2 ;;
+    --fxaa) FXAA=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -81,7 +83,7 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
     setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24" \
       timeout -k 10 "${BENCH_TIMEOUT:-900}" "$@" -np "$np" \
       pvbatch --force-offscreen-rendering "$HERE/scaling.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$dir" \
-      --triangles "$TRIANGLES" --size "$SIZE" --methods "$METHODS" --parallel "$mode" --frames "$FRAMES" \
+      --triangles "$TRIANGLES" --size "$SIZE" --methods "$METHODS" --parallel "$mode" --frames "$FRAMES" --fxaa "$FXAA" \
       >"$dir/pvbatch.log" 2>&1 &
     pid=$!
     # ParaView's own start-up hang (rank 0 in IceT's MPI_Comm_dup inside the first Render,

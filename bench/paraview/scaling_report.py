@@ -45,8 +45,9 @@ if first:
     print('# FlowSurf on ParaView\'s engine: 1 and 2 ranks, tiles and replicate\n')
     print('Machine and run: %s. %d triangles, %dx%d, camera turning %.1f deg per render, %d timed renders per '
           'method and run; one llvmpipe thread per rank, each rank bound to its own core (`--bind-to core`). '
-          '%s\n' % ('; '.join(info), first['triangles'], first['size'][0], first['size'][1], first['azimuth_deg'],
-                    first['frames'], cal.strip()))
+          'The view\'s FXAA %s. %s\n' % ('; '.join(info), first['triangles'], first['size'][0], first['size'][1],
+                                         first['azimuth_deg'], first['frames'],
+                                         {1: 'on', 0: 'off'}.get(first.get('fxaa'), 'not recorded'), cal.strip()))
     bar = 1.7 if first['triangles'] >= 9_500_000 else 1.6  # the issue's: 1.6 at 1M, 1.7 at 10M
     print('Bar for 2 ranks: %.1f x min(1, S_hw / 1.9) = **%.2f**.\n' % (bar, bar * scale))
     print('| method | 1 rank ms | 2 ranks tiles ms | speedup tiles | 2 ranks replicate ms | speedup replicate | '
