@@ -10,6 +10,7 @@
 #include "gl/readback.h"
 #include "gl_test_util.h"
 #include "methods/common/process_group.h"
+#include "methods/common/screen_split.h"
 #include "methods/make_renderer.h"
 #include "session/options/options.h"
 #include "session/playback.h"
@@ -340,6 +341,41 @@ TEST(ScreenSplit, MeasuredCostsMoveTheCut) {
     // Per cell 30/64 ms left of x = 128, 10/64 right of it: even at 5.33 cells, the cut at 5.
     EXPECT_EQ(again[0].x1, 80);
     EXPECT_EQ(again[1].x0, 80);
+}
+
+}  // namespace
+
+namespace {
+
+// The pixels a piece can cover, from boxes around its triangles (surfaceParts): every
+// vertex's pixel inside, from cameras all round, and on a sphere well inside its box's
+// rectangle (that is what the surface passes, the exchange and the composite then skip).
+TEST(ScreenSplit, PartsHoldEveryTriangleTighterThanTheBox) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere:20000");
+    const core::SurfaceMesh half = core::pieceOf(data.steps[0].mesh, [](glm::vec3 c) { return c.x < 0.1f; });
+    const core::Viewport vp{320, 240};
+    for (const core::SurfaceMesh* mesh : {&data.steps[0].mesh, &half}) {
+        const std::vector<core::Bounds> parts = methods::surfaceParts(*mesh);
+        ASSERT_FALSE(parts.empty());
+        double partsArea = 0, boxArea = 0;
+        for (int k = 0; k < 12; ++k) {
+            const float a = glm::radians(30.0f * float(k));
+            const core::Camera cam =
+                core::fitCamera(data.bounds(), vp, {std::cos(a), std::sin(a), k % 3 == 0 ? 0.8f : -0.4f});
+            const glm::mat4 viewProj = cam.viewProjection(vp.aspect());
+            const methods::PixelRect r = methods::projectedRect(parts, viewProj, vp.width, vp.height);
+            for (const glm::vec3& p : mesh->positions) {
+                const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+                const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(vp.width, vp.height);
+                ASSERT_TRUE(px.x >= float(r.x0) && px.x <= float(r.x1) && px.y >= float(r.y0) && px.y <= float(r.y1))
+                    << "camera " << k << ": a vertex at (" << px.x << ", " << px.y << ") outside the parts' rectangle";
+            }
+            partsArea += double(r.area());
+            boxArea += double(methods::projectedRect(mesh->bounds(), viewProj, vp.width, vp.height).area());
+        }
+        std::printf("%zu parts: %.2f of the box's rectangle\n", parts.size(), partsArea / boxArea);
+        EXPECT_LT(partsArea, 0.85 * boxArea);
+    }
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ bool tiledParallel(const FrameInput& in, const CommonParams& params) {
 
 std::optional<PixelRect> piecePixels(const FrameInput& in, const CommonParams& params, const core::Viewport& viewport) {
     if (!tiledParallel(in, params)) return std::nullopt;
-    return projectedRect(in.surface->pieceBounds(), in.camera.viewProjection(viewport.aspect()), viewport.width,
+    return projectedRect(in.surface->pieceParts(), in.camera.viewProjection(viewport.aspect()), viewport.width,
                          viewport.height);
 }
 

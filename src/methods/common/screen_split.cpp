@@ -69,6 +69,38 @@ PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, i
         .intersect(all);
 }
 
+std::vector<core::Bounds> surfaceParts(const core::SurfaceMesh& mesh, int cells) {
+    const core::Bounds whole = mesh.bounds();
+    if (!whole.valid() || mesh.triangles.empty()) return {};
+    const glm::vec3 size = whole.hi - whole.lo;
+    const glm::vec3 scale = glm::vec3(float(cells)) / glm::max(size, glm::vec3(1e-30f));
+    std::vector<core::Bounds> parts(size_t(cells) * size_t(cells) * size_t(cells));
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
+        const glm::ivec3 cell = glm::clamp(glm::ivec3(((a + b + c) / 3.0f - whole.lo) * scale), 0, cells - 1);
+        core::Bounds& part = parts[(size_t(cell.z) * size_t(cells) + size_t(cell.y)) * size_t(cells) + size_t(cell.x)];
+        part.extend(a);
+        part.extend(b);
+        part.extend(c);
+    }
+    std::erase_if(parts, [](const core::Bounds& b) { return !b.valid(); });
+    return parts;
+}
+
+PixelRect projectedRect(std::span<const core::Bounds> parts, const glm::mat4& viewProj, int width, int height) {
+    PixelRect all;
+    bool any = false;
+    for (const core::Bounds& part : parts) {
+        const PixelRect r = projectedRect(part, viewProj, width, height);
+        if (r.empty()) continue;
+        all = any ? PixelRect{std::min(all.x0, r.x0), std::min(all.y0, r.y0), std::max(all.x1, r.x1),
+                              std::max(all.y1, r.y1)}
+                  : r;
+        any = true;
+    }
+    return all;
+}
+
 std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,
                                const std::vector<PixelRect>& tiles, std::span<const float> ms) {
     if (tiles.size() != ms.size()) throw GlError("costWeights: one cost per tile");

@@ -34,6 +34,16 @@ struct PixelRect {
 // lies behind the eye; empty for empty bounds. What a process's piece can draw.
 PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height);
 
+// Boxes that together hold every triangle of `mesh`: the triangles grouped by the cell of a
+// cells^3 grid over the mesh's bounds that holds their centroid, one box around each group's
+// vertices. Their projections' union (below) hugs a curved surface's outline where its own
+// box's projection does not: a sphere seen from 37 degrees above fills 58 % of its box's
+// rectangle, 86 % of the parts' rectangle at 8^3 cells.
+std::vector<core::Bounds> surfaceParts(const core::SurfaceMesh& mesh, int cells = 8);
+
+// The union of projectedRect over `parts`: the pixels their triangles can cover.
+PixelRect projectedRect(std::span<const core::Bounds> parts, const glm::mat4& viewProj, int width, int height);
+
 // `parts` rectangles that together cover width x height, of about equal weight: the
 // weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut
 // recursively across the longer side at the cell boundary nearest the weight's share.

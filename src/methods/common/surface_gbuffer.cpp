@@ -51,7 +51,7 @@ glm::vec4 layerDepthRow(const core::Camera& camera) {
 }
 
 PixelRect SurfaceGBuffer::beginFootprint(const SurfaceGpu& surface, const glm::mat4& viewProj) {
-    footprint_ = projectedRect(surface.pieceBounds(), viewProj, viewport_.width, viewport_.height);
+    footprint_ = projectedRect(surface.pieceParts(), viewProj, viewport_.width, viewport_.height);
     PixelRect clear = lastFootprint_;
     if (clear.empty()) clear = footprint_;
     else if (!footprint_.empty())

@@ -2,6 +2,7 @@
 
 #include "core/derived_fields.h"
 #include "core/errors.h"
+#include "methods/common/screen_split.h"
 #include "methods/common/shader_interface.h"
 
 #include <algorithm>
@@ -276,6 +277,7 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
     pieceBounds_ = mesh.bounds();
+    pieceParts_ = surfaceParts(mesh);
     positionSamples_.clear();
     const size_t stride = std::max<size_t>(1, (mesh.vertexCount() + kPositionSamples - 1) / kPositionSamples);
     for (size_t i = 0; i < mesh.vertexCount(); i += stride) positionSamples_.push_back(mesh.positions[i]);

@@ -9,6 +9,7 @@
 #include "methods/common/piece_seams.h"
 #include "methods/common/process_group.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -129,6 +130,9 @@ public:
     const core::Bounds& bounds() const { return bounds_; }
     // This mesh's own bounds (bounds() is the whole surface's when this is a piece).
     const core::Bounds& pieceBounds() const { return pieceBounds_; }
+    // Boxes around this mesh's triangles (surfaceParts): what projects to the pixels it can
+    // cover, tighter than pieceBounds().
+    std::span<const core::Bounds> pieceParts() const { return pieceParts_; }
     // Up to kPositionSamples vertex positions spread over the mesh (every n-th): where the
     // surface is when the bounds say too little (a camera inside them, dtForStep).
     static constexpr size_t kPositionSamples = 4096;
@@ -157,6 +161,7 @@ private:
     std::string colorName_;
     bool lineField_ = false;
     core::Bounds bounds_, pieceBounds_;
+    std::vector<core::Bounds> pieceParts_;
     std::vector<glm::vec3> positionSamples_;
     uint64_t generation_ = 0;
 };

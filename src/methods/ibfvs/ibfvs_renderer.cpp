@@ -28,7 +28,7 @@ void IbfvsRenderer::pullSource(const FrameInput& in, const core::Camera& sourceC
     // screen), twice for safety, and the bicubic's reach.
     timer_.begin(stageName(Stage::TileExchange));
     const int margin = int(std::ceil(2.0f * params_.common.stepPx)) + 3;
-    const PixelRect wanted = projectedRect(in.surface->pieceBounds(), sourceCamera.viewProjection(viewport_.aspect()),
+    const PixelRect wanted = projectedRect(in.surface->pieceParts(), sourceCamera.viewProjection(viewport_.aspect()),
                                            viewport_.width, viewport_.height)
                                  .grown(margin)
                                  .intersect({0, 0, viewport_.width, viewport_.height});

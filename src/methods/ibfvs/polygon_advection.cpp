@@ -113,7 +113,7 @@ void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm:
                                            const core::Viewport& viewport, bool cullBackFaces) {
     if (!visibility_) visibility_ = std::make_unique<VisibilityBuffer>(viewport);
     // Cleared where this or the last surface can be (elsewhere it holds no triangle already).
-    footprint_ = projectedRect(surface.pieceBounds(), viewProj, viewport.width, viewport.height);
+    footprint_ = projectedRect(surface.pieceParts(), viewProj, viewport.width, viewport.height);
     PixelRect clear = lastFootprint_.empty() ? footprint_ : lastFootprint_;
     if (!footprint_.empty())
         clear = {std::min(clear.x0, footprint_.x0), std::min(clear.y0, footprint_.y0),

@@ -48,6 +48,7 @@ struct vtkFlowSurfMapper::Internals
   std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by the steps
   bool haveMesh = false;
   PieceSteps steps;
+  std::vector<fs::core::Bounds> pieceParts;  // boxes around steps.mesh's triangles (surfaceParts)
   std::unique_ptr<fs::session::Playback> playback;  // the frame loop of every front end
   std::optional<double> lastTime;
   fs::core::Camera lastCamera;
@@ -273,6 +274,7 @@ bool vtkFlowSurfMapper::Internals::updateSurface(vtkDataObject* input)
     throw fs::FieldError(error);
   }
   steps.mesh = std::move(mesh);
+  pieceParts = fs::methods::surfaceParts(steps.mesh);
   haveMesh = input != nullptr;
   dataTime = input ? input->GetMTime() : 0;
   dataVectors = vectors;
@@ -384,8 +386,8 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   lastCamera = camera;
 
   // (4) composite into ParaView's framebuffer by depth, only where this piece can be
-  const fs::methods::PixelRect piece = fs::methods::projectedRect(
-    steps.mesh.bounds(), lastCamera.viewProjection(float(w) / float(h)), w, h);
+  const fs::methods::PixelRect piece =
+    fs::methods::projectedRect(pieceParts, lastCamera.viewProjection(float(w) / float(h)), w, h);
   composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
     options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
 }
