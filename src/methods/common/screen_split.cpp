@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace flowsurf::methods {
@@ -50,55 +51,61 @@ void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int 
 
 }  // namespace
 
-PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height) {
-    const PixelRect all{0, 0, width, height};
-    if (!bounds.valid()) return {};
+namespace {
+
+// The rectangle around `bounds`' projection, a pixel wider on each side, its coordinates
+// clamped to just beyond the image but not cut to it (so that a union of several keeps the
+// reach of a part outside the image); nullopt when a corner lies behind the eye.
+std::optional<PixelRect> projectedSpan(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height) {
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (int c = 0; c < 8; ++c) {
         const glm::vec3 p((c & 1) ? bounds.hi.x : bounds.lo.x, (c & 2) ? bounds.hi.y : bounds.lo.y,
                           (c & 4) ? bounds.hi.z : bounds.lo.z);
         const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
-        if (!(clip.w > 1e-6f)) return all;
+        if (!(clip.w > 1e-6f)) return std::nullopt;
         const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
         lo = glm::min(lo, px);
         hi = glm::max(hi, px);
     }
     const auto floorTo = [](float v, int limit) { return int(std::clamp(std::floor(v), -1.0f, float(limit) + 1.0f)); };
     return PixelRect{floorTo(lo.x, width) - 1, floorTo(lo.y, height) - 1, floorTo(hi.x, width) + 2,
-                     floorTo(hi.y, height) + 2}
-        .intersect(all);
+                     floorTo(hi.y, height) + 2};
+}
+
+}  // namespace
+
+PixelRect projectedRect(const core::Bounds& bounds, const glm::mat4& viewProj, int width, int height) {
+    const PixelRect all{0, 0, width, height};
+    if (!bounds.valid()) return {};
+    const std::optional<PixelRect> span = projectedSpan(bounds, viewProj, width, height);
+    return span ? span->intersect(all) : all;
 }
 
 std::vector<core::Bounds> surfaceParts(const core::SurfaceMesh& mesh, int cells) {
     const core::Bounds whole = mesh.bounds();
     if (!whole.valid() || mesh.triangles.empty()) return {};
-    const glm::vec3 size = whole.hi - whole.lo;
-    const glm::vec3 scale = glm::vec3(float(cells)) / glm::max(size, glm::vec3(1e-30f));
+    const glm::vec3 scale = glm::vec3(float(cells)) / glm::max(whole.hi - whole.lo, glm::vec3(1e-30f));
     std::vector<core::Bounds> parts(size_t(cells) * size_t(cells) * size_t(cells));
-    for (const glm::uvec3& t : mesh.triangles) {
-        const glm::vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
-        const glm::ivec3 cell = glm::clamp(glm::ivec3(((a + b + c) / 3.0f - whole.lo) * scale), 0, cells - 1);
-        core::Bounds& part = parts[(size_t(cell.z) * size_t(cells) + size_t(cell.y)) * size_t(cells) + size_t(cell.x)];
-        part.extend(a);
-        part.extend(b);
-        part.extend(c);
+    for (const glm::vec3& p : mesh.positions) {
+        const glm::ivec3 cell = glm::clamp(glm::ivec3((p - whole.lo) * scale), 0, cells - 1);
+        parts[(size_t(cell.z) * size_t(cells) + size_t(cell.y)) * size_t(cells) + size_t(cell.x)].extend(p);
     }
     std::erase_if(parts, [](const core::Bounds& b) { return !b.valid(); });
     return parts;
 }
 
 PixelRect projectedRect(std::span<const core::Bounds> parts, const glm::mat4& viewProj, int width, int height) {
-    PixelRect all;
-    bool any = false;
+    const PixelRect all{0, 0, width, height};
+    std::optional<PixelRect> span;
     for (const core::Bounds& part : parts) {
-        const PixelRect r = projectedRect(part, viewProj, width, height);
-        if (r.empty()) continue;
-        all = any ? PixelRect{std::min(all.x0, r.x0), std::min(all.y0, r.y0), std::max(all.x1, r.x1),
-                              std::max(all.y1, r.y1)}
-                  : r;
-        any = true;
+        if (!part.valid()) continue;
+        const std::optional<PixelRect> r = projectedSpan(part, viewProj, width, height);
+        if (!r) return all;
+        span = span ? PixelRect{std::min(span->x0, r->x0), std::min(span->y0, r->y0), std::max(span->x1, r->x1),
+                                std::max(span->y1, r->y1)}
+                    : *r;
     }
-    return all;
+    return span ? span->intersect(all) : PixelRect{};
 }
 
 std::vector<float> costWeights(std::span<const float> weights, int cellsX, int cellPx,

@@ -130,7 +130,7 @@ public:
     const core::Bounds& bounds() const { return bounds_; }
     // This mesh's own bounds (bounds() is the whole surface's when this is a piece).
     const core::Bounds& pieceBounds() const { return pieceBounds_; }
-    // Boxes around this mesh's triangles (surfaceParts): what projects to the pixels it can
+    // Boxes around this mesh's vertices (surfaceParts): what projects to the pixels it can
     // cover, tighter than pieceBounds().
     std::span<const core::Bounds> pieceParts() const { return pieceParts_; }
     // Up to kPositionSamples vertex positions spread over the mesh (every n-th): where the

@@ -48,7 +48,7 @@ struct vtkFlowSurfMapper::Internals
   std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by the steps
   bool haveMesh = false;
   PieceSteps steps;
-  std::vector<fs::core::Bounds> pieceParts;  // boxes around steps.mesh's triangles (surfaceParts)
+  std::vector<fs::core::Bounds> pieceParts;  // boxes around steps.mesh's vertices (surfaceParts)
   std::unique_ptr<fs::session::Playback> playback;  // the frame loop of every front end
   std::optional<double> lastTime;
   fs::core::Camera lastCamera;
