@@ -26,6 +26,8 @@ public:
     const methods::SurfaceGpu& at(int frame) { return atTime(mapping_.at(frame)); }
     // The surface at data time t (the viewer's clock runs apart from the frame count).
     const methods::SurfaceGpu& atTime(double t);
+    // The surface last uploaded (what the last frame drew); null before the first upload.
+    const methods::SurfaceGpu* current() const { return surface_.get(); }
     // For methods that integrate through time (the hybrid's pathlines, [W §3]): the field
     // around frame k's data time, over the particles' time window (--trace-dt per step,
     // default the data time per frame; --filter-length steps). Null for steady data.

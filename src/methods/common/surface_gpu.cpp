@@ -276,7 +276,6 @@ std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const s
     }
     maxSpeed_ = st.maxSpeed;
     bounds_ = st.bounds;
-    pieceBounds_ = mesh.bounds();
     pieceParts_ = surfaceParts(mesh);
     positionSamples_.clear();
     const size_t stride = std::max<size_t>(1, (mesh.vertexCount() + kPositionSamples - 1) / kPositionSamples);

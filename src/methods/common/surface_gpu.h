@@ -128,10 +128,8 @@ public:
     // The field is a line field (principal directions): its sign carries no meaning.
     bool lineField() const { return lineField_; }
     const core::Bounds& bounds() const { return bounds_; }
-    // This mesh's own bounds (bounds() is the whole surface's when this is a piece).
-    const core::Bounds& pieceBounds() const { return pieceBounds_; }
-    // Boxes around this mesh's vertices (surfaceParts): what projects to the pixels it can
-    // cover, tighter than pieceBounds().
+    // Boxes around this mesh's own vertices (surfaceParts; bounds() is the whole surface's
+    // when this is a piece): what projects to the pixels it can cover.
     std::span<const core::Bounds> pieceParts() const { return pieceParts_; }
     // Up to kPositionSamples vertex positions spread over the mesh (every n-th): where the
     // surface is when the bounds say too little (a camera inside them, dtForStep).
@@ -160,7 +158,7 @@ private:
     glm::vec2 colorDataRange_{1.0f, 0.0f};
     std::string colorName_;
     bool lineField_ = false;
-    core::Bounds bounds_, pieceBounds_;
+    core::Bounds bounds_;
     std::vector<core::Bounds> pieceParts_;
     std::vector<glm::vec3> positionSamples_;
     uint64_t generation_ = 0;

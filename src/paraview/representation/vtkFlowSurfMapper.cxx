@@ -48,7 +48,6 @@ struct vtkFlowSurfMapper::Internals
   std::optional<fs::paraview::ColorSource> dataColor;  // the colour array carried by the steps
   bool haveMesh = false;
   PieceSteps steps;
-  std::vector<fs::core::Bounds> pieceParts;  // boxes around steps.mesh's vertices (surfaceParts)
   std::unique_ptr<fs::session::Playback> playback;  // the frame loop of every front end
   std::optional<double> lastTime;
   fs::core::Camera lastCamera;
@@ -274,7 +273,6 @@ bool vtkFlowSurfMapper::Internals::updateSurface(vtkDataObject* input)
     throw fs::FieldError(error);
   }
   steps.mesh = std::move(mesh);
-  pieceParts = fs::methods::surfaceParts(steps.mesh);
   haveMesh = input != nullptr;
   dataTime = input ? input->GetMTime() : 0;
   dataVectors = vectors;
@@ -386,8 +384,10 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   lastCamera = camera;
 
   // (4) composite into ParaView's framebuffer by depth, only where this piece can be
-  const fs::methods::PixelRect piece =
-    fs::methods::projectedRect(pieceParts, lastCamera.viewProjection(float(w) / float(h)), w, h);
+  const fs::methods::SurfaceGpu* drawn = playback->surface().current();
+  const fs::methods::PixelRect piece = drawn
+    ? fs::methods::projectedRect(drawn->pieceParts(), lastCamera.viewProjection(float(w) / float(h)), w, h)
+    : fs::methods::PixelRect{};
   composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
     options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
 }
