@@ -120,3 +120,34 @@ if stats:
                 name, method, len(cpu), total_cpu / b_cpu, total_own / b_own,
                 max(cpu.values()) / (total_cpu / len(cpu)), max(own.values()) / (total_own / len(own)),
                 max(sent) / 1e6 if sent else 0))
+
+    # Where the extra work goes: each stage's CPU time summed over the ranks (medians per rank),
+    # against the same stage at one rank; "other": the frame loop outside the timed stages.
+    staged = {}
+    for d in stats:
+        rows = []
+        for f in glob.glob(os.path.join(d, 'rank*.jsonl')):
+            rows += [json.loads(line) for line in open(f)]
+        rows = [r for r in rows if not r['warmup'] and r.get('stages_cpu_ms')]
+        for r in rows:
+            r['stages_cpu_ms']['other'] = r['cpu_ms'] - sum(r['stages_cpu_ms'].values())
+        for method in {r['method'] for r in rows}:
+            per = {}
+            for r in rows:
+                if r['method'] == method:
+                    for stage, ms in r['stages_cpu_ms'].items():
+                        per.setdefault(stage, {}).setdefault(r['rank'], []).append(ms)
+            staged.setdefault(method, {})[os.path.basename(d)] = {
+                stage: sum(statistics.median(v) for v in ranks.values()) for stage, ranks in per.items()}
+    if staged:
+        print('\nEach stage\'s CPU ms per render summed over the ranks (synchronous stage timing, medians per rank):\n')
+        for method in sorted(staged):
+            runs_ = [n for n in sorted(staged[method]) if n == 'np1' or n.endswith('tiles')]
+            stages_ = []
+            for n in runs_:
+                stages_ += [s for s in staged[method][n] if s not in stages_]
+            print('| %s | %s |' % (method, ' | '.join(runs_)))
+            print('|---|%s' % ('---:|' * len(runs_)))
+            for s in stages_:
+                print('| %s | %s |' % (s, ' | '.join('%.1f' % staged[method][n].get(s, 0.0) for n in runs_)))
+            print('| **total** | %s |\n' % ' | '.join('%.1f' % sum(staged[method][n].values()) for n in runs_))

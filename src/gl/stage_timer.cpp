@@ -20,6 +20,7 @@ void StageTimer::beginFrame() {
         glFinish();
         stage_.clear();
         since_ = Clock::now();
+        cpuSince_ = std::clock();
         return;
     }
     recycle(current_);  // a frame that never ended (an exception mid-frame)
@@ -48,9 +49,14 @@ void StageTimer::mark(const char* stage) {
     if (!queries_) {
         glFinish();
         const auto now = Clock::now();
-        if (!stage_.empty()) add(stage_, std::chrono::duration<double, std::milli>(now - since_).count());
+        const std::clock_t cpu = std::clock();
+        if (!stage_.empty()) {
+            add(stage_, std::chrono::duration<double, std::milli>(now - since_).count());
+            totalCpuMs_[stage_] += double(cpu - cpuSince_) * 1e3 / CLOCKS_PER_SEC;
+        }
         stage_ = stage;
         since_ = now;
+        cpuSince_ = cpu;
         return;
     }
     Mark m{stage, {}};
@@ -102,11 +108,22 @@ std::vector<std::pair<std::string, double>> StageTimer::meanMs(bool waitForGpu) 
     return out;
 }
 
+std::vector<std::pair<std::string, double>> StageTimer::meanCpuMs() const {
+    std::vector<std::pair<std::string, double>> out;
+    if (queries_ != 0) return out;
+    for (const auto& n : order_) {
+        const auto it = totalCpuMs_.find(n);
+        out.emplace_back(n, frames_ && it != totalCpuMs_.end() ? it->second / frames_ : 0.0);
+    }
+    return out;
+}
+
 void StageTimer::reset() {
     for (auto& marks : pending_) recycle(marks);
     pending_.clear();
     order_.clear();
     totalMs_.clear();
+    totalCpuMs_.clear();
     frames_ = 0;
 }
 

@@ -9,6 +9,7 @@
 #include "gl/objects.h"
 
 #include <chrono>
+#include <ctime>
 #include <deque>
 #include <map>
 #include <string>
@@ -38,6 +39,9 @@ public:
     // the frames whose timestamps are in so far). The context must be current, as for every
     // call here.
     std::vector<std::pair<std::string, double>> meanMs(bool waitForGpu = true) const;
+    // Synchronous mode only (else empty): the process's CPU time per stage (std::clock: every
+    // thread of the process, a software renderer's included), mean ms per frame as meanMs().
+    std::vector<std::pair<std::string, double>> meanCpuMs() const;
     void reset();
 
 private:
@@ -66,10 +70,12 @@ private:
     mutable std::vector<Query> free_;
     mutable std::vector<std::string> order_;
     mutable std::map<std::string, double> totalMs_;
+    std::map<std::string, double> totalCpuMs_;
     mutable int frames_ = 0;
     // Fallback without timer queries.
     std::string stage_;
     Clock::time_point since_;
+    std::clock_t cpuSince_ = 0;
 };
 
 }  // namespace flowsurf::gl

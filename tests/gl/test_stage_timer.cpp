@@ -1,7 +1,8 @@
 // The stage timer (src/gl/stage_timer.h) with GL timestamp queries: what the benchmark,
 // the viewer's stats and the API report. Times themselves are never asserted; the
 // bookkeeping is: stages in first-seen order, frames still on the GPU folded in when asked,
-// reset() forgetting them, a timer that is off issuing nothing.
+// reset() forgetting them, a timer that is off issuing nothing, the synchronous mode
+// also charging each stage its CPU time.
 #include "gl/objects.h"
 #include "gl/stage_timer.h"
 
@@ -75,4 +76,20 @@ TEST_F(StageTimerTest, DisabledTimerReportsNothing) {
     gl::StageTimer t;
     frame(t, {"advect"});
     EXPECT_TRUE(t.meanMs().empty());
+}
+
+TEST_F(StageTimerTest, SynchronousTimerAlsoReportsEachStagesCpuTime) {
+    gl::StageTimer t;
+    t.setEnabled(true);
+    t.setSynchronous(true);
+    for (int k = 0; k < 3; ++k) frame(t, {"advect", "overlay"});
+    EXPECT_EQ(names(t.meanMs()), (std::vector<std::string>{"advect", "overlay"}));
+    EXPECT_EQ(names(t.meanCpuMs()), (std::vector<std::string>{"advect", "overlay"})) << "the same stages, in the same order";
+    t.reset();
+    EXPECT_TRUE(t.meanCpuMs().empty());
+
+    gl::StageTimer queries;  // timestamp queries measure the GPU's time, not the process's
+    queries.setEnabled(true);
+    frame(queries, {"advect"});
+    EXPECT_TRUE(queries.meanCpuMs().empty());
 }

@@ -50,6 +50,12 @@ void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, b
     stages[stage] = ms;
   }
   line["stages_ms"] = stages;
+  nlohmann::ordered_json stagesCpu = nlohmann::ordered_json::object();
+  for (const auto& [stage, ms] : method.timer().meanCpuMs())
+  {
+    stagesCpu[stage] = ms;
+  }
+  line["stages_cpu_ms"] = stagesCpu;
   if (const methods::DyeField* dye = playback.dye())
   {
     line["dye_voxels"] = dye->advectedVoxels();
