@@ -227,6 +227,42 @@ TEST_P(TiledParallel, CompositeEqualsTheOneProcessImage) {
     }
 }
 
+// Pieces one behind another (sectors of the sphere seen from the side, the visibility buffer):
+// each process drops its pixels that a nearer piece covers (VisibilityBuffer::dropOccluded),
+// so that together they show hardly more pixels than the one-process image has, where each
+// would otherwise show its own far side too; the composite is still exactly the one-process
+// image, the camera still and then orbiting.
+TEST_P(TiledParallel, PiecesBehindOthersDropTheirPixels) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere");
+    const core::SurfaceMesh& mesh = data.steps.front().mesh;
+    const core::Viewport vp{320, 256};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {1.0f, 0.3f, 0.2f});
+    const auto orbit = [cam](int k) { return core::orbitCamera(cam, 3.0f * float(std::max(0, k - 6))); };
+    methods::MethodParams params = test::testParams();
+    params.common.parallel = methods::ParallelMode::Tiles;
+    params.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    params.common.surfaceRaster = methods::SurfaceRaster::Compute;
+    const int frames = 12;
+    const Images one = renderWith(GetParam(), mesh, orbit, vp, frames, nullptr, params);
+    const std::vector<core::SurfaceMesh> pieces = sectors(mesh, 4, 0);
+    const std::vector<Images> own = inThreads(4, [&](methods::ProcessGroup& member, int r) {
+        return renderWith(GetParam(), pieces[size_t(r)], orbit, vp, frames, &member, params);
+    });
+    const auto covered = [](const Images& i) { return std::count_if(i.depth.begin(), i.depth.end(), [](float d) { return d < 1.0f; }); };
+    long shown = 0, farSides = 0;
+    for (const Images& i : own) shown += covered(i);
+    for (const core::SurfaceMesh& piece : pieces)  // each piece alone shows its far side too
+        farSides += covered(renderWith(GetParam(), piece, orbit, vp, 1, nullptr, params));
+    auto [mean, tile] = difference(one, depthComposite(own, vp), vp);
+    std::printf("%s tiles, 4 sectors from the side: mean %.3f, worst tile %.3f gray levels; pixels shown %ld, "
+                "one process %ld, the pieces each alone %ld\n",
+                GetParam().c_str(), mean, tile, shown, covered(one), farSides);
+    EXPECT_EQ(mean, 0.0);
+    EXPECT_EQ(tile, 0.0);
+    EXPECT_GT(farSides, 3 * covered(one) / 2) << "the scene must have pieces behind others";
+    EXPECT_LT(shown, 5 * covered(one) / 4) << "hidden pixels are dropped (all but those in partly covered cells)";
+}
+
 // The texture's contrast stretch in the tiles mode [issue 28]: the processes' tile
 // histograms summed over the group give every process the one-process range, so the
 // composite is again exactly the one-process image (2 and 4 processes, one of them empty),

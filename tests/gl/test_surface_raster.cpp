@@ -10,6 +10,7 @@
 #include "methods/common/surface_gpu.h"
 #include "methods/common/visibility_buffer.h"
 #include "methods/make_renderer.h"
+#include "parallel_util.h"
 #include "raster_tolerance.h"
 
 #include <gtest/gtest.h>
@@ -237,4 +238,67 @@ TEST(SurfaceRaster, WorkGroupGridCoversEveryGroup) {
         EXPECT_LE(g.x, c.maxX);
         EXPECT_GE(size_t(g.x) * g.y, c.groups);
     }
+}
+
+// Sort-last occlusion between pieces (VisibilityBuffer::dropOccluded, the tiled mode's
+// surface pass): a piece's pixels behind the screen cells another piece covers whole are
+// dropped (background in every buffer), the rest of it stays as it was, and the merge by depth
+// is the merge without the step; a piece at the very depth of another drops nothing (a tie is
+// the merge's to decide, by rank).
+TEST(SurfaceRaster, PixelsHiddenByAnotherPieceAreDropped) {
+    const core::Viewport vp{128, 128};
+    const core::Camera cam = test::orthoFront(2.2f);
+    const auto rectangle = [](float z, float size) {
+        core::SurfaceMesh m = core::makeRectangle({0.1f, 0, z}, {1, 0, 0}, {0, 1, 0}, size, size, 12, 12);
+        m.fields.push_back({"velocity", std::vector<glm::vec3>(m.positions.size(), glm::vec3(1, 0.3f, 0))});
+        return m;
+    };
+    struct PieceImages {
+        Buffers alone, inGroup;
+    };
+    const auto render = [&](const std::vector<core::SurfaceMesh>& pieces) {
+        std::vector<PieceImages> out(pieces.size());
+        test::inThreads(int(pieces.size()), [&](methods::ProcessGroup& group, int r) {
+            methods::SurfaceGpu surface(pieces[size_t(r)], "velocity");
+            methods::SurfaceGBuffer g(vp, true, false, true, methods::SurfaceRaster::Compute);
+            const auto read = [&] {
+                return Buffers{gl::readDepth(g.depth()), gl::readRgbaFloat(g.velocity()), gl::readRgbaFloat(g.shade()),
+                               gl::readRgbaFloat(g.position())};
+            };
+            g.render(surface, cam);
+            out[size_t(r)].alone = read();
+            g.render(surface, cam, &group);
+            out[size_t(r)].inGroup = read();
+            return test::Images{};
+        });
+        return out;
+    };
+
+    // A square in front of a larger one: 81 px a side, 116 px.
+    const std::vector<PieceImages> p = render({rectangle(0.5f, 1.4f), rectangle(-0.5f, 2.0f)});
+    const Buffers &front = p[0].alone, &back = p[1].alone;
+    EXPECT_EQ(p[0].inGroup.depth, front.depth) << "the nearer piece hides, loses nothing";
+    size_t hidden = 0, dropped = 0, kept = 0;
+    for (size_t i = 0; i < back.depth.size(); ++i) {
+        const bool behind = front.depth[i] < back.depth[i];
+        hidden += behind && back.depth[i] < 1.0f;
+        if (back.depth[i] < 1.0f && p[1].inGroup.depth[i] == 1.0f) {
+            ++dropped;
+            EXPECT_TRUE(behind) << "pixel " << i << " dropped with no nearer fragment of the other piece";
+            EXPECT_EQ(p[1].inGroup.velocity[4 * i + 3], 0.0f) << "a dropped pixel is background in the buffers";
+        } else if (back.depth[i] < 1.0f) {
+            ++kept;
+            EXPECT_EQ(p[1].inGroup.depth[i], back.depth[i]);
+            for (int c = 0; c < 4; ++c) EXPECT_EQ(p[1].inGroup.velocity[4 * i + c], back.velocity[4 * i + c]);
+        }
+    }
+    std::printf("back piece: %zu px behind the front one, %zu dropped, %zu kept\n", hidden, dropped, kept);
+    // Dropped: the cells the front square covers whole (its rim of cells aside).
+    const size_t cellPx = methods::kVisOccluderCellPx, wholeCells = 81 / cellPx - 1;
+    EXPECT_GT(hidden, 6000u);
+    EXPECT_GE(dropped, wholeCells * wholeCells * cellPx * cellPx);
+
+    // The same square twice, at one depth: nothing dropped on either side.
+    const std::vector<PieceImages> tie = render({rectangle(0.0f, 1.0f), rectangle(0.0f, 1.0f)});
+    for (size_t r = 0; r < tie.size(); ++r) EXPECT_EQ(tie[r].inGroup.depth, tie[r].alone.depth) << "piece " << r;
 }

@@ -86,6 +86,8 @@ inline constexpr BindingPoint kVisIndirect = storageBinding("VIS_INDIRECT_BINDIN
 inline constexpr BindingPoint kVisDeferred = storageBinding("VIS_DEFERRED_BINDING", 5);       // deferred triangles' indices
 inline constexpr BindingPoint kVisDeferredId = storageBinding("VIS_DEFERRED_ID_BINDING", 6);  // deferred triangles' ids
 inline constexpr BindingPoint kVisCovering = storageBinding("VIS_COVERING_BINDING", 7);       // triangles on a pixel centre
+// The occlusion step's cells (VisibilityBuffer::dropOccluded; it binds no indirect block).
+inline constexpr BindingPoint kVisOccluder = storageBinding("VIS_OCCLUDER_BINDING", 4);       // per cell: farthest depth (bits)
 // Contrast enhancement [issue 28] (common/contrast_*, percentile_range.*): the histogram
 // (an SSBO apart from the dye and visibility ones) and the stretch pass.
 inline constexpr BindingPoint kHistogram = storageBinding("HISTOGRAM_BINDING", 8);
@@ -113,7 +115,7 @@ inline constexpr BindingPoint kBindingPoints[] = {
     bindings::kDyeIndex, bindings::kDyeValue, bindings::kDyeBand, bindings::kDyeSource, bindings::kDyeDeparture,
     bindings::kDyeFlag, bindings::kDyeActive,
     bindings::kVisVertex, bindings::kVisTriangle, bindings::kVisDepth, bindings::kVisId, bindings::kVisIndirect,
-    bindings::kVisDeferred, bindings::kVisDeferredId, bindings::kVisCovering,
+    bindings::kVisDeferred, bindings::kVisDeferredId, bindings::kVisCovering, bindings::kVisOccluder,
     bindings::kHistogram, bindings::kContrastFlow, bindings::kContrastDepth, bindings::kContrastImage,
     bindings::kCompositeColor, bindings::kCompositeDepth, bindings::kCompositeShade, bindings::kCompositeTable,
 };

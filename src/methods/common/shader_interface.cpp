@@ -40,6 +40,7 @@ const std::string& shaderInterface() {
         s += enumDefines("EDGE_FILL", kEdgeFillNames);
         s += define("VERTEX_TEXELS", surface_vertex::kTexels);
         s += define("VIS_RASTER_GROUP", kVisRasterGroup);
+        s += define("VIS_OCCLUDER_CELL", kVisOccluderCellPx);
         s += define("PIXEL_GROUP", kPixelGroup);
         s += define("HISTOGRAM_BINS", PercentileRange::kBins);
         s += define("HISTOGRAM_TILE", PercentileRange::kTilePx);

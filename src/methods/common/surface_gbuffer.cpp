@@ -75,12 +75,13 @@ void SurfaceGBuffer::bindAndClear(const PixelRect& rect) {
     glDisable(GL_SCISSOR_TEST);
 }
 
-void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera) {
+void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders) {
     if (surface.vertexTexture() &&
         useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(), size_t(viewport_.width) * viewport_.height)) {
-        renderVisibility(surface, camera);
+        renderVisibility(surface, camera, occluders);
         return;
     }
+    if (occluders) VisibilityBuffer::joinOcclusion(*occluders, viewport_);
     bindAndClear(beginFootprint(surface, camera.projection(viewport_.aspect()) * camera.view()));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -104,7 +105,7 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glDisable(GL_CULL_FACE);
 }
 
-void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Camera& camera) {
+void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders) {
     if (!visibility_) {
         visibility_ = std::make_unique<VisibilityBuffer>(viewport_);
         resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_resolve.frag"}},
@@ -113,6 +114,7 @@ void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Cam
     const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     const PixelRect clear = beginFootprint(surface, viewProj);
     visibility_->rasterize(surface, viewProj, cullBackFaces_, clear);
+    if (occluders) visibility_->dropOccluded(*occluders, footprint_);
     bindAndClear(clear);
     if (footprint_.empty()) return;
     resolve_.use();

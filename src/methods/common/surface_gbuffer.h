@@ -38,7 +38,10 @@ public:
     // surface's triangle count.
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false,
                    bool clearBackground = true, SurfaceRaster raster = SurfaceRaster::Auto);
-    void render(const SurfaceGpu& surface, const core::Camera& camera);
+    // `occluders`: collective then, the other pieces of the group hide this one's pixels
+    // behind them (VisibilityBuffer::dropOccluded: every buffer holds the background there,
+    // as if those fragments had lost a merge by depth already); null: this piece alone.
+    void render(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders = nullptr);
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
     // The pixels the last render can have drawn (its surface's projected bounds); outside
@@ -52,7 +55,7 @@ public:
     const gl::Texture2D& position() const { return position_; }  // withPosition only
 
 private:
-    void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera);
+    void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders);
     // Binds the framebuffer; clears depth and what `clearBackground` says over `rect`.
     void bindAndClear(const PixelRect& rect);
     // This render's footprint, and what must be cleared: it and the last one's.

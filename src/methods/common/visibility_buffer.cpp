@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <vector>
 
 namespace flowsurf::methods {
 
@@ -15,6 +17,13 @@ constexpr uint32_t kNone = 0xffffffffu;
 // the deferred count, the covering count, the second pass's DispatchIndirectCommand (3).
 constexpr size_t kIndirectWords = 10;
 constexpr GLintptr kDispatchOffset = 7 * sizeof(uint32_t);
+// An occluder cell no piece covers whole: beyond every depth in [0, 1] (its bits too).
+constexpr float kNoOccluder = 2.0f;
+
+glm::ivec2 occluderCells(const core::Viewport& viewport) {
+    return {(viewport.width + kVisOccluderCellPx - 1) / kVisOccluderCellPx,
+            (viewport.height + kVisOccluderCellPx - 1) / kVisOccluderCellPx};
+}
 }  // namespace
 
 glm::uvec2 workGroupGrid(size_t groups, size_t maxX) {
@@ -31,6 +40,7 @@ VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
       compute_(program({{GL_COMPUTE_SHADER, "common/visibility_raster.comp"}})),
       glPass_(program({{GL_VERTEX_SHADER, "common/visibility_raster_gl.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_raster_gl.frag"}})),
       dispatch_(program({{GL_COMPUTE_SHADER, "common/visibility_dispatch.comp"}})),
+      occlusion_(program({{GL_COMPUTE_SHADER, "common/visibility_occlusion.comp"}})),
       deferredVao_(gl::VertexArray::create()),
       emptyVao_(gl::VertexArray::create()),
       noAttachments_(gl::Framebuffer::create()) {
@@ -139,6 +149,52 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     }
 
     glDisable(GL_CULL_FACE);
+}
+
+void VisibilityBuffer::joinOcclusion(ProcessGroup& group, const core::Viewport& viewport) {
+    const glm::ivec2 cells = occluderCells(viewport);
+    std::vector<float> none(size_t(cells.x) * size_t(cells.y), kNoOccluder);
+    group.minInPlace(none);
+}
+
+void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footprint) {
+    const glm::ivec2 cells = occluderCells(viewport_);
+    const size_t count = size_t(cells.x) * size_t(cells.y);
+    if (!occluders_) occluders_ = gl::Buffer(GLsizeiptr(count * sizeof(uint32_t)), nullptr);
+    const PixelRect fp = footprint.intersect({0, 0, viewport_.width, viewport_.height});
+    const int c = kVisOccluderCellPx;
+    const PixelRect cellRect = fp.empty() ? PixelRect{}
+                                          : PixelRect{fp.x0 / c, fp.y0 / c, (fp.x1 + c - 1) / c, (fp.y1 + c - 1) / c};
+    // (1) this piece's farthest depth per cell it covers whole (none elsewhere)
+    const uint32_t none = kNone;
+    glClearNamedBufferData(occluders_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisDepth, depth_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisId, ids_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisOccluder, occluders_.id());
+    occlusion_.use();
+    glUniform2i(occlusion_.uniform("uSize"), viewport_.width, viewport_.height);
+    glUniform1i(occlusion_.uniform("uCellsX"), cells.x);
+    const auto run = [&](int step, const PixelRect& r) {
+        if (r.empty()) return;
+        glUniform1i(occlusion_.uniform("uStep"), step);
+        glUniform4i(occlusion_.uniform("uRect"), r.x0, r.y0, r.x1, r.y1);
+        glDispatchCompute(GLuint((r.width() + kPixelGroup - 1) / kPixelGroup),
+                          GLuint((r.height() + kPixelGroup - 1) / kPixelGroup), 1);
+    };
+    run(0, cellRect);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> bits(count);
+    glGetNamedBufferSubData(occluders_.id(), 0, GLsizeiptr(count * sizeof(uint32_t)), bits.data());
+    // (2) the group's nearest of them per cell
+    std::vector<float> depth(count);
+    for (size_t i = 0; i < count; ++i) depth[i] = bits[i] == kNone ? kNoOccluder : std::bit_cast<float>(bits[i]);
+    group.minInPlace(depth);
+    for (size_t i = 0; i < count; ++i) bits[i] = std::bit_cast<uint32_t>(depth[i]);
+    glNamedBufferSubData(occluders_.id(), 0, GLsizeiptr(count * sizeof(uint32_t)), bits.data());
+    // (3) this piece's pixels behind them dropped
+    run(1, fp);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
 }
 
 void VisibilityBuffer::drawResolve(const SurfaceGpu& surface, const PixelRect& rect) const {

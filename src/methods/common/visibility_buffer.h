@@ -15,6 +15,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/process_group.h"
 #include "methods/common/screen_split.h"
 #include "methods/common/surface_gpu.h"
 
@@ -26,6 +27,8 @@ namespace flowsurf::methods {
 // visibility_raster.comp's work group, in triangles (VIS_RASTER_GROUP; the passes' binding
 // points are in gpu_bindings.h).
 inline constexpr int kVisRasterGroup = 64;
+// The occlusion step's screen cells (VisibilityBuffer::dropOccluded), in pixels a side.
+inline constexpr int kVisOccluderCellPx = 8;
 
 // Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
 // along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest
@@ -40,6 +43,20 @@ public:
     // `clear`: the pixels whose depth and id are reset first (where the last and this
     // surface can be; elsewhere they hold none already). Its rows are cleared whole.
     void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces, const PixelRect& clear);
+    // Collective over `group`, between rasterize and a resolve (sort-last occlusion between
+    // pieces): forgets this piece's pixels that another piece hides. Every process finds,
+    // per screen cell of kVisOccluderCellPx², the farthest depth of its piece where the piece
+    // covers the whole cell (within `footprint`, what this render can cover; elsewhere no
+    // cell is); the group's least of these per cell is an occluder, and a pixel of this
+    // piece strictly farther than its cell's occluder is dropped (depth and id none): a
+    // nearer fragment of another piece wins that pixel in every merge by depth, so the
+    // merged image is unchanged while the resolve and everything after it skip the pixel.
+    // Cost: two passes over the footprint's cells and a minimum over the group of one float
+    // per cell (64 KB at 1024²).
+    void dropOccluded(ProcessGroup& group, const PixelRect& footprint);
+    // The same collective step for a process that rasterised with GL this frame: it hides
+    // nothing and drops nothing.
+    static void joinOcclusion(ProcessGroup& group, const core::Viewport& viewport);
     // Binds the vertex and triangle textures and the depth and id buffers for a resolve pass.
     void bind(const SurfaceGpu& surface) const;
     // Runs the current program (a resolve: a full-screen triangle writing gl_FragDepth) over
@@ -57,7 +74,8 @@ private:
     size_t coveringCapacity_ = 0;
     size_t maxCovering_ = 1;     // triangle ids that fit the largest storage block
     size_t maxGroupsX_ = 65535;  // GL_MAX_COMPUTE_WORK_GROUP_COUNT along x
-    gl::Program compute_, glPass_, dispatch_;
+    gl::Program compute_, glPass_, dispatch_, occlusion_;
+    gl::Buffer occluders_;  // per cell, row by row: depth bits (visibility_occlusion.comp)
     gl::VertexArray deferredVao_, emptyVao_;
     gl::Framebuffer noAttachments_;
 };

@@ -43,7 +43,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (lastDynamic_) {
         timer_.begin(stageName(Stage::SeedTextures));
-        seeds_.render(*in.surface, in.camera);
+        seeds_.render(*in.surface, in.camera, tiled ? in.group : nullptr);  // tiles: what other pieces hide, skipped
         // (1b) unsteady flow: the velocity image of every time level the particles pass
         // through, "the projection of the vector data within the integration loop" [W §3]
         if (unsteady) {

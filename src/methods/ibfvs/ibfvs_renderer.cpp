@@ -62,7 +62,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
-                            c.cullBackFaces, noise);
+                            c.cullBackFaces, noise, tiled ? in.group : nullptr);
     current_ = target;
     // Parallel: the whole surface's advected texture on every process, which is also the
     // next frame's source (the texture lives in the image). Tiles: each process merges its

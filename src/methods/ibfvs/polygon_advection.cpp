@@ -49,14 +49,15 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
                              const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
                              const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo,
                              const gl::Texture2D& depth, float flowBackground, bool cullBackFaces,
-                             const NoiseStep& noise) {
+                             const NoiseStep& noise, ProcessGroup* occluders) {
     // As SurfaceGBuffer: the rule counts the whole surface's triangles (every process decides alike).
     lastVisibility_ = surface.vertexTexture() && useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(),
                                                                   size_t(viewport.width) * viewport.height);
     const Views views{camera.view(), camera.projection(viewport.aspect()) * camera.view(),
                       prevCamera.viewProjection(viewport.aspect()), dt};
     const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
-    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces);
+    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, occluders);
+    else if (occluders) VisibilityBuffer::joinOcclusion(*occluders, viewport);
     const bool advectHere = path_ != GlPath::Compute;  // the fragments resample and inject
     clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground);
     surfacePass.use();
@@ -110,7 +111,8 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, bool cullBackFaces) const
 }
 
 void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj,
-                                           const core::Viewport& viewport, bool cullBackFaces) {
+                                           const core::Viewport& viewport, bool cullBackFaces,
+                                           ProcessGroup* occluders) {
     if (!visibility_) visibility_ = std::make_unique<VisibilityBuffer>(viewport);
     // Cleared where this or the last surface can be (elsewhere it holds no triangle already).
     footprint_ = projectedRect(surface.pieceParts(), viewProj, viewport.width, viewport.height);
@@ -120,6 +122,7 @@ void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm:
                  std::max(clear.x1, footprint_.x1), std::max(clear.y1, footprint_.y1)};
     lastFootprint_ = footprint_;
     visibility_->rasterize(surface, viewProj, cullBackFaces, clear);
+    if (occluders) visibility_->dropOccluded(*occluders, footprint_);
 }
 
 void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const {

@@ -112,7 +112,7 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
         vi_ = 1 - vi_;
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
         timer_.begin(stageName(Stage::VelocityImage));
-        velocityImage_[vi_].render(*in.surface, in.camera);
+        velocityImage_[vi_].render(*in.surface, in.camera, tiled ? in.group : nullptr);
         if (tiled) distributeTiles(in);
         else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
     } else if (resplit) {
