@@ -52,11 +52,7 @@ glm::vec4 layerDepthRow(const core::Camera& camera) {
 
 PixelRect SurfaceGBuffer::beginFootprint(const SurfaceGpu& surface, const glm::mat4& viewProj) {
     footprint_ = projectedRect(surface.pieceParts(), viewProj, viewport_.width, viewport_.height);
-    PixelRect clear = lastFootprint_;
-    if (clear.empty()) clear = footprint_;
-    else if (!footprint_.empty())
-        clear = {std::min(clear.x0, footprint_.x0), std::min(clear.y0, footprint_.y0), std::max(clear.x1, footprint_.x1),
-                 std::max(clear.y1, footprint_.y1)};
+    const PixelRect clear = lastFootprint_.united(footprint_);
     lastFootprint_ = footprint_;
     return clear;
 }

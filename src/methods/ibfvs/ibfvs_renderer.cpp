@@ -77,7 +77,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
             if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
             layers.push_back(TileLayer::of(depth_, tileDepth_));
         }
-        tiles_->distribute(*in.group, depth_, layers, 0, {0, 0, viewport_.width, viewport_.height});
+        tiles_->distribute(*in.group, depth_, layers, 0, polygonAdvection_.footprint());
         madeWith_[target] = tiles_->tiles();
         // (3b, tiles) the contrast histogram of this tile, summed over the processes
         if (contrast_.enabled()) {

@@ -56,10 +56,19 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     const Views views{camera.view(), camera.projection(viewport.aspect()) * camera.view(),
                       prevCamera.viewProjection(viewport.aspect()), dt};
     const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
-    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, occluders);
+    // Where this surface can be, and what the last one can have left (the buffers hold the
+    // background elsewhere). Tiles (`occluders`): the clears and the per-pixel pass cover
+    // just that, F_a keeping stale texels elsewhere, which nothing reads: the history comes
+    // from the tiles' owners (ScreenTiles::pull), the exchange and the overlay read this
+    // piece's pixels. Otherwise F_a is the next frame's history: cleared and written whole.
+    footprint_ = projectedRect(surface.pieceParts(), views.viewProj, viewport.width, viewport.height);
+    const PixelRect drawn = lastFootprint_.united(footprint_);
+    lastFootprint_ = footprint_;
+    const PixelRect work = occluders ? drawn : PixelRect{0, 0, viewport.width, viewport.height};
+    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, drawn, occluders);
     else if (occluders) VisibilityBuffer::joinOcclusion(*occluders, viewport);
     const bool advectHere = path_ != GlPath::Compute;  // the fragments resample and inject
-    clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground);
+    clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground, work);
     surfacePass.use();
     setViews(surfacePass, views);
     if (advectHere) {
@@ -76,18 +85,25 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glBindTextureUnit(bindings::kIbfvsTexcoord, texcoord_.id());
     glBindTextureUnit(bindings::kIbfvsDepth, depth.id());
     glBindImageTexture(bindings::kIbfvsNextFlow, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    dispatchPerPixel(viewport.width, viewport.height);
+    glUniform2i(advectProgram_.uniform("uOrigin"), work.x0, work.y0);
+    glUniform2i(advectProgram_.uniform("uEnd"), work.x1, work.y1);
+    dispatchPerPixel(work.width(), work.height());
 }
 
-void PolygonAdvection::clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground) {
+void PolygonAdvection::clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground,
+                                   const PixelRect& rect) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, viewport.width, viewport.height);
+    if (rect.empty()) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x0, rect.y0, rect.width(), rect.height());
     // Gray background in F_a [L §IV-F.2]: what flows in from outside is the noise mean.
     const float bg[4] = {flowBackground, 0, 0, 1}, zero[4] = {0, 0, 0, 0}, one = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kFlow, bg);
     glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kShade, zero);
     glClearNamedFramebufferfv(target.id(), GL_COLOR, outputs::kMask, zero);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void PolygonAdvection::setViews(const gl::Program& program, const Views& views) {
@@ -111,16 +127,10 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, bool cullBackFaces) const
 }
 
 void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj,
-                                           const core::Viewport& viewport, bool cullBackFaces,
+                                           const core::Viewport& viewport, bool cullBackFaces, const PixelRect& clear,
                                            ProcessGroup* occluders) {
     if (!visibility_) visibility_ = std::make_unique<VisibilityBuffer>(viewport);
     // Cleared where this or the last surface can be (elsewhere it holds no triangle already).
-    footprint_ = projectedRect(surface.pieceParts(), viewProj, viewport.width, viewport.height);
-    PixelRect clear = lastFootprint_.empty() ? footprint_ : lastFootprint_;
-    if (!footprint_.empty())
-        clear = {std::min(clear.x0, footprint_.x0), std::min(clear.y0, footprint_.y0),
-                 std::max(clear.x1, footprint_.x1), std::max(clear.y1, footprint_.y1)};
-    lastFootprint_ = footprint_;
     visibility_->rasterize(surface, viewProj, cullBackFaces, clear);
     if (occluders) visibility_->dropOccluded(*occluders, footprint_);
 }

@@ -44,18 +44,21 @@ public:
                float flowBackground, bool cullBackFaces, const NoiseStep& noise, ProcessGroup* occluders = nullptr);
     // Whether the last apply rasterised with the visibility buffer.
     bool lastUsedVisibility() const { return lastVisibility_; }
+    // The pixels the last apply's surface can cover; its depth is 1 outside them.
+    const PixelRect& footprint() const { return footprint_; }
 
 private:
     struct Views {
         glm::mat4 view, viewProj, prevViewProj;
         float dt;
     };
-    // Clears `target` (F_a to the gray background, shade, mask, depth) and binds it.
-    static void clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground);
+    // Clears `target` (F_a to the gray background, shade, mask, depth) over `rect` and binds it.
+    static void clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground,
+                            const PixelRect& rect);
     static void setViews(const gl::Program& program, const Views& views);
     void draw(const SurfaceGpu& surface, bool cullBackFaces) const;
     void rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj, const core::Viewport& viewport,
-                             bool cullBackFaces, ProcessGroup* occluders);
+                             bool cullBackFaces, const PixelRect& clear, ProcessGroup* occluders);
     // Over the bound target, from the visibility buffer, with the resolve program in use.
     void resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const;
     // The surface program of this apply: the draw's, or the resolve's (made on first use).
@@ -73,8 +76,8 @@ private:
     std::string defines_;   // the draw's, for the resolve
     std::unique_ptr<VisibilityBuffer> visibility_;
     gl::Program resolve_;
-    PixelRect footprint_;      // the pixels this visibility pass's surface can cover
-    PixelRect lastFootprint_;  // where the last one can have left triangles
+    PixelRect footprint_;      // the pixels this apply's surface can cover
+    PixelRect lastFootprint_;  // where the last one can have left fragments (in every buffer)
     bool lastVisibility_ = false;
 };
 
