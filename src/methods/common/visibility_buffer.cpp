@@ -151,29 +151,55 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     glDisable(GL_CULL_FACE);
 }
 
+// Collective: the occluder cells of this frame, the same on every process: those over the
+// pixels where two pieces' footprints overlap (elsewhere no piece can hide another's
+// pixels); empty when no two overlap.
+PixelRect VisibilityBuffer::occluderCellRange(ProcessGroup& group, const PixelRect& footprint,
+                                              const core::Viewport& viewport) {
+    const PixelRect fp = footprint.intersect({0, 0, viewport.width, viewport.height});
+    const float mine[4] = {float(fp.x0), float(fp.y0), float(fp.x1), float(fp.y1)};  // exact in float
+    const std::vector<float> all = group.gather(mine);
+    std::vector<PixelRect> fps;
+    for (size_t i = 0; i + 3 < all.size(); i += 4) fps.push_back({int(all[i]), int(all[i + 1]), int(all[i + 2]), int(all[i + 3])});
+    PixelRect overlap;
+    for (size_t a = 0; a < fps.size(); ++a)
+        for (size_t b = a + 1; b < fps.size(); ++b)
+            if (!fps[a].empty() && !fps[b].empty()) overlap = overlap.united(fps[a].intersect(fps[b]));
+    if (overlap.empty()) return {};
+    const int c = kVisOccluderCellPx;
+    return {overlap.x0 / c, overlap.y0 / c, (overlap.x1 + c - 1) / c, (overlap.y1 + c - 1) / c};
+}
+
 void VisibilityBuffer::joinOcclusion(ProcessGroup& group, const core::Viewport& viewport) {
-    const glm::ivec2 cells = occluderCells(viewport);
-    std::vector<float> none(size_t(cells.x) * size_t(cells.y), kNoOccluder);
+    const PixelRect cells = occluderCellRange(group, {}, viewport);
+    if (cells.empty()) return;
+    std::vector<float> none(cells.area(), kNoOccluder);
     group.minInPlace(none);
 }
 
 void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footprint) {
-    const glm::ivec2 cells = occluderCells(viewport_);
-    const size_t count = size_t(cells.x) * size_t(cells.y);
-    if (!occluders_) occluders_ = gl::Buffer(GLsizeiptr(count * sizeof(uint32_t)), nullptr);
-    const PixelRect fp = footprint.intersect({0, 0, viewport_.width, viewport_.height});
-    const int c = kVisOccluderCellPx;
-    const PixelRect cellRect = fp.empty() ? PixelRect{}
-                                          : PixelRect{fp.x0 / c, fp.y0 / c, (fp.x1 + c - 1) / c, (fp.y1 + c - 1) / c};
-    // (1) this piece's farthest depth per cell it covers whole (none elsewhere)
+    const PixelRect cells = occluderCellRange(group, footprint, viewport_);
+    if (cells.empty()) return;
+    const int cellsX = occluderCells(viewport_).x, c = kVisOccluderCellPx;
+    if (!occluders_) occluders_ = gl::Buffer(GLsizeiptr(size_t(cellsX) * size_t(occluderCells(viewport_).y) * 4), nullptr);
+    const PixelRect full{0, 0, viewport_.width, viewport_.height};
+    // This piece's pixels in those cells, and the cells it can cover whole.
+    const PixelRect pixels = footprint.intersect(full).intersect({cells.x0 * c, cells.y0 * c, cells.x1 * c, cells.y1 * c});
+    const PixelRect mine = pixels.empty() ? PixelRect{}
+                                          : PixelRect{pixels.x0 / c, pixels.y0 / c, (pixels.x1 + c - 1) / c,
+                                                      (pixels.y1 + c - 1) / c};
+    // (1) this piece's farthest depth per cell it covers whole (none elsewhere): the rows of
+    // the cells, whole rows being one range of the buffer
+    const GLintptr rows = GLintptr(cells.y0) * cellsX * 4;
+    const GLsizeiptr rowBytes = GLsizeiptr(cells.height()) * cellsX * 4;
     const uint32_t none = kNone;
-    glClearNamedBufferData(occluders_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    glClearNamedBufferSubData(occluders_.id(), GL_R32UI, rows, rowBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisDepth, depth_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisId, ids_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kVisOccluder, occluders_.id());
     occlusion_.use();
     glUniform2i(occlusion_.uniform("uSize"), viewport_.width, viewport_.height);
-    glUniform1i(occlusion_.uniform("uCellsX"), cells.x);
+    glUniform1i(occlusion_.uniform("uCellsX"), cellsX);
     const auto run = [&](int step, const PixelRect& r) {
         if (r.empty()) return;
         glUniform1i(occlusion_.uniform("uStep"), step);
@@ -181,20 +207,23 @@ void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footpr
         glDispatchCompute(GLuint((r.width() + kPixelGroup - 1) / kPixelGroup),
                           GLuint((r.height() + kPixelGroup - 1) / kPixelGroup), 1);
     };
-    run(0, cellRect);
+    run(0, mine);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> bits(count);
-    glGetNamedBufferSubData(occluders_.id(), 0, GLsizeiptr(count * sizeof(uint32_t)), bits.data());
+    std::vector<uint32_t> bits(size_t(cells.height()) * size_t(cellsX));
+    glGetNamedBufferSubData(occluders_.id(), rows, rowBytes, bits.data());
     // (2) the group's nearest of them per cell
-    std::vector<float> depth(count);
-    for (size_t i = 0; i < count; ++i) depth[i] = bits[i] == kNone ? kNoOccluder : std::bit_cast<float>(bits[i]);
+    std::vector<float> depth(cells.area());
+    const auto at = [&](size_t k) -> uint32_t& {
+        return bits[(k / size_t(cells.width())) * size_t(cellsX) + size_t(cells.x0) + k % size_t(cells.width())];
+    };
+    for (size_t k = 0; k < depth.size(); ++k) depth[k] = at(k) == kNone ? kNoOccluder : std::bit_cast<float>(at(k));
     group.minInPlace(depth);
-    for (size_t i = 0; i < count; ++i) bits[i] = std::bit_cast<uint32_t>(depth[i]);
-    glNamedBufferSubData(occluders_.id(), 0, GLsizeiptr(count * sizeof(uint32_t)), bits.data());
+    if (pixels.empty()) return;
+    for (size_t k = 0; k < depth.size(); ++k) at(k) = std::bit_cast<uint32_t>(depth[k]);
+    glNamedBufferSubData(occluders_.id(), rows, rowBytes, bits.data());
     // (3) this piece's pixels behind them dropped
-    run(1, fp);
+    run(1, pixels);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
 }
 
 void VisibilityBuffer::drawResolve(const SurfaceGpu& surface, const PixelRect& rect) const {

@@ -44,15 +44,16 @@ public:
     // surface can be; elsewhere they hold none already). Its rows are cleared whole.
     void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces, const PixelRect& clear);
     // Collective over `group`, between rasterize and a resolve (sort-last occlusion between
-    // pieces): forgets this piece's pixels that another piece hides. Every process finds,
-    // per screen cell of kVisOccluderCellPx², the farthest depth of its piece where the piece
-    // covers the whole cell (within `footprint`, what this render can cover; elsewhere no
-    // cell is); the group's least of these per cell is an occluder, and a pixel of this
-    // piece strictly farther than its cell's occluder is dropped (depth and id none): a
-    // nearer fragment of another piece wins that pixel in every merge by depth, so the
+    // pieces): forgets this piece's pixels that another piece hides. The processes share
+    // their footprints (what each render can cover); where two overlap, every process finds
+    // per screen cell of kVisOccluderCellPx² the farthest depth of its piece where the piece
+    // covers the whole cell; the group's least of these per cell is an occluder, and a pixel
+    // of this piece strictly farther than its cell's occluder is dropped (depth and id none):
+    // a nearer fragment of another piece wins that pixel in every merge by depth, so the
     // merged image is unchanged while the resolve and everything after it skip the pixel.
-    // Cost: two passes over the footprint's cells and a minimum over the group of one float
-    // per cell (64 KB at 1024²).
+    // Cost: a gather of 4 floats per process; where footprints overlap, two passes over
+    // this piece's part of the overlap and a minimum over the group of one float per cell
+    // there (at most 64 KB at 1024²).
     void dropOccluded(ProcessGroup& group, const PixelRect& footprint);
     // The same collective step for a process that rasterised with GL this frame: it hides
     // nothing and drops nothing.
@@ -66,6 +67,7 @@ public:
 
 private:
     void ensureCapacity(size_t triangles);
+    static PixelRect occluderCellRange(ProcessGroup& group, const PixelRect& footprint, const core::Viewport& viewport);
 
     core::Viewport viewport_;
     gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_, covering_;
