@@ -200,6 +200,8 @@ void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footpr
     occlusion_.use();
     glUniform2i(occlusion_.uniform("uSize"), viewport_.width, viewport_.height);
     glUniform1i(occlusion_.uniform("uCellsX"), cellsX);
+    const PixelRect fp = footprint.intersect(full);
+    glUniform4i(occlusion_.uniform("uFootprint"), fp.x0, fp.y0, fp.x1, fp.y1);
     const auto run = [&](int step, const PixelRect& r) {
         if (r.empty()) return;
         glUniform1i(occlusion_.uniform("uStep"), step);
