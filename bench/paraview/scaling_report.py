@@ -121,6 +121,16 @@ if stats:
                 max(cpu.values()) / (total_cpu / len(cpu)), max(own.values()) / (total_own / len(own)),
                 max(sent) / 1e6 if sent else 0))
 
+    same, total = 0, 0
+    for png in sorted(glob.glob(os.path.join(OUT, 'stats', 'np*', 'run', '*.png'))):
+        ref = os.path.join(OUT, 'stats', 'np1', 'run', os.path.basename(png))
+        if '/np1/' not in png and os.path.exists(ref):
+            total += 1
+            same += filecmp.cmp(png, ref, shallow=False)
+    if total:
+        print('\nImages of these runs (last render of each method) byte-identical to the 1-rank run\'s: %d of %d.'
+              % (same, total))
+
     # Where the extra work goes: each stage's CPU time summed over the ranks (medians per rank),
     # against the same stage at one rank; "other": the frame loop outside the timed stages.
     staged = {}
