@@ -113,7 +113,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     // This piece's depth and its covered rectangle; the coverage per cell, summed.
     const PixelRect full{0, 0, w, h};
     const PixelRect fp = footprint.intersect(full);
-    depth_.assign(full.area(), 1.0f);
+    depth_.resize(full.area());  // read within fp only, where the read-back writes every pixel
     if (!fp.empty()) {  // read into the full-size array: rows of w pixels
         const size_t at = size_t(fp.y0) * size_t(w) + size_t(fp.x0);
         gl::waitForRendering();
