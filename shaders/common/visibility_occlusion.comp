@@ -1,10 +1,10 @@
-// Visibility buffer, occlusion between pieces (VisibilityBuffer::dropOccluded). uStep 0: one
-// invocation per screen cell of VIS_OCCLUDER_CELL² pixels in uRect (cells): the cell's farthest
-// depth bits, none (~0u: beyond every depth's bits) where a pixel of it is uncovered or
-// outside uFootprint. uStep 1:
-// one invocation per pixel of uRect (pixels): the pixel is dropped (depth and id none) where
-// its depth is strictly beyond its cell's occluder (the group's least farthest depth; its
-// bits compare as the floats do, depths being in [0, 1]).
+// Visibility buffer, occlusion between pieces (VisibilityBuffer::dropOccluded).
+// uStep 0: one invocation per screen cell of VIS_OCCLUDER_CELL² pixels in uRect (cells): the
+// cell's farthest depth bits, none (~0u: beyond every depth's bits) where a pixel of it is
+// uncovered or outside uFootprint.
+// uStep 1: one invocation per pixel of uRect (pixels): the pixel is dropped (depth and id
+// none) where its depth is strictly beyond its cell's occluder (the group's least farthest
+// depth; its bits compare as the floats do, depths being in [0, 1]).
 #include "common/visibility.glsl"
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(std430, binding = VIS_OCCLUDER_BINDING) buffer Occluders { uint occluderBits[]; };
