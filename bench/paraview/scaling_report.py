@@ -23,6 +23,25 @@ def load(path):
         return json.load(f)
 
 
+def identical(pngs, reference_of):
+    """(byte-identical, compared) over `pngs` whose reference image exists."""
+    same = total = 0
+    for png in sorted(pngs):
+        ref = reference_of(png)
+        if os.path.exists(ref):
+            total += 1
+            same += filecmp.cmp(png, ref, shallow=False)
+    return same, total
+
+
+def timed_rows(run_dir):
+    """A FLOWSURF_RANK_STATS run's lines of every rank, warm-up renders left out."""
+    rows = []
+    for f in glob.glob(os.path.join(run_dir, 'rank*.jsonl')):
+        rows += [json.loads(line) for line in open(f)]
+    return [r for r in rows if not r['warmup']]
+
+
 cal = open(os.path.join(OUT, 'calibration.txt')).read()
 s_hw = float(re.search(r'S_hw = ([0-9.]+)', cal).group(1))
 scale = min(1.0, s_hw / 1.9)
@@ -77,12 +96,9 @@ if first:
             print('| %s | %.0f | %.0f | %.2f | %.0f | %.2f |' % (method, t1, tt, t1 / tt, l2, tt / l2))
 
     print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
-    same, total = 0, 0
-    for png in sorted(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png'))):
-        ref = os.path.join(os.path.dirname(os.path.dirname(png)), 'np1', os.path.basename(png))
-        if os.path.exists(ref):
-            total += 1
-            same += filecmp.cmp(png, ref, shallow=False)
+    same, total = identical(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png')),
+                            lambda png: os.path.join(os.path.dirname(os.path.dirname(png)), 'np1',
+                                                     os.path.basename(png)))
     print('%d of %d identical.\n' % (same, total))
 
 stats = sorted(glob.glob(os.path.join(OUT, 'stats', '*')))
@@ -97,10 +113,7 @@ if stats:
     print('|---|---|---:|---:|---:|---:|---:|---:|')
     base = {}
     for d in stats:
-        rows = []
-        for f in glob.glob(os.path.join(d, 'rank*.jsonl')):
-            rows += [json.loads(line) for line in open(f)]
-        rows = [r for r in rows if not r['warmup']]
+        rows = timed_rows(d)
         name = os.path.basename(d)
         for method in sorted({r['method'] for r in rows}):
             per_rank, outside = {}, {}
@@ -121,12 +134,9 @@ if stats:
                 max(cpu.values()) / (total_cpu / len(cpu)), max(own.values()) / (total_own / len(own)),
                 max(sent) / 1e6 if sent else 0))
 
-    same, total = 0, 0
-    for png in sorted(glob.glob(os.path.join(OUT, 'stats', 'np*', 'run', '*.png'))):
-        ref = os.path.join(OUT, 'stats', 'np1', 'run', os.path.basename(png))
-        if '/np1/' not in png and os.path.exists(ref):
-            total += 1
-            same += filecmp.cmp(png, ref, shallow=False)
+    same, total = identical([p for p in glob.glob(os.path.join(OUT, 'stats', 'np*', 'run', '*.png'))
+                             if '/np1/' not in p],
+                            lambda png: os.path.join(OUT, 'stats', 'np1', 'run', os.path.basename(png)))
     if total:
         print('\nImages of these runs (last render of each method) byte-identical to the 1-rank run\'s: %d of %d.'
               % (same, total))
@@ -135,10 +145,7 @@ if stats:
     # against the same stage at one rank; "other": the frame loop outside the timed stages.
     staged = {}
     for d in stats:
-        rows = []
-        for f in glob.glob(os.path.join(d, 'rank*.jsonl')):
-            rows += [json.loads(line) for line in open(f)]
-        rows = [r for r in rows if not r['warmup'] and r.get('stages_cpu_ms')]
+        rows = [r for r in timed_rows(d) if r.get('stages_cpu_ms')]
         for r in rows:
             r['stages_cpu_ms']['other'] = r['cpu_ms'] - sum(r['stages_cpu_ms'].values())
         for method in {r['method'] for r in rows}:

@@ -101,9 +101,7 @@ PixelRect projectedRect(std::span<const core::Bounds> parts, const glm::mat4& vi
         if (!part.valid()) continue;
         const std::optional<PixelRect> r = projectedSpan(part, viewProj, width, height);
         if (!r) return all;
-        span = span ? PixelRect{std::min(span->x0, r->x0), std::min(span->y0, r->y0), std::max(span->x1, r->x1),
-                                std::max(span->y1, r->y1)}
-                    : *r;
+        span = span ? span->united(*r) : *r;
     }
     return span ? span->intersect(all) : PixelRect{};
 }

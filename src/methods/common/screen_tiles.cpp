@@ -371,11 +371,8 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
 
     // This process's covered pixels: its own tile's values, then every other owner's in the
     // order that owner wrote them.
-    PixelRect covered{w, viewport_.height, 0, 0};
-    for (const PixelRect& r : sent_)
-        if (!r.empty())
-            covered = {std::min(covered.x0, r.x0), std::min(covered.y0, r.y0), std::max(covered.x1, r.x1),
-                       std::max(covered.y1, r.y1)};
+    PixelRect covered;
+    for (const PixelRect& r : sent_) covered = covered.united(r);
     if (covered.empty()) return;
     values_.resize(covered.area());
     readRect(values, covered, f, values_.data());  // what is not this piece's stays as it is

@@ -180,11 +180,12 @@ void VisibilityBuffer::joinOcclusion(ProcessGroup& group, const core::Viewport& 
 void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footprint) {
     const PixelRect cells = occluderCellRange(group, footprint, viewport_);
     if (cells.empty()) return;
-    const int cellsX = occluderCells(viewport_).x, c = kVisOccluderCellPx;
-    if (!occluders_) occluders_ = gl::Buffer(GLsizeiptr(size_t(cellsX) * size_t(occluderCells(viewport_).y) * 4), nullptr);
-    const PixelRect full{0, 0, viewport_.width, viewport_.height};
+    const glm::ivec2 grid = occluderCells(viewport_);
+    const int cellsX = grid.x, c = kVisOccluderCellPx;
+    if (!occluders_) occluders_ = gl::Buffer(GLsizeiptr(size_t(grid.x) * size_t(grid.y) * 4), nullptr);
+    const PixelRect fp = footprint.intersect({0, 0, viewport_.width, viewport_.height});
     // This piece's pixels in those cells, and the cells it can cover whole.
-    const PixelRect pixels = footprint.intersect(full).intersect({cells.x0 * c, cells.y0 * c, cells.x1 * c, cells.y1 * c});
+    const PixelRect pixels = fp.intersect({cells.x0 * c, cells.y0 * c, cells.x1 * c, cells.y1 * c});
     const PixelRect mine = pixels.empty() ? PixelRect{}
                                           : PixelRect{pixels.x0 / c, pixels.y0 / c, (pixels.x1 + c - 1) / c,
                                                       (pixels.y1 + c - 1) / c};
@@ -200,12 +201,12 @@ void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footpr
     occlusion_.use();
     glUniform2i(occlusion_.uniform("uSize"), viewport_.width, viewport_.height);
     glUniform1i(occlusion_.uniform("uCellsX"), cellsX);
-    const PixelRect fp = footprint.intersect(full);
     glUniform4i(occlusion_.uniform("uFootprint"), fp.x0, fp.y0, fp.x1, fp.y1);
     const auto run = [&](int step, const PixelRect& r) {
         if (r.empty()) return;
         glUniform1i(occlusion_.uniform("uStep"), step);
-        glUniform4i(occlusion_.uniform("uRect"), r.x0, r.y0, r.x1, r.y1);
+        glUniform2i(occlusion_.uniform("uOrigin"), r.x0, r.y0);
+        glUniform2i(occlusion_.uniform("uEnd"), r.x1, r.y1);
         glDispatchCompute(GLuint((r.width() + kPixelGroup - 1) / kPixelGroup),
                           GLuint((r.height() + kPixelGroup - 1) / kPixelGroup), 1);
     };
