@@ -11,6 +11,7 @@
 #include "gl_test_util.h"
 #include "methods/common/process_group.h"
 #include "methods/common/screen_split.h"
+#include "methods/common/screen_tiles.h"
 #include "methods/make_renderer.h"
 #include "session/options/options.h"
 #include "session/playback.h"
@@ -426,6 +427,93 @@ TEST(ScreenSplit, PartsHoldEveryTriangleTighterThanTheBox) {
             EXPECT_LT(partsArea, 0.85 * boxArea);
         }
     }
+}
+
+}  // namespace
+
+namespace {
+
+// The tiles' merge itself (ScreenTiles::distribute), on buffers whose values are known: three
+// processes whose coverage overlaps, with ties in depth, and whose buffers hold other values
+// where their piece has no fragment (as a layer that is not cleared there does). Over every
+// process's tile plus guard, each layer must hold the nearest process's value (on a tie the
+// lowest rank's) and the layer's background where no process has a fragment: a float layer
+// into its own tile texture, a half layer merged in place, and the depth. Then once more with
+// the coverage moved (a new split; what the last region held is cleared).
+struct MergeCase {
+    static constexpr int kW = 72, kH = 40;
+    static bool covers(int rank, int x, int y, int round) {
+        const int shift = 9 * round;  // the left and right pieces grow towards each other
+        const bool in = rank == 0 ? x < 30 + shift : rank == 1 ? x >= 42 - shift : x >= 26 && x < 46 && y < 20;
+        return in && (x + 2 * y + 7 * rank) % 5 != 0;
+    }
+    static float depth(int rank, int x, int y, int round) {  // at even x the same for every rank: ties
+        return covers(rank, x, y, round) ? 0.25f + 0.125f * float((3 * x + 5 * y + (x % 2) * rank + round) % 4) : 1.0f;
+    }
+    static glm::vec4 value(int rank, int x, int y) { return {float(rank + 1), float(x), float(y), 0.5f * float(rank)}; }
+    static float half(int rank, int x, int y) { return 0.25f * float(rank + 1) + 0.5f * float((x + y) % 3); }
+    static constexpr glm::vec4 kGarbage{7.0f, -3.0f, 11.0f, 5.0f};
+};
+
+TEST(ScreenTiles, MergeKeepsTheNearestFragmentAndTheBackgroundElsewhere) {
+    const core::Viewport vp{MergeCase::kW, MergeCase::kH};
+    const int n = 3, guard = 3;
+    const float halfFill = 0.75f;
+    test::inThreads(n, [&](methods::ProcessGroup& group, int rank) {
+        const int w = vp.width, h = vp.height;
+        gl::Texture2D depth(GL_DEPTH_COMPONENT32F, w, h, GL_NEAREST), tileDepth(GL_DEPTH_COMPONENT32F, w, h, GL_NEAREST);
+        gl::Texture2D velocity(GL_RGBA32F, w, h, GL_NEAREST), tileVelocity(GL_RGBA32F, w, h, GL_NEAREST);
+        gl::Texture2D mask(GL_R16F, w, h, GL_NEAREST);  // merged in place
+        methods::ScreenTiles tiles(vp);
+        for (int round = 0; round < 2; ++round) {
+            std::vector<float> d(size_t(w * h)), m(size_t(w * h));
+            std::vector<glm::vec4> v(size_t(w * h));
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    const size_t i = size_t(y * w + x);
+                    const bool on = MergeCase::covers(rank, x, y, round);
+                    d[i] = MergeCase::depth(rank, x, y, round);
+                    v[i] = on ? MergeCase::value(rank, x, y) : MergeCase::kGarbage;
+                    m[i] = on ? MergeCase::half(rank, x, y) : MergeCase::kGarbage.x;
+                }
+            glTextureSubImage2D(depth.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, d.data());
+            glTextureSubImage2D(velocity.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, v.data());
+            glTextureSubImage2D(mask.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, m.data());
+            const methods::TileLayer layers[] = {methods::TileLayer::of(velocity, tileVelocity),
+                                                 methods::TileLayer::of(mask, mask, halfFill),
+                                                 methods::TileLayer::of(depth, tileDepth)};
+            tiles.distribute(group, depth, layers, guard, {0, 0, w, h});
+            const methods::PixelRect R = tiles.region();
+            EXPECT_FALSE(R.empty()) << "rank " << rank;
+            std::vector<glm::vec4> gotV(size_t(w * h));
+            std::vector<float> gotM(size_t(w * h)), gotD(size_t(w * h));
+            glGetTextureImage(tileVelocity.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(gotV.size() * sizeof(glm::vec4)), gotV.data());
+            glGetTextureImage(mask.id(), 0, GL_RED, GL_FLOAT, GLsizei(gotM.size() * sizeof(float)), gotM.data());
+            glGetTextureImage(tileDepth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(gotD.size() * sizeof(float)),
+                              gotD.data());
+            int wrong = 0, covered = 0, empty = 0;
+            for (int y = R.y0; y < R.y1; ++y)
+                for (int x = R.x0; x < R.x1; ++x) {
+                    int winner = -1;
+                    float best = 1.0f;
+                    for (int q = 0; q < n; ++q)
+                        if (MergeCase::depth(q, x, y, round) < best) {
+                            best = MergeCase::depth(q, x, y, round);
+                            winner = q;
+                        }
+                    const size_t i = size_t(y * w + x);
+                    const glm::vec4 wantV = winner < 0 ? glm::vec4(0.0f) : MergeCase::value(winner, x, y);
+                    const float wantM = winner < 0 ? halfFill : MergeCase::half(winner, x, y);
+                    (winner < 0 ? empty : covered)++;
+                    if (gotV[i] != wantV || gotM[i] != wantM || gotD[i] != best) ++wrong;
+                }
+            EXPECT_EQ(wrong, 0) << "rank " << rank << ", round " << round << ": pixels of the region " << R.x0 << ","
+                                << R.y0 << "-" << R.x1 << "," << R.y1 << " that differ from the merge";
+            EXPECT_GT(covered, 0) << "rank " << rank;
+            EXPECT_GT(empty, 0) << "rank " << rank;  // the background is tested too
+        }
+        return test::Images{};
+    });
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ struct PixelRect {
         return {std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
     }
     PixelRect grown(int g) const { return {x0 - g, y0 - g, x1 + g, y1 + g}; }
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
     // The least rectangle holding both; an empty one adds nothing.
     PixelRect united(const PixelRect& o) const {
         if (empty()) return o;

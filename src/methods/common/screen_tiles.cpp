@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "gl/readback.h"
+#include "methods/common/shader_interface.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -195,55 +196,64 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);
 
-    // The merge over the region, in rank order: a strictly nearer fragment wins, so on a tie
-    // the lowest rank keeps the pixel (as mergeByDepth). First the winner of each pixel (its
-    // process and the index of its values there), then each layer copied from the winners.
+    // The merge over the region. This piece's own layers are copied there on the GPU, with
+    // their background where it has no fragment (copyOwn); only over the box of what the
+    // other processes sent (U) is the region merged here, in rank order: a strictly nearer
+    // fragment wins, so on a tie the lowest rank keeps the pixel (as mergeByDepth). First
+    // the winner of each pixel of U (its process and the index of its values there), then
+    // each layer copied from the winners and written over U.
     const PixelRect& R = region_;
-    best_.assign(R.area(), 1.0f);
-    winner_.assign(R.area(), -1);
-    winnerAt_.resize(R.area());
     std::vector<std::vector<const uint8_t*>> values(static_cast<size_t>(n));  // [process][layer]: its values' start
+    std::vector<const float*> depthOf(static_cast<size_t>(n), nullptr);
     received_.assign(size_t(n), PixelRect{});
     receivedDepth_.resize(size_t(n));
+    PixelRect U;
     for (int q = 0; q < n; ++q) {
-        PixelRect r;
-        const float* qDepth = nullptr;
         std::vector<float>& keep = receivedDepth_[size_t(q)];
         keep.clear();
         if (q == me) {
-            r = sent_[size_t(me)];
+            received_[size_t(q)] = sent_[size_t(me)];
             for (size_t i = 0; i < layers.size(); ++i) values[size_t(q)].push_back(local[i].data());
-        } else {
-            if (in[size_t(q)].empty()) continue;
-            traffic_.bytesReceived += in[size_t(q)].size();
-            Reader rd{in[size_t(q)]};
-            r = rd.rect();
-            if (r.empty() || !(r.intersect(R) == r))
-                throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
-            keep.resize(r.area());
-            std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
-            qDepth = keep.data();
-            size_t count = 0;
-            for (float d : keep) count += d < 1.0f;
-            const uint8_t* v = rd.take(count * layerBytes);
-            if (rd.at != in[size_t(q)].size())
-                throw GlError("screen tiles: a message from process " + std::to_string(q) + " has trailing bytes");
-            for (size_t i = 0; i < layers.size(); ++i) {
-                values[size_t(q)].push_back(v);
-                v += count * formats[i].bytes;
-            }
+            continue;
+        }
+        if (in[size_t(q)].empty()) continue;
+        traffic_.bytesReceived += in[size_t(q)].size();
+        Reader rd{in[size_t(q)]};
+        const PixelRect r = rd.rect();
+        if (r.empty() || !(r.intersect(R) == r))
+            throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
+        keep.resize(r.area());
+        std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
+        depthOf[size_t(q)] = keep.data();
+        size_t count = 0;
+        for (float d : keep) count += d < 1.0f;
+        const uint8_t* v = rd.take(count * layerBytes);
+        if (rd.at != in[size_t(q)].size())
+            throw GlError("screen tiles: a message from process " + std::to_string(q) + " has trailing bytes");
+        for (size_t i = 0; i < layers.size(); ++i) {
+            values[size_t(q)].push_back(v);
+            v += count * formats[i].bytes;
         }
         received_[size_t(q)] = r;
+        U = U.united(r);
+    }
+    best_.assign(U.area(), 1.0f);
+    winner_.assign(U.area(), -1);
+    winnerAt_.resize(U.area());
+    for (int q = 0; q < n && !U.empty(); ++q) {
+        const PixelRect r = q == me ? sent_[size_t(me)].intersect(U) : received_[size_t(q)];
         if (r.empty()) continue;
-        uint32_t k = 0;  // q's covered pixels so far
+        const PixelRect& sentRect = received_[size_t(q)];  // q's depth array covers this
+        uint32_t k = 0;  // q's covered pixels so far (its values are in row order of sentRect)
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x) {
                 const float d = q == me ? depth_[size_t(y) * size_t(w) + size_t(x)]
-                                        : qDepth[size_t(y - r.y0) * size_t(r.width()) + size_t(x - r.x0)];
+                                        : depthOf[size_t(q)][size_t(y - sentRect.y0) * size_t(sentRect.width()) +
+                                                             size_t(x - sentRect.x0)];
                 if (!(d < 1.0f)) continue;
                 const uint32_t at = q == me ? coveredIndex(x, y) : k;
                 ++k;
-                const size_t p = size_t(y - R.y0) * size_t(R.width()) + size_t(x - R.x0);
+                const size_t p = size_t(y - U.y0) * size_t(U.width()) + size_t(x - U.x0);
                 if (!(d < best_[p])) continue;
                 best_[p] = d;
                 winner_[p] = q;
@@ -252,10 +262,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     std::vector<std::vector<uint8_t>>& merged = merged_;
     merged.resize(layers.size());
-    for (size_t i = 0; i < layers.size(); ++i)
+    for (size_t i = 0; i < layers.size() && !U.empty(); ++i)
         withPixelSize(formats[i].bytes, [&](auto size) {
             constexpr size_t N = decltype(size)::value;
-            merged[i].resize(R.area() * N);
+            merged[i].resize(U.area() * N);
             uint8_t background[N] = {};  // every channel `fill` (a depth layer's 1)
             const float fill = formats[i].depth ? 1.0f : layers[i].fill;
             if (formats[i].type == GL_FLOAT)
@@ -266,13 +276,14 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                     std::memcpy(&background[c * 2], &half, 2);
                 }
             uint8_t* to = merged[i].data();
-            for (size_t p = 0; p < R.area(); ++p, to += N) {
+            for (size_t p = 0; p < U.area(); ++p, to += N) {
                 const int q = winner_[p];
                 std::memcpy(to, q < 0 ? background : values[size_t(q)][i] + size_t(winnerAt_[p]) * N, N);
             }
         });
 
-    // Upload; what the last region held and this one does not is cleared.
+    // On the GPU: what the last region held and this one does not is cleared; this piece's
+    // own layers over the region; the merge over U.
     for (size_t i = 0; i < layers.size(); ++i) {
         const PixelFormat& f = formats[i];
         if (!previous.empty() && !(previous == R) && layers[i].tile != layers[i].local) {
@@ -281,11 +292,41 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             glClearTexSubImage(layers[i].tile, 0, previous.x0, previous.y0, std::max(layers[i].layer, 0), previous.width(),
                                previous.height(), 1, f.format, GL_FLOAT, value);
         }
-        if (!R.empty()) writeRect(layers[i].tile, layers[i].layer, R, f, merged[i].data());
     }
+    copyOwn(depth, layers, R);
+    for (size_t i = 0; i < layers.size() && !U.empty(); ++i)
+        writeRect(layers[i].tile, layers[i].layer, U, formats[i], merged[i].data());
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
-    for (float d : best_) traffic_.coveredPixels += d < 1.0f;
+    for (int y = R.y0; y < R.y1; ++y)  // the whole surface's pixels in the region
+        for (int x = R.x0; x < R.x1; ++x)
+            traffic_.coveredPixels += U.contains(x, y) ? best_[size_t(y - U.y0) * size_t(U.width()) + size_t(x - U.x0)] < 1.0f
+                                                       : depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
+}
+
+// Each layer's tile over `R`: this piece's own layer, and where its `depth` is 1 (no
+// fragment) the layer's background. A depth layer is `depth` itself (its background is 1
+// already); a layer merged in place (tile = local) only has its background written.
+void ScreenTiles::copyOwn(const gl::Texture2D& depth, std::span<const TileLayer> layers, const PixelRect& R) {
+    if (R.empty()) return;
+    for (const TileLayer& l : layers) {
+        const PixelFormat f = pixelFormatOf(l.format);
+        if (f.depth && l.local != depth.id())
+            throw GlError("screen tiles: a depth layer must be the piece's depth that the merge decides by");
+        const GLenum target = l.layer < 0 ? GL_TEXTURE_2D : GL_TEXTURE_3D;
+        const int z = std::max(l.layer, 0);
+        if (l.tile != l.local)
+            glCopyImageSubData(l.local, target, 0, R.x0, R.y0, z, l.tile, target, 0, R.x0, R.y0, z, R.width(), R.height(), 1);
+        if (f.depth) continue;
+        if (!fill_) fill_ = program({{GL_COMPUTE_SHADER, "common/tile_fill.comp"}});
+        fill_.use();
+        glUniform2i(fill_.uniform("uOrigin"), R.x0, R.y0);
+        glUniform2i(fill_.uniform("uEnd"), R.x1, R.y1);
+        glUniform4f(fill_.uniform("uFill"), l.fill, l.fill, l.fill, l.fill);
+        glBindTextureUnit(bindings::kTileFillDepth, depth.id());
+        glBindImageTexture(bindings::kTileFillImage, l.tile, 0, GL_FALSE, z, GL_WRITE_ONLY, l.format);
+        dispatchPerPixel(R.width(), R.height());
+    }
 }
 
 void ScreenTiles::reportCost(ProcessGroup& group, float ms) {

@@ -114,6 +114,8 @@ public:
     void beginFrame() { traffic_ = {}; }
 
 private:
+    void copyOwn(const gl::Texture2D& depth, std::span<const TileLayer> layers, const PixelRect& region);
+
     core::Viewport viewport_;
     int rank_ = 0;
     std::vector<PixelRect> tiles_;          // every process's tile
@@ -138,6 +140,7 @@ private:
     int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
     bool splitDue_ = false;
     TileTraffic traffic_;
+    gl::Program fill_;  // common/tile_fill.comp, made at the first merge
 };
 
 }  // namespace flowsurf::methods
