@@ -94,10 +94,6 @@ inline constexpr BindingPoint kHistogram = storageBinding("HISTOGRAM_BINDING", 8
 inline constexpr BindingPoint kContrastFlow = textureUnit("CONTRAST_FLOW_UNIT", 0);    // F_a or I, channel r
 inline constexpr BindingPoint kContrastDepth = textureUnit("CONTRAST_DEPTH_UNIT", 1);  // window depth
 inline constexpr BindingPoint kContrastImage = imageUnit("CONTRAST_IMAGE_UNIT", 0);    // the stretched texture, R32F
-// Screen tiles' merge (screen_tiles.cpp, common/tile_fill.comp): the background written into
-// a layer's tile where this process's piece has no fragment.
-inline constexpr BindingPoint kTileFillDepth = textureUnit("TILE_FILL_DEPTH_UNIT", 0);  // this piece's window depth
-inline constexpr BindingPoint kTileFillImage = imageUnit("TILE_FILL_IMAGE_UNIT", 0);    // the layer's tile (float formats)
 // ParaView's composite of a method's image into its view (paraview/composite.frag).
 inline constexpr BindingPoint kCompositeColor = textureUnit("COMPOSITE_COLOR_UNIT", 0);  // the method's composite, RGBA8
 inline constexpr BindingPoint kCompositeDepth = textureUnit("COMPOSITE_DEPTH_UNIT", 1);  // its surface depth
@@ -121,7 +117,6 @@ inline constexpr BindingPoint kBindingPoints[] = {
     bindings::kVisVertex, bindings::kVisTriangle, bindings::kVisDepth, bindings::kVisId, bindings::kVisIndirect,
     bindings::kVisDeferred, bindings::kVisDeferredId, bindings::kVisCovering, bindings::kVisOccluder,
     bindings::kHistogram, bindings::kContrastFlow, bindings::kContrastDepth, bindings::kContrastImage,
-    bindings::kTileFillDepth, bindings::kTileFillImage,
     bindings::kCompositeColor, bindings::kCompositeDepth, bindings::kCompositeShade, bindings::kCompositeTable,
 };
 

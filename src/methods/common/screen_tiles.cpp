@@ -2,7 +2,6 @@
 
 #include "core/errors.h"
 #include "gl/readback.h"
-#include "methods/common/shader_interface.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -87,14 +86,14 @@ struct Reader {
 
 }  // namespace
 
-TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill) {
+TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill, bool ownBackground) {
     if (local.width() != tile.width() || local.height() != tile.height() || local.format() != tile.format())
         throw GlError("screen tiles: a layer's tile texture has another size or format than its own");
-    return {local.id(), tile.id(), local.format(), -1, fill};
+    return {local.id(), tile.id(), local.format(), -1, fill, ownBackground};
 }
 
 TileLayer TileLayer::ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z) {
-    return {local3d, tile3d, format, z, 0.0f};
+    return {local3d, tile3d, format, z, 0.0f, false};
 }
 
 ScreenTiles::ScreenTiles(const core::Viewport& viewport) : viewport_(viewport) {}
@@ -196,12 +195,12 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);
 
-    // The merge over the region. This piece's own layers are copied there on the GPU, with
-    // their background where it has no fragment (copyOwn); only over the box of what the
-    // other processes sent (U) is the region merged here, in rank order: a strictly nearer
-    // fragment wins, so on a tie the lowest rank keeps the pixel (as mergeByDepth). First
-    // the winner of each pixel of U (its process and the index of its values there), then
-    // each layer copied from the winners and written over U.
+    // The merge over the region, in rank order: a strictly nearer fragment wins, so on a tie
+    // the lowest rank keeps the pixel (as mergeByDepth). When every layer's own values stand
+    // for the background off this piece (TileLayer::ownBackground), they are copied over the
+    // region on the GPU and only the box of what other processes sent (U) is merged here;
+    // else the whole region. First the winner of each pixel merged (its process and the
+    // index of its values there), then each layer copied from the winners and written.
     const PixelRect& R = region_;
     std::vector<std::vector<const uint8_t*>> values(static_cast<size_t>(n));  // [process][layer]: its values' start
     std::vector<const float*> depthOf(static_cast<size_t>(n), nullptr);
@@ -237,11 +236,14 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         received_[size_t(q)] = r;
         U = U.united(r);
     }
-    best_.assign(U.area(), 1.0f);
-    winner_.assign(U.area(), -1);
-    winnerAt_.resize(U.area());
-    for (int q = 0; q < n && !U.empty(); ++q) {
-        const PixelRect r = q == me ? sent_[size_t(me)].intersect(U) : received_[size_t(q)];
+    bool ownBackground = true;
+    for (const TileLayer& l : layers) ownBackground = ownBackground && (l.ownBackground || l.local == depth.id());
+    const PixelRect M = ownBackground ? U : R;  // the pixels merged here
+    best_.assign(M.area(), 1.0f);
+    winner_.assign(M.area(), -1);
+    winnerAt_.resize(M.area());
+    for (int q = 0; q < n && !M.empty(); ++q) {
+        const PixelRect r = q == me ? sent_[size_t(me)].intersect(M) : received_[size_t(q)];
         if (r.empty()) continue;
         const PixelRect& sentRect = received_[size_t(q)];  // q's depth array covers this
         uint32_t k = 0;  // q's covered pixels so far (its values are in row order of sentRect)
@@ -253,7 +255,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                 if (!(d < 1.0f)) continue;
                 const uint32_t at = q == me ? coveredIndex(x, y) : k;
                 ++k;
-                const size_t p = size_t(y - U.y0) * size_t(U.width()) + size_t(x - U.x0);
+                const size_t p = size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0);
                 if (!(d < best_[p])) continue;
                 best_[p] = d;
                 winner_[p] = q;
@@ -262,10 +264,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     std::vector<std::vector<uint8_t>>& merged = merged_;
     merged.resize(layers.size());
-    for (size_t i = 0; i < layers.size() && !U.empty(); ++i)
+    for (size_t i = 0; i < layers.size() && !M.empty(); ++i)
         withPixelSize(formats[i].bytes, [&](auto size) {
             constexpr size_t N = decltype(size)::value;
-            merged[i].resize(U.area() * N);
+            merged[i].resize(M.area() * N);
             uint8_t background[N] = {};  // every channel `fill` (a depth layer's 1)
             const float fill = formats[i].depth ? 1.0f : layers[i].fill;
             if (formats[i].type == GL_FLOAT)
@@ -276,14 +278,14 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                     std::memcpy(&background[c * 2], &half, 2);
                 }
             uint8_t* to = merged[i].data();
-            for (size_t p = 0; p < U.area(); ++p, to += N) {
+            for (size_t p = 0; p < M.area(); ++p, to += N) {
                 const int q = winner_[p];
                 std::memcpy(to, q < 0 ? background : values[size_t(q)][i] + size_t(winnerAt_[p]) * N, N);
             }
         });
 
     // On the GPU: what the last region held and this one does not is cleared; this piece's
-    // own layers over the region; the merge over U.
+    // own layers over the region where only U is merged; the merge.
     for (size_t i = 0; i < layers.size(); ++i) {
         const PixelFormat& f = formats[i];
         if (!previous.empty() && !(previous == R) && layers[i].tile != layers[i].local) {
@@ -293,39 +295,27 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                                previous.height(), 1, f.format, GL_FLOAT, value);
         }
     }
-    copyOwn(depth, layers, R);
-    for (size_t i = 0; i < layers.size() && !U.empty(); ++i)
-        writeRect(layers[i].tile, layers[i].layer, U, formats[i], merged[i].data());
+    if (!(M == R)) copyOwn(layers, R);
+    for (size_t i = 0; i < layers.size() && !M.empty(); ++i)
+        writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged[i].data());
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
     for (int y = R.y0; y < R.y1; ++y)  // the whole surface's pixels in the region
         for (int x = R.x0; x < R.x1; ++x)
-            traffic_.coveredPixels += U.contains(x, y) ? best_[size_t(y - U.y0) * size_t(U.width()) + size_t(x - U.x0)] < 1.0f
+            traffic_.coveredPixels += M.contains(x, y) ? best_[size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0)] < 1.0f
                                                        : depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
 }
 
-// Each layer's tile over `R`: this piece's own layer, and where its `depth` is 1 (no
-// fragment) the layer's background. A depth layer is `depth` itself (its background is 1
-// already); a layer merged in place (tile = local) only has its background written.
-void ScreenTiles::copyOwn(const gl::Texture2D& depth, std::span<const TileLayer> layers, const PixelRect& R) {
+// Each layer's tile over `R`: this piece's own layer, which holds the merge's background
+// where this piece has no fragment (TileLayer::ownBackground); a layer merged in place has it
+// already.
+void ScreenTiles::copyOwn(std::span<const TileLayer> layers, const PixelRect& R) {
     if (R.empty()) return;
     for (const TileLayer& l : layers) {
-        const PixelFormat f = pixelFormatOf(l.format);
-        if (f.depth && l.local != depth.id())
-            throw GlError("screen tiles: a depth layer must be the piece's depth that the merge decides by");
+        if (l.tile == l.local) continue;
         const GLenum target = l.layer < 0 ? GL_TEXTURE_2D : GL_TEXTURE_3D;
         const int z = std::max(l.layer, 0);
-        if (l.tile != l.local)
-            glCopyImageSubData(l.local, target, 0, R.x0, R.y0, z, l.tile, target, 0, R.x0, R.y0, z, R.width(), R.height(), 1);
-        if (f.depth) continue;
-        if (!fill_) fill_ = program({{GL_COMPUTE_SHADER, "common/tile_fill.comp"}});
-        fill_.use();
-        glUniform2i(fill_.uniform("uOrigin"), R.x0, R.y0);
-        glUniform2i(fill_.uniform("uEnd"), R.x1, R.y1);
-        glUniform4f(fill_.uniform("uFill"), l.fill, l.fill, l.fill, l.fill);
-        glBindTextureUnit(bindings::kTileFillDepth, depth.id());
-        glBindImageTexture(bindings::kTileFillImage, l.tile, 0, GL_FALSE, z, GL_WRITE_ONLY, l.format);
-        dispatchPerPixel(R.width(), R.height());
+        glCopyImageSubData(l.local, target, 0, R.x0, R.y0, z, l.tile, target, 0, R.x0, R.y0, z, R.width(), R.height(), 1);
     }
 }
 

@@ -47,13 +47,19 @@ namespace flowsurf::methods {
 // and the texture of the same size and format the tile's merge goes into (`tile`; it may
 // be `local` itself): 2D textures, or one layer of two 3D textures (the hybrid's time
 // levels). Formats: float or half with 1-4 channels, or DEPTH32F. `fill`: every channel
-// off the surface (a depth layer's is 1).
+// off the surface (a depth layer's is 1). `ownBackground`: off this piece's fragments its
+// `local` may stand for the merge there: it holds `fill` (cleared where nothing is drawn) or
+// no stage reads the layer off the surface. When every layer says so (the depth layer
+// always does), the merge copies this piece's layers on the GPU and merges on the host only
+// where other processes sent pixels.
 struct TileLayer {
     GLuint local = 0, tile = 0;
     GLenum format = 0;
     int layer = -1;  // the z of 3D textures; -1: 2D textures
     float fill = 0.0f;
-    static TileLayer of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill = 0.0f);
+    bool ownBackground = false;
+    static TileLayer of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill = 0.0f,
+                        bool ownBackground = false);
     static TileLayer ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z);
 };
 
@@ -114,7 +120,7 @@ public:
     void beginFrame() { traffic_ = {}; }
 
 private:
-    void copyOwn(const gl::Texture2D& depth, std::span<const TileLayer> layers, const PixelRect& region);
+    void copyOwn(std::span<const TileLayer> layers, const PixelRect& region);
 
     core::Viewport viewport_;
     int rank_ = 0;
@@ -140,7 +146,6 @@ private:
     int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
     bool splitDue_ = false;
     TileTraffic traffic_;
-    gl::Program fill_;  // common/tile_fill.comp, made at the first merge
 };
 
 }  // namespace flowsurf::methods

@@ -47,6 +47,8 @@ public:
     // The pixels the last render can have drawn (its surface's projected bounds); outside
     // it every buffer holds the background (depth 1). The whole image after a merge.
     const PixelRect& footprint() const { return footprint_; }
+    // Whether the velocity (and position) buffers hold 0 wherever no fragment was drawn.
+    bool clearsBackground() const { return clearBackground_; }
 
     const gl::Texture2D& velocity() const { return velocity_; }
     const gl::Texture2D& shade() const { return shade_; }

@@ -90,7 +90,7 @@ void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
     timer_.begin(stageName(Stage::TileExchange));
     if (!tileVelocity_)
         tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
-    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_)};
+    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_, 0.0f, seeds_.clearsBackground())};
     if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
         if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
         layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));

@@ -98,7 +98,10 @@ void IsaRenderer::distributeTiles(const FrameInput& in) {
             d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
     }
     const SurfaceGBuffer& v = velocityImage_[vi_];
-    const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_), TileLayer::of(v.depth(), mergedDepth_[vi_])};
+    // The advection mesh reads the velocity where the depth is < 1 only: this piece's own
+    // stands for the background (the velocity image does not clear it).
+    const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_, 0.0f, true),
+                                TileLayer::of(v.depth(), mergedDepth_[vi_])};
     tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
     depthMadeWith_[vi_] = tiles_->tiles();
 }
