@@ -26,8 +26,10 @@
 // value to the process whose fragment won are flowsurf's.
 // Cost per dynamic frame and process: one read-back of depth (4 B/px) and of the layers
 // over the piece's covered rectangle; messages of 4 B per pixel of tile plus guard and the
-// layers' bytes per covered pixel; per frame 4 B per covered pixel back, the footprint's
-// 4 B per pixel outside the tile, and one float per process (the measured cost).
+// layers' bytes per covered pixel; the merge on the host over the box of what the others
+// sent (this piece's own layers copied on the GPU; the whole tile plus guard for a layer
+// whose own values cannot stand for the background); per frame 4 B per covered pixel back,
+// the footprint's 4 B per pixel outside the tile, and one float per process (the measured cost).
 #pragma once
 
 #include "core/camera.h"
