@@ -300,10 +300,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged[i].data());
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
-    for (int y = R.y0; y < R.y1; ++y)  // the whole surface's pixels in the region
+    for (int y = R.y0; y < R.y1; ++y)  // the whole surface's pixels in the region (depth_ holds fp only)
         for (int x = R.x0; x < R.x1; ++x)
             traffic_.coveredPixels += M.contains(x, y) ? best_[size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0)] < 1.0f
-                                                       : depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
+                                                       : fp.contains(x, y) && depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
 }
 
 // Each layer's tile over `R`: this piece's own layer, which holds the merge's background
