@@ -40,7 +40,7 @@ page = open(sys.argv[1]).read()
 open(sys.argv[1], "w").write(page.replace('--8<-- "LICENSE.txt"', open("LICENSE").read().strip()))
 PY
 config=$BUILD/mkdocs.yml
-sed "s|^docs_dir:.*|docs_dir: $STAGE|" mkdocs.yml > "$config"
+sed -e "s|^docs_dir:.*|docs_dir: $STAGE|" -e "s|^  - tools/docs/|  - $ROOT/tools/docs/|" mkdocs.yml > "$config"
 for extra in contrast reader_sandbox; do   # user pages kept in doc/ by their issues
   if [ -f "doc/$extra.md" ]; then
     cp "doc/$extra.md" "$STAGE/$extra.md"
