@@ -151,6 +151,15 @@ void VisibilityBuffer::rasterize(const SurfaceGpu& surface, const glm::mat4& vie
     glDisable(GL_CULL_FACE);
 }
 
+namespace {
+// The occluder cells (kVisOccluderCellPx² pixels) that hold any pixel of `pixels`.
+PixelRect cellsOver(const PixelRect& pixels) {
+    if (pixels.empty()) return {};
+    const int c = kVisOccluderCellPx;
+    return {pixels.x0 / c, pixels.y0 / c, (pixels.x1 + c - 1) / c, (pixels.y1 + c - 1) / c};
+}
+}  // namespace
+
 // Collective: the occluder cells of this frame, the same on every process: those over the
 // pixels where two pieces' footprints overlap (elsewhere no piece can hide another's
 // pixels); empty when no two overlap.
@@ -165,9 +174,7 @@ PixelRect VisibilityBuffer::occluderCellRange(ProcessGroup& group, const PixelRe
     for (size_t a = 0; a < fps.size(); ++a)
         for (size_t b = a + 1; b < fps.size(); ++b)
             if (!fps[a].empty() && !fps[b].empty()) overlap = overlap.united(fps[a].intersect(fps[b]));
-    if (overlap.empty()) return {};
-    const int c = kVisOccluderCellPx;
-    return {overlap.x0 / c, overlap.y0 / c, (overlap.x1 + c - 1) / c, (overlap.y1 + c - 1) / c};
+    return cellsOver(overlap);
 }
 
 void VisibilityBuffer::joinOcclusion(ProcessGroup& group, const core::Viewport& viewport) {
@@ -186,9 +193,7 @@ void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footpr
     const PixelRect fp = footprint.intersect({0, 0, viewport_.width, viewport_.height});
     // This piece's pixels in those cells, and the cells it can cover whole.
     const PixelRect pixels = fp.intersect({cells.x0 * c, cells.y0 * c, cells.x1 * c, cells.y1 * c});
-    const PixelRect mine = pixels.empty() ? PixelRect{}
-                                          : PixelRect{pixels.x0 / c, pixels.y0 / c, (pixels.x1 + c - 1) / c,
-                                                      (pixels.y1 + c - 1) / c};
+    const PixelRect mine = cellsOver(pixels);
     // (1) this piece's farthest depth per cell it covers whole (none elsewhere): the rows of
     // the cells, whole rows being one range of the buffer
     const GLintptr rows = GLintptr(cells.y0) * cellsX * 4;
