@@ -67,6 +67,22 @@ void withPixelSize(size_t bytes, F&& f) {
     }
 }
 
+// The index of pixel (x, y) in an array over rectangle r, rows of r.width().
+uint32_t indexIn(const PixelRect& r, int x, int y) {
+    return uint32_t(size_t(y - r.y0) * size_t(r.width()) + size_t(x - r.x0));
+}
+
+// Every layer's `local` over r, into out[layer] (nothing when r is empty).
+void readLayers(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats, const PixelRect& r,
+                std::vector<std::vector<uint8_t>>& out) {
+    out.resize(layers.size());
+    if (r.empty()) return;
+    for (size_t i = 0; i < layers.size(); ++i) {
+        out[i].resize(r.area() * formats[i].bytes);
+        readRect(layers[i].local, layers[i].layer, r, formats[i], out[i].data());
+    }
+}
+
 // Messages are plain byte strings, read in order.
 struct Reader {
     const std::vector<uint8_t>& in;
@@ -146,35 +162,29 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     const PixelRect previous = region_;
     region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect(full);
 
-    // This piece's layers over its covered rectangle.
-    std::vector<std::vector<uint8_t>>& local = local_;
-    local.resize(layers.size());
-    if (!covered.empty())
-        for (size_t i = 0; i < layers.size(); ++i) {
-            local[i].resize(covered.area() * formats[i].bytes);
-            readRect(layers[i].local, layers[i].layer, covered, formats[i], local[i].data());
-        }
-    const auto coveredIndex = [&](int x, int y) {
-        return uint32_t(size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0));
-    };
-
     // Messages: to each tile's owner, this piece over that tile plus guard: the rectangle,
     // the depth of each pixel, then each layer's bytes at the covered pixels (row order),
-    // layer after layer.
+    // layer after layer; this piece's layers read back over the box of what it sends.
     sent_.assign(size_t(n), PixelRect{});
+    PixelRect S;
+    for (int t = 0; t < n; ++t) {
+        const PixelRect& tt = tiles_[size_t(t)];
+        const PixelRect r = tt.empty() ? PixelRect{} : tt.grown(guardPx).intersect(full).intersect(covered);
+        sent_[size_t(t)] = r.empty() ? PixelRect{} : r;
+        if (t != me) S = S.united(sent_[size_t(t)]);
+    }
+    readLayers(layers, formats, S, local_);
     std::vector<std::vector<uint8_t>>& sends = sends_;
     sends.resize(size_t(n));
     for (int t = 0; t < n; ++t) {
         sends[size_t(t)].clear();
-        const PixelRect& tt = tiles_[size_t(t)];
-        const PixelRect r = tt.empty() ? PixelRect{} : tt.grown(guardPx).intersect(full).intersect(covered);
-        sent_[size_t(t)] = r.empty() ? PixelRect{} : r;
+        const PixelRect& r = sent_[size_t(t)];
         if (t == me || r.empty()) continue;
         std::vector<uint32_t>& idx = pixelIndex_;  // the covered pixels of r, in row order
         idx.clear();
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x)
-                if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) idx.push_back(coveredIndex(x, y));
+                if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) idx.push_back(indexIn(S, x, y));
         std::vector<uint8_t>& out = sends[size_t(t)];
         out.resize(16 + r.area() * 4 + idx.size() * layerBytes);
         const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
@@ -185,7 +195,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         for (size_t i = 0; i < layers.size(); ++i)
             withPixelSize(formats[i].bytes, [&](auto size) {
                 constexpr size_t N = decltype(size)::value;
-                const uint8_t* from = local[i].data();
+                const uint8_t* from = local_[i].data();
                 for (uint32_t k : idx) {
                     std::memcpy(at, from + size_t(k) * N, N);
                     at += N;
@@ -212,7 +222,6 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         keep.clear();
         if (q == me) {
             received_[size_t(q)] = sent_[size_t(me)];
-            for (size_t i = 0; i < layers.size(); ++i) values[size_t(q)].push_back(local[i].data());
             continue;
         }
         if (in[size_t(q)].empty()) continue;
@@ -239,11 +248,15 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     bool ownBackground = true;
     for (const TileLayer& l : layers) ownBackground = ownBackground && (l.ownBackground || l.local == depth.id());
     const PixelRect M = ownBackground ? U : R;  // the pixels merged here
+    // This piece's layers where they take part in the merge.
+    const PixelRect O = sent_[size_t(me)].intersect(M);
+    readLayers(layers, formats, O, own_);
+    for (size_t i = 0; i < layers.size(); ++i) values[size_t(me)].push_back(own_[i].data());
     best_.assign(M.area(), 1.0f);
     winner_.assign(M.area(), -1);
     winnerAt_.resize(M.area());
     for (int q = 0; q < n && !M.empty(); ++q) {
-        const PixelRect r = q == me ? sent_[size_t(me)].intersect(M) : received_[size_t(q)];
+        const PixelRect r = q == me ? O : received_[size_t(q)];
         if (r.empty()) continue;
         const PixelRect& sentRect = received_[size_t(q)];  // q's depth array covers this
         uint32_t k = 0;  // q's covered pixels so far (its values are in row order of sentRect)
@@ -253,7 +266,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                                         : depthOf[size_t(q)][size_t(y - sentRect.y0) * size_t(sentRect.width()) +
                                                              size_t(x - sentRect.x0)];
                 if (!(d < 1.0f)) continue;
-                const uint32_t at = q == me ? coveredIndex(x, y) : k;
+                const uint32_t at = q == me ? indexIn(O, x, y) : k;
                 ++k;
                 const size_t p = size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0);
                 if (!(d < best_[p])) continue;
@@ -300,10 +313,16 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged[i].data());
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
-    for (int y = R.y0; y < R.y1; ++y)  // the whole surface's pixels in the region (depth_ holds fp only)
-        for (int x = R.x0; x < R.x1; ++x)
-            traffic_.coveredPixels += M.contains(x, y) ? best_[size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0)] < 1.0f
-                                                       : fp.contains(x, y) && depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
+    // The whole surface's pixels in the region: the merge's in M, this piece's elsewhere
+    // (depth_ holds fp only).
+    const auto ownCovered = [&](const PixelRect& r) {
+        size_t count = 0;
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) count += depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f;
+        return count;
+    };
+    traffic_.coveredPixels += ownCovered(R.intersect(fp)) - ownCovered(M.intersect(fp)) +
+                              size_t(std::count_if(best_.begin(), best_.end(), [](float d) { return d < 1.0f; }));
 }
 
 // Each layer's tile over `R`: this piece's own layer, which holds the merge's background

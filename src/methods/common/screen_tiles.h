@@ -24,8 +24,8 @@
 // The idea of screen-space decomposition with guard pixels for a parallel surface LIC is
 // Loring, Karimabadi & Bethel (LBNL 2014); the weighted split and the return of every
 // value to the process whose fragment won are flowsurf's.
-// Cost per dynamic frame and process: one read-back of depth (4 B/px) and of the layers
-// over the piece's covered rectangle; messages of 4 B per pixel of tile plus guard and the
+// Cost per dynamic frame and process: one read-back of depth (4 B/px) over the piece's
+// footprint, and of the layers over the box of what it sends and of where it is merged; messages of 4 B per pixel of tile plus guard and the
 // layers' bytes per covered pixel; the merge on the host over the box of what the others
 // sent (this piece's own layers copied on the GPU; the whole tile plus guard for a layer
 // whose own values cannot stand for the background); per frame 4 B per covered pixel back,
@@ -137,9 +137,10 @@ private:
     std::vector<std::vector<float>> receivedDepth_;
     std::vector<float> values_;             // scratch for returnValues
     // Scratch for distribute, kept between frames (no allocation per frame): this piece's
-    // layers, the messages, the covered pixels of one message, the merge's nearest depth,
-    // winning process and its value index per pixel of the region, the merged layers.
-    std::vector<std::vector<uint8_t>> local_, sends_, merged_;
+    // layers over what it sends and over where it takes part in the merge, the messages,
+    // the covered pixels of one message, the merge's nearest depth, winning process and its
+    // value index per pixel of the region, the merged layers.
+    std::vector<std::vector<uint8_t>> local_, own_, sends_, merged_;
     std::vector<uint32_t> pixelIndex_, winnerAt_;
     std::vector<float> best_;
     std::vector<int32_t> winner_;
