@@ -9,7 +9,8 @@
 # Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
 # machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
 # (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, an oversubscribed run with
-# FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there).
+# FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there),
+# after measuring what that oversubscription costs the same work on this machine (I_N).
 # Writes OUT/calibration.txt, OUT/r<round>/<run>/{timings.json,*.png,pvbatch.log},
 # OUT/stats/np<N>/rank<r>.jsonl and OUT/results.md (scaling_report.py).
 # A run is tried up to 3 times; BENCH_TIMEOUT (900 s) bounds one, BENCH_START_TIMEOUT (300 s)
@@ -68,6 +69,30 @@ t1a=$(one); t2a=$(two); t1b=$(one); t2b=$(two)
 S_HW=$(echo "scale=3; 2 * ($t1a + $t1b) / ($t2a + $t2b)" | bc)
 echo "calibration: one copy ${t1a}/${t1b} s, two at once ${t2a}/${t2b} s: two-process speedup S_hw = $S_HW" \
   | tee "$OUT/calibration.txt" >&2
+# 2. For the oversubscribed runs (N ranks on these cores, unbound): a flowsurf loop the size
+# of one rank's share (ISA, TRIANGLES / N at the benchmark's size), its CPU time per copy when
+# N copies share the cores against one copy alone, I_N = Σ CPU(N copies) / (N CPU(one)):
+# what sharing a core costs the same work here (switches, caches, memory), the scale of the
+# ranks' Σ CPU / 1 rank. Twice each, the sums.
+cpu_of() {  # N: CPU seconds (user + system, all threads) of one run of the loop
+  /usr/bin/python3 -c 'import resource, subprocess, sys
+subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+r = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(r.ru_utime + r.ru_stime)' "$FLOWSURF" bench --methods isa --triangles "$((TRIANGLES / $1))" --sizes "$SIZE" \
+    --dynamic-only --frames 20 --no-stage-times
+}
+for n in ${STATS_RANKS//,/ }; do
+  alone=0 shared=0
+  for pass in 1 2; do
+    alone=$(echo "$alone + $(cpu_of "$n")" | bc)
+    for i in $(seq 1 "$n"); do cpu_of "$n" >"$OUT/plugin/cpu$i.txt" & done
+    wait
+    shared=$(echo "$shared + $(cat "$OUT"/plugin/cpu[0-9]*.txt | paste -sd+ | bc)" | bc)
+    rm -f "$OUT"/plugin/cpu[0-9]*.txt
+  done
+  echo "oversubscription: $n copies on $(nproc) cores, CPU per copy against one alone: I_$n = $(echo "scale=3; $shared / ($n * $alone)" | bc)" \
+    | tee -a "$OUT/calibration.txt" >&2
+done
 
 ROOTOK=()
 [ "$(id -u)" -eq 0 ] && ROOTOK=(--allow-run-as-root)

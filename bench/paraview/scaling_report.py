@@ -45,6 +45,7 @@ def timed_rows(run_dir):
 cal = open(os.path.join(OUT, 'calibration.txt')).read()
 s_hw = float(re.search(r'S_hw = ([0-9.]+)', cal).group(1))
 scale = min(1.0, s_hw / 1.9)
+inflation = {int(n): float(v) for n, v in re.findall(r'I_(\d+) = ([0-9.]+)', cal)}
 runs, paraview = {}, {}
 for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
     run = os.path.basename(os.path.dirname(path))
@@ -107,10 +108,12 @@ if stats:
     print('Timed dynamic renders only (no warm-up); CPU time of the frame loop per render, the process\'s '
           '(llvmpipe\'s threads included), summed over ranks; "outside MPI": less the time its thread spent '
           'inside the group\'s MPI calls (copies and polling while waiting: `mpi_cpu_ms`); bytes each rank '
-          'sent per render.\n')
-    print('| run | method | ranks | sum of CPU ms / 1 rank | outside MPI: sum / 1 rank | slowest rank / mean '
-          '| outside MPI: slowest / mean | MB sent per rank per render (max) |')
-    print('|---|---|---:|---:|---:|---:|---:|---:|')
+          'sent per render. I_N: the machine\'s own cost of N processes sharing its cores, the same '
+          'loop\'s CPU time per copy when N copies run at once against one alone (calibration); '
+          '"/ I_N": the sums divided by it.\n')
+    print('| run | method | ranks | sum of CPU ms / 1 rank | outside MPI: sum / 1 rank | I_N | sum / I_N '
+          '| outside MPI / I_N | slowest rank / mean | outside MPI: slowest / mean | MB sent per rank per render (max) |')
+    print('|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
     base = {}
     for d in stats:
         rows = timed_rows(d)
@@ -129,8 +132,10 @@ if stats:
             if name == 'np1':
                 base[method] = (total_cpu, total_own)
             b_cpu, b_own = base.get(method, (total_cpu, total_own))
-            print('| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f |' % (
-                name, method, len(cpu), total_cpu / b_cpu, total_own / b_own,
+            i_n = inflation.get(len(cpu), 1.0 if len(cpu) == 1 else float('nan'))
+            print('| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |' % (
+                name, method, len(cpu), total_cpu / b_cpu, total_own / b_own, i_n,
+                total_cpu / b_cpu / i_n, total_own / b_own / i_n,
                 max(cpu.values()) / (total_cpu / len(cpu)), max(own.values()) / (total_own / len(own)),
                 max(sent) / 1e6 if sent else 0))
 
