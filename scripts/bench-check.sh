@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # The speed check: a fixed set of `flowsurf bench` rows against a committed baseline taken
-# on this kind of machine (bench/baseline/llvmpipe.csv). Fails (exit 1) when a row is more
+# on this kind of machine (bench/baseline/llvmpipe-FAMILY.csv for this CPU family, e.g.
+# amd-epyc, else bench/baseline/llvmpipe.csv: bench/machine.sh's bench_baseline). Fails (exit 1) when a row is more
 # than THRESHOLD (2) x slower than its baseline on an equally fast machine, or a method's rows
 # are METHOD_THRESHOLD (1.5) x slower on their geometric mean: a method made 2x slower is
 # slower in all its 8 rows, and their mean carries about a third of one row's noise.
 #
 #   scripts/bench-check.sh                     check (needs build/apps/flowsurf: scripts/build.sh)
-#   scripts/bench-check.sh --update-baseline   measure and write the baseline, on purpose
+#   scripts/bench-check.sh --update-baseline   measure and write this CPU family's baseline
+#                                              (bench/baseline/llvmpipe-FAMILY.csv), on purpose
 #
 # Rows: ISA (R = 256), IBFVS and the hybrid (L = 31), static and dynamic case, 10k and 220k
 # triangles, 512x512, every GL path (fragment, compute), whole frames (no per-stage pass).
@@ -17,13 +19,12 @@
 # divided by that frame's ratio (bench/check/compare.py), so a machine or a moment of load
 # that is 2x slower than the baseline's is not a regression.
 #
-# Environment: FLOWSURF (default build/apps/flowsurf), BASELINE (bench/baseline/llvmpipe.csv),
+# Environment: FLOWSURF (default build/apps/flowsurf), BASELINE (this CPU family's, above),
 # THRESHOLD (2), METHOD_THRESHOLD (1.5), PASSES (3), RETRY_PASSES (2), FRAMES (8 per row),
 # BENCH_CHECK_SLOWDOWN=METHOD:K renders every frame of METHOD K times: proves the check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 F=${FLOWSURF:-build/apps/flowsurf}
-BASELINE=${BASELINE:-bench/baseline/llvmpipe.csv}
 THRESHOLD=${THRESHOLD:-2}
 METHOD_THRESHOLD=${METHOD_THRESHOLD:-1.5}
 PASSES=${PASSES:-3}
@@ -39,6 +40,8 @@ case "${1:-}" in
     "") ;;
     *) echo "usage: scripts/bench-check.sh [--update-baseline]" >&2; exit 2 ;;
 esac
+if [ "$update" = 1 ]; then BASELINE=${BASELINE:-bench/baseline/llvmpipe-$(bench_family).csv}; fi
+BASELINE=${BASELINE:-$(bench_baseline)}
 [ -x "$F" ] || { echo "bench-check: $F not found: build first (scripts/build.sh)" >&2; exit 2; }
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
