@@ -33,6 +33,8 @@ ap.add_argument('--methods', default='hybrid,isa,ibfvs')
 ap.add_argument('--parallel', default='tiles', help="FlowSurfParallel: tiles or replicate")
 ap.add_argument('--frames', type=int, default=9)
 ap.add_argument('--azimuth', type=float, default=0.5)
+ap.add_argument('--surface-raster', choices=['auto', 'gl', 'compute'], default='auto',
+                help="FlowSurfSurfaceRaster: who rasterises the surface (auto: flowsurf's rule)")
 ap.add_argument('--fxaa', choices=['default', 'on', 'off'], default='default',
                 help="the view's FXAA: ParaView's setting (on in 5.11), or forced on or off")
 args = ap.parse_args()
@@ -82,11 +84,13 @@ view.CameraViewUp, view.CameraViewAngle = [0.0, 0.0, 1.0], 30.0
 rep.SetRepresentationType('FlowSurf')
 rep.FlowSurfVectors = ['POINTS', 'V']
 rep.FlowSurfParallel = args.parallel
+rep.FlowSurfSurfaceRaster = args.surface_raster
 rep.FlowSurfFilterLength = 31
 camera = view.GetActiveCamera()
 pixel = vtkUnsignedCharArray()
 
 results = {'ranks': NRANKS, 'triangles': ntri, 'size': [W, H], 'parallel': args.parallel,
+           'surface_raster': args.surface_raster,
            'frames': args.frames, 'azimuth_deg': args.azimuth, 'fxaa': int(view.UseFXAA), 'methods': {}}
 
 

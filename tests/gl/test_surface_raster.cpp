@@ -213,18 +213,48 @@ TEST_P(SurfaceRasterSameImage, SmallAndLargeTrianglesStillAndOrbiting) {
 // graphics units) and only from its triangles per pixel on; an explicit choice is taken as given.
 TEST(SurfaceRaster, AutoRule) {
     using methods::SurfaceRaster;
-    const std::string llvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)", h100 = "NVIDIA H100 80GB HBM3/PCIe/SSE2",
-                      h200 = "NVIDIA H200/PCIe/SSE2", desktop = "NVIDIA GeForce RTX 4090/PCIe/SSE2";
+    const std::string lp = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    const methods::RendererInfo llvmpipe{lp, 2}, llvmpipe16{lp, 16}, llvmpipe1{lp, 1}, h100{"NVIDIA H100 80GB HBM3/PCIe/SSE2"},
+        h200{"NVIDIA H200/PCIe/SSE2"}, desktop{"NVIDIA GeForce RTX 4090/PCIe/SSE2"};
     const size_t pixels = 512 * 512;
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 10000, pixels));
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 1000000, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe16, 1000000, pixels));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe, 100000, pixels));  // 0.38 per pixel
+    // One core (a ParaView rank bound to its core): nothing for the compute pass to spread
+    // the triangles over; GL up to 3 triangles per pixel.
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe1, 1000000, 1024 * 1024));
+    EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe1, 500000, pixels));  // 1.9 per pixel
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, llvmpipe1, 1000000, pixels));  // 3.8 per pixel
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, h100, 100000, pixels));
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Auto, h200, 1000000, 1920 * 1080));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, h200, 1000000, 3840 * 2160));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Auto, desktop, 1000000, pixels));
     EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, desktop, 10, pixels));
+    EXPECT_TRUE(methods::useComputeRaster(SurfaceRaster::Compute, llvmpipe1, 10, pixels));
     EXPECT_FALSE(methods::useComputeRaster(SurfaceRaster::Gl, llvmpipe, 1000000, pixels));
+}
+
+// The cores the auto rule reads for llvmpipe: LP_NUM_THREADS when it is a count (0, llvmpipe's
+// "no threads", counts as 1), never more than the machine's CPUs.
+TEST(SurfaceRaster, LlvmpipeCoresFollowLpNumThreads) {
+    const methods::RendererInfo here = methods::currentRendererInfo();
+    if (here.name.find("llvmpipe") == std::string::npos) GTEST_SKIP() << "not llvmpipe: " << here.name;
+    const char* saved = std::getenv("LP_NUM_THREADS");
+    const std::string restore = saved ? saved : "";
+    const auto coresWith = [](const char* value) {
+        if (value) setenv("LP_NUM_THREADS", value, 1);
+        else unsetenv("LP_NUM_THREADS");
+        return methods::currentRendererInfo().cores;
+    };
+    const int all = coresWith(nullptr);
+    EXPECT_GE(all, 1);
+    EXPECT_EQ(coresWith("1"), 1);
+    EXPECT_EQ(coresWith("0"), 1);
+    EXPECT_EQ(coresWith("100000"), all);
+    EXPECT_EQ(coresWith("two"), all) << "not a count: ignored, as llvmpipe does";
+    if (saved) setenv("LP_NUM_THREADS", restore.c_str(), 1);
+    else unsetenv("LP_NUM_THREADS");
 }
 
 // More work groups than one dispatch dimension allows (10M triangles: 156,250 groups of 64,

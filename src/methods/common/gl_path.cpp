@@ -2,7 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <array>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
 #include <utility>
 
 namespace flowsurf::methods {
@@ -36,17 +41,34 @@ GlPath resolveGlPath(GlPath requested) {
     return glPathFor(requested, currentRenderer());
 }
 
-bool useComputeRaster(SurfaceRaster requested, std::string_view renderer, size_t triangles, size_t pixels) {
+RendererInfo currentRendererInfo() {
+    RendererInfo info{std::string(currentRenderer()), 0};
+    if (info.name.find("llvmpipe") == std::string::npos) return info;
+    // Not the CPUs this process is bound to: how mpiexec binds its processes must not
+    // change the image (the two paths differ by a fraction of a gray level).
+    int cores = int(std::thread::hardware_concurrency());
+    // LP_NUM_THREADS (llvmpipe's own variable; 0: it rasterises on the calling thread).
+    if (const char* env = std::getenv("LP_NUM_THREADS")) {
+        int threads = 0;
+        const char* end = env + std::strlen(env);
+        if (auto [ptr, ec] = std::from_chars(env, end, threads); ec == std::errc() && ptr == end && threads >= 0)
+            cores = std::min(cores, std::max(threads, 1));
+    }
+    info.cores = std::max(cores, 1);
+    return info;
+}
+
+bool useComputeRaster(SurfaceRaster requested, const RendererInfo& renderer, size_t triangles, size_t pixels) {
     if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
     for (const ComputeRasterRule& rule : kComputeRasterRule)
-        if (renderer.find(rule.renderer) != std::string_view::npos)
+        if (renderer.name.find(rule.renderer) != std::string::npos && (rule.maxCores == 0 || renderer.cores <= rule.maxCores))
             return double(triangles) >= rule.trianglesPerPixel * double(pixels);
     return false;
 }
 
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels) {
     if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
-    return useComputeRaster(requested, currentRenderer(), triangles, pixels);
+    return useComputeRaster(requested, currentRendererInfo(), triangles, pixels);
 }
 
 }  // namespace flowsurf::methods

@@ -25,7 +25,7 @@ SurfaceGBuffer::SurfaceGBuffer(const core::Viewport& viewport, bool withPosition
       program_(program({{GL_VERTEX_SHADER, "common/surface_gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/surface_gbuffer.frag"}},
                withPosition ? "#define WITH_POSITION 1\n" : "")),
       raster_(raster),
-      renderer_(currentRenderer()),
+      renderer_(currentRendererInfo()),
       targets_(withPosition ? 4 : 3),
       cullBackFaces_(cullBackFaces),
       clearBackground_(clearBackground) {

@@ -10,6 +10,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/gl_path.h"
 #include "methods/common/process_group.h"
 #include "methods/common/screen_split.h"
 #include "methods/common/surface_gpu.h"
@@ -68,7 +69,7 @@ private:
     gl::Framebuffer fbo_;
     gl::Program program_;
     SurfaceRaster raster_;
-    std::string renderer_;  // GL_RENDERER, for the auto rule of useComputeRaster
+    RendererInfo renderer_;  // for the auto rule of useComputeRaster
     std::unique_ptr<VisibilityBuffer> visibility_;  // made on first use
     gl::Program resolve_;                         // visibility buffer -> these buffers
     int targets_;

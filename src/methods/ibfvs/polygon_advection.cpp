@@ -16,7 +16,7 @@ PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonP
     : noise_(common, viewport),
       path_(resolveGlPath(common.glPath)),
       raster_(common.surfaceRaster),
-      renderer_(currentRenderer()),
+      renderer_(currentRendererInfo()),
       defines_(resampleDefine(common.resample) + noise_.defines() +
                (path_ == GlPath::Compute ? "#define ADVECT_IN_COMPUTE 1\n" : "")),
       lastFootprint_{0, 0, viewport.width, viewport.height} {

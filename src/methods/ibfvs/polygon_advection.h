@@ -15,6 +15,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/common/gl_path.h"
 #include "methods/common/noise_injection.h"
 #include "methods/common/params.h"
 #include "methods/common/render_targets.h"
@@ -72,7 +73,7 @@ private:
     gl::Framebuffer texcoordFbo_;
     // Compute raster: made on first use.
     SurfaceRaster raster_;
-    std::string renderer_;  // GL_RENDERER, for the auto rule of useComputeRaster
+    RendererInfo renderer_;  // for the auto rule of useComputeRaster
     std::string defines_;   // the draw's, for the resolve
     std::unique_ptr<VisibilityBuffer> visibility_;
     gl::Program resolve_;

@@ -9,12 +9,14 @@ namespace flowsurf::session::rows {
 
 namespace {
 
-// "on llvmpipe when triangles >= 0.5 x pixels, on H100 when ..." from the auto rule itself.
+// "on llvmpipe with at most 1 core when triangles >= 3 x pixels, on llvmpipe when ..., on
+// H100 when ..." from the auto rule itself.
 std::string computeRasterRuleText() {
     std::string text;
     for (const methods::ComputeRasterRule& rule : methods::kComputeRasterRule)
-        text += std::string(text.empty() ? "on " : ", on ") + std::string(rule.renderer) + " when triangles >= " +
-                formatDouble(rule.trianglesPerPixel) + " x pixels";
+        text += std::string(text.empty() ? "on " : ", on ") + std::string(rule.renderer) +
+                (rule.maxCores ? " with at most " + std::to_string(rule.maxCores) + (rule.maxCores == 1 ? " core" : " cores") : "") +
+                " when triangles >= " + formatDouble(rule.trianglesPerPixel) + " x pixels";
     return text;
 }
 
