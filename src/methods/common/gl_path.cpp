@@ -19,7 +19,7 @@ namespace {
 // driver has run longest.
 constexpr std::array<std::pair<std::string_view, GlPath>, 2> kAutoRule{{
     {"NVIDIA", GlPath::Compute},
-    {"llvmpipe", GlPath::Fragment},
+    {kLlvmpipe, GlPath::Fragment},
 }};
 
 }  // namespace
@@ -43,7 +43,7 @@ GlPath resolveGlPath(GlPath requested) {
 
 RendererInfo currentRendererInfo() {
     RendererInfo info{std::string(currentRenderer()), 0};
-    if (info.name.find("llvmpipe") == std::string::npos) return info;
+    if (info.name.find(kLlvmpipe) == std::string::npos) return info;
     // Not the CPUs this process is bound to: how mpiexec binds its processes must not
     // change the image (the two paths differ by a fraction of a gray level).
     int cores = int(std::thread::hardware_concurrency());

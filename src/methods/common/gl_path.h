@@ -20,6 +20,9 @@ std::string_view currentRenderer();
 // The same for the current GL context's renderer.
 GlPath resolveGlPath(GlPath requested);
 
+// Mesa's software renderer, as its GL_RENDERER starts ("llvmpipe (LLVM 15.0.6, 256 bits)").
+inline constexpr std::string_view kLlvmpipe = "llvmpipe";
+
 // What the auto rules read about a GL context's renderer, taken once per renderer object.
 // The processes of a parallel group are taken to be alike (one renderer, the same
 // LP_NUM_THREADS: `mpiexec -x LP_NUM_THREADS`), so they decide alike.
@@ -51,8 +54,8 @@ struct ComputeRasterRule {
     double trianglesPerPixel;   // compute from this many triangles per pixel
 };
 inline constexpr ComputeRasterRule kComputeRasterRule[] = {
-    {"llvmpipe", 1, 3.0},
-    {"llvmpipe", 0, 0.5},
+    {kLlvmpipe, 1, 3.0},
+    {kLlvmpipe, 0, 0.5},
     {"H100", 0, 0.25},
     {"H200", 0, 0.25},
 };
