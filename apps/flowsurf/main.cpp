@@ -140,7 +140,7 @@ CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
         std::vector<std::string> rasters;
         for (const auto& [value, name] : methods::kSurfaceRasterNames) rasters.emplace_back(name);
         benchCmd->add_option("--surface-rasters", bench.surfaceRasters, "Who rasterises the surface: each listed, "
-                                                                       "one raster column (auto: by renderer and triangles per pixel)")
+                                                                       "one raster column (auto: by renderer, its cores and triangles per pixel)")
             ->delimiter(',')->capture_default_str()->check(CLI::IsMember(rasters));
     }
     benchCmd->add_option("--enhance-contrast", bench.enhanceContrast,
