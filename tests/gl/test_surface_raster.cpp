@@ -239,7 +239,7 @@ TEST(SurfaceRaster, AutoRule) {
 // "no threads", counts as 1), never more than the machine's CPUs.
 TEST(SurfaceRaster, LlvmpipeCoresFollowLpNumThreads) {
     const methods::RendererInfo here = methods::currentRendererInfo();
-    if (here.name.find("llvmpipe") == std::string::npos) GTEST_SKIP() << "not llvmpipe: " << here.name;
+    if (here.name.find(methods::kLlvmpipe) == std::string::npos) GTEST_SKIP() << "not llvmpipe: " << here.name;
     const char* saved = std::getenv("LP_NUM_THREADS");
     const std::string restore = saved ? saved : "";
     const auto coresWith = [](const char* value) {
