@@ -228,6 +228,43 @@ TEST_P(TiledParallel, CompositeEqualsTheOneProcessImage) {
     }
 }
 
+// The rasteriser changes pixels (by under a gray level), so a group rasterises alike: when
+// one process would take the visibility buffer and the others GL's rasteriser (as ranks
+// that read different renderers or LP_NUM_THREADS would), all take GL's and the composite is
+// exactly the one-process GL image (and depth), the camera still and then orbiting.
+TEST_P(TiledParallel, TheGroupAgreesOnTheRasteriser) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere");
+    const core::SurfaceMesh& mesh = data.steps.front().mesh;
+    const core::Viewport vp{200, 160};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    const auto orbit = [cam](int k) { return core::orbitCamera(cam, 3.0f * float(std::max(0, k - 6))); };
+    methods::MethodParams gl = test::testParams();
+    gl.common.parallel = methods::ParallelMode::Tiles;
+    gl.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    gl.common.surfaceRaster = methods::SurfaceRaster::Gl;
+    methods::MethodParams compute = gl;
+    compute.common.surfaceRaster = methods::SurfaceRaster::Compute;
+    const int frames = 12;
+    const Images oneGl = renderWith(GetParam(), mesh, orbit, vp, frames, nullptr, gl);
+    const Images oneCompute = renderWith(GetParam(), mesh, orbit, vp, frames, nullptr, compute);
+    // The depths tell the rasterisers apart where the 8-bit images may not (the hybrid's).
+    ASSERT_NE(oneGl.depth, oneCompute.depth) << "the two rasterisers must differ for this test to see";
+    const std::vector<core::SurfaceMesh> pieces = sectors(mesh, 3, 0);
+    const Images all = depthComposite(inThreads(3,
+                                                [&](methods::ProcessGroup& member, int r) {
+                                                    return renderWith(GetParam(), pieces[size_t(r)], orbit, vp, frames,
+                                                                      &member, r == 1 ? compute : gl);
+                                                }),
+                                      vp);
+    auto [mean, tile] = difference(oneGl, all, vp);
+    std::printf("%s tiles, one of 3 processes asking for the visibility buffer: mean %.3f, worst tile %.3f gray "
+                "levels against the GL image\n",
+                GetParam().c_str(), mean, tile);
+    EXPECT_EQ(mean, 0.0);
+    EXPECT_EQ(tile, 0.0);
+    EXPECT_EQ(all.depth, oneGl.depth) << "every piece rasterised by GL";
+}
+
 // Pieces one behind another (sectors of the sphere seen from the side, the visibility buffer):
 // each process drops its pixels that a nearer piece covers (VisibilityBuffer::dropOccluded),
 // so that together they show hardly more pixels than the one-process image has, where each

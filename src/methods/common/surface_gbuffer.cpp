@@ -72,13 +72,17 @@ void SurfaceGBuffer::bindAndClear(const PixelRect& rect) {
 }
 
 void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders) {
-    if (surface.vertexTexture() &&
-        useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(), size_t(viewport_.width) * viewport_.height)) {
-        renderVisibility(surface, camera, occluders);
+    const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
+    const PixelRect clear = beginFootprint(surface, viewProj);
+    const bool compute = surface.vertexTexture() && useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(),
+                                                                     size_t(viewport_.width) * viewport_.height);
+    const RasterAgreement raster =
+        occluders ? VisibilityBuffer::agree(*occluders, footprint_, compute, viewport_) : RasterAgreement{compute, {}};
+    if (raster.compute) {
+        renderVisibility(surface, camera, viewProj, clear, occluders, raster.cells);
         return;
     }
-    if (occluders) VisibilityBuffer::joinOcclusion(*occluders, viewport_);
-    bindAndClear(beginFootprint(surface, camera.projection(viewport_.aspect()) * camera.view()));
+    bindAndClear(clear);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -87,7 +91,6 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     program_.use();
-    glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
     glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     glUniform4fv(program_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
@@ -101,21 +104,20 @@ void SurfaceGBuffer::render(const SurfaceGpu& surface, const core::Camera& camer
     glDisable(GL_CULL_FACE);
 }
 
-void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders) {
+void SurfaceGBuffer::renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, const glm::mat4& viewProj,
+                                      const PixelRect& clear, ProcessGroup* occluders, const PixelRect& cells) {
     if (!visibility_) {
         visibility_ = std::make_unique<VisibilityBuffer>(viewport_);
         resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/visibility_resolve.frag"}},
                            targets_ == 4 ? "#define WITH_POSITION 1\n" : "");
     }
-    const glm::mat4 view = camera.view(), viewProj = camera.projection(viewport_.aspect()) * view;
-    const PixelRect clear = beginFootprint(surface, viewProj);
     visibility_->rasterize(surface, viewProj, cullBackFaces_, clear);
-    if (occluders) visibility_->dropOccluded(*occluders, footprint_);
+    if (occluders) visibility_->dropOccluded(*occluders, cells, footprint_);
     bindAndClear(clear);
     if (footprint_.empty()) return;
     resolve_.use();
     glUniformMatrix4fv(resolve_.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-    glUniformMatrix4fv(resolve_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniformMatrix4fv(resolve_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(camera.view()));
     glUniform4fv(resolve_.uniform("uLayerDepthRow"), 1, glm::value_ptr(layerDepthRow(camera)));
     glUniform2i(resolve_.uniform("uSize"), viewport_.width, viewport_.height);
     visibility_->drawResolve(surface, footprint_);

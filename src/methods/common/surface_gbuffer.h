@@ -36,12 +36,13 @@ public:
     // depth < 1 only (ISA). Shade and mask are never cleared: every consumer (overlay, merge,
     // ParaView's composite) reads them where depth < 1 only.
     // `raster`: who rasterises (params.h SurfaceRaster), decided per render from the
-    // surface's triangle count.
+    // surface's triangle count (with `occluders`: for the whole group, VisibilityBuffer::agree).
     SurfaceGBuffer(const core::Viewport& viewport, bool withPosition, bool cullBackFaces = false,
                    bool clearBackground = true, SurfaceRaster raster = SurfaceRaster::Auto);
-    // `occluders`: collective then, the other pieces of the group hide this one's pixels
-    // behind them (VisibilityBuffer::dropOccluded: every buffer holds the background there,
-    // as if those fragments had lost a merge by depth already); null: this piece alone.
+    // `occluders`: collective then, the group agrees on the rasteriser and, on the visibility
+    // buffer, the other pieces hide this one's pixels behind them (VisibilityBuffer::
+    // dropOccluded: every buffer holds the background there, as if those fragments had lost a
+    // merge by depth already); null: this piece alone.
     void render(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders = nullptr);
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
@@ -58,7 +59,8 @@ public:
     const gl::Texture2D& position() const { return position_; }  // withPosition only
 
 private:
-    void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, ProcessGroup* occluders);
+    void renderVisibility(const SurfaceGpu& surface, const core::Camera& camera, const glm::mat4& viewProj,
+                          const PixelRect& clear, ProcessGroup* occluders, const PixelRect& cells);
     // Binds the framebuffer; clears depth and what `clearBackground` says over `rect`.
     void bindAndClear(const PixelRect& rect);
     // This render's footprint, and what must be cleared: it and the last one's.

@@ -160,32 +160,27 @@ PixelRect cellsOver(const PixelRect& pixels) {
 }
 }  // namespace
 
-// Collective: the occluder cells of this frame, the same on every process: those over the
-// pixels where two pieces' footprints overlap (elsewhere no piece can hide another's
-// pixels); empty when no two overlap.
-PixelRect VisibilityBuffer::occluderCellRange(ProcessGroup& group, const PixelRect& footprint,
-                                              const core::Viewport& viewport) {
+RasterAgreement VisibilityBuffer::agree(ProcessGroup& group, const PixelRect& footprint, bool compute,
+                                       const core::Viewport& viewport) {
     const PixelRect fp = footprint.intersect({0, 0, viewport.width, viewport.height});
-    const float mine[4] = {float(fp.x0), float(fp.y0), float(fp.x1), float(fp.y1)};  // exact in float
+    const float mine[5] = {float(fp.x0), float(fp.y0), float(fp.x1), float(fp.y1), compute ? 1.0f : 0.0f};  // exact in float
     const std::vector<float> all = group.gather(mine);
+    RasterAgreement agreed{true, {}};
     std::vector<PixelRect> fps;
-    for (size_t i = 0; i + 3 < all.size(); i += 4) fps.push_back({int(all[i]), int(all[i + 1]), int(all[i + 2]), int(all[i + 3])});
+    for (size_t i = 0; i + 4 < all.size(); i += 5) {
+        fps.push_back({int(all[i]), int(all[i + 1]), int(all[i + 2]), int(all[i + 3])});
+        agreed.compute = agreed.compute && all[i + 4] != 0.0f;
+    }
+    if (!agreed.compute) return agreed;  // GL's rasteriser drops nothing: no cells
     PixelRect overlap;
     for (size_t a = 0; a < fps.size(); ++a)
         for (size_t b = a + 1; b < fps.size(); ++b)
             if (!fps[a].empty() && !fps[b].empty()) overlap = overlap.united(fps[a].intersect(fps[b]));
-    return cellsOver(overlap);
+    agreed.cells = cellsOver(overlap);
+    return agreed;
 }
 
-void VisibilityBuffer::joinOcclusion(ProcessGroup& group, const core::Viewport& viewport) {
-    const PixelRect cells = occluderCellRange(group, {}, viewport);
-    if (cells.empty()) return;
-    std::vector<float> none(cells.area(), kNoOccluder);
-    group.minInPlace(none);
-}
-
-void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& footprint) {
-    const PixelRect cells = occluderCellRange(group, footprint, viewport_);
+void VisibilityBuffer::dropOccluded(ProcessGroup& group, const PixelRect& cells, const PixelRect& footprint) {
     if (cells.empty()) return;
     const glm::ivec2 grid = occluderCells(viewport_);
     const int cellsX = grid.x, c = kVisOccluderCellPx;

@@ -35,6 +35,12 @@ inline constexpr int kVisOccluderCellPx = 8;
 // rows. visibility_raster.comp numbers its triangles row by row.
 glm::uvec2 workGroupGrid(size_t groups, size_t maxX);
 
+// What the processes of a group settle before each rasterises its piece (VisibilityBuffer::agree).
+struct RasterAgreement {
+    bool compute = false;  // the visibility buffer on every process (else GL's rasteriser on every one)
+    PixelRect cells;       // the occluder cells, when compute (may be empty: no footprints overlap)
+};
+
 class VisibilityBuffer {
 public:
     explicit VisibilityBuffer(const core::Viewport& viewport);
@@ -43,21 +49,26 @@ public:
     // `clear`: the pixels whose depth and id are reset first (where the last and this
     // surface can be; elsewhere they hold none already). Its rows are cleared whole.
     void rasterize(const SurfaceGpu& surface, const glm::mat4& viewProj, bool cullBackFaces, const PixelRect& clear);
-    // Collective over `group`, between rasterize and a resolve (sort-last occlusion between
-    // pieces): forgets this piece's pixels that another piece hides. The processes share
-    // their footprints (what each render can cover); where two overlap, every process finds
-    // per screen cell of kVisOccluderCellPx² the farthest depth of its piece where the piece
-    // covers the whole cell; the group's least of these per cell is an occluder, and a pixel
-    // of this piece strictly farther than its cell's occluder is dropped (depth and id none):
-    // a nearer fragment of another piece wins that pixel in every merge by depth, so the
-    // merged image is unchanged while the resolve and everything after it skip the pixel.
-    // Cost: a gather of 4 floats per process; where footprints overlap, two passes over
-    // this piece's part of the overlap and a minimum over the group of one float per cell
-    // there (at most 64 KB at 1024²).
-    void dropOccluded(ProcessGroup& group, const PixelRect& footprint);
-    // The same collective step for a process that rasterised with GL this frame: it hides
-    // nothing and drops nothing.
-    static void joinOcclusion(ProcessGroup& group, const core::Viewport& viewport);
+    // Collective over `group`, before rasterize: every process's footprint (what its piece
+    // can cover this render) and its rule's choice of rasteriser (`compute`:
+    // useComputeRaster's answer; no for a piece the vertex textures cannot hold). The group
+    // rasterises with the visibility buffer only when every process chose it — the path
+    // changes pixels, so it is the group's, not a piece's — and then gets the occluder cells
+    // dropOccluded works on: those over the pixels where two footprints overlap (elsewhere no
+    // piece can hide another's pixels). Cost: a gather of 5 floats per process.
+    static RasterAgreement agree(ProcessGroup& group, const PixelRect& footprint, bool compute,
+                                 const core::Viewport& viewport);
+    // Collective over `group` (when agree chose the visibility buffer), between rasterize and
+    // a resolve (sort-last occlusion between pieces): forgets this piece's pixels that
+    // another piece hides. In each of `cells` (agree's, kVisOccluderCellPx² pixels each) every
+    // process finds the farthest depth of its piece where the piece covers the whole cell;
+    // the group's least of these per cell is an occluder, and a pixel of this piece strictly
+    // farther than its cell's occluder is dropped (depth and id none): a nearer fragment of
+    // another piece wins that pixel in every merge by depth, so the merged image is
+    // unchanged while the resolve and everything after it skip the pixel. Cost: two passes
+    // over this piece's part of the cells and a minimum over the group of one float per cell
+    // (at most 64 KB at 1024²).
+    void dropOccluded(ProcessGroup& group, const PixelRect& cells, const PixelRect& footprint);
     // Binds the vertex and triangle textures and the depth and id buffers for a resolve pass.
     void bind(const SurfaceGpu& surface) const;
     // Runs the current program (a resolve: a full-screen triangle writing gl_FragDepth) over
@@ -67,7 +78,6 @@ public:
 
 private:
     void ensureCapacity(size_t triangles);
-    static PixelRect occluderCellRange(ProcessGroup& group, const PixelRect& footprint, const core::Viewport& viewport);
 
     core::Viewport viewport_;
     gl::Buffer depth_, ids_, indirect_, deferred_, deferredIds_, covering_;

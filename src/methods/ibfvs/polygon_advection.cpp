@@ -50,12 +50,8 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
                              const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo,
                              const gl::Texture2D& depth, float flowBackground, bool cullBackFaces,
                              const NoiseStep& noise, ProcessGroup* occluders) {
-    // As SurfaceGBuffer: the rule counts the whole surface's triangles (every process decides alike).
-    lastVisibility_ = surface.vertexTexture() && useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(),
-                                                                  size_t(viewport.width) * viewport.height);
     const Views views{camera.view(), camera.projection(viewport.aspect()) * camera.view(),
                       prevCamera.viewProjection(viewport.aspect()), dt};
-    const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
     // Where this surface can be, and what the last one can have left (the buffers hold the
     // background elsewhere). Tiles (`occluders`): the clears and the per-pixel pass cover
     // just that, F_a keeping stale texels elsewhere, which nothing reads: the history comes
@@ -65,8 +61,14 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     const PixelRect drawn = lastFootprint_.united(footprint_);
     lastFootprint_ = footprint_;
     const PixelRect work = occluders ? drawn : PixelRect{0, 0, viewport.width, viewport.height};
-    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, drawn, occluders);
-    else if (occluders) VisibilityBuffer::joinOcclusion(*occluders, viewport);
+    // As SurfaceGBuffer: the rule counts the whole surface's triangles; a group agrees.
+    const bool compute = surface.vertexTexture() && useComputeRaster(raster_, renderer_, surface.wholeTriangleCount(),
+                                                                     size_t(viewport.width) * viewport.height);
+    const RasterAgreement raster =
+        occluders ? VisibilityBuffer::agree(*occluders, footprint_, compute, viewport) : RasterAgreement{compute, {}};
+    lastVisibility_ = raster.compute;
+    const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
+    if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, drawn, occluders, raster.cells);
     const bool advectHere = path_ != GlPath::Compute;  // the fragments resample and inject
     clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground, work);
     surfacePass.use();
@@ -128,11 +130,11 @@ void PolygonAdvection::draw(const SurfaceGpu& surface, bool cullBackFaces) const
 
 void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj,
                                            const core::Viewport& viewport, bool cullBackFaces, const PixelRect& clear,
-                                           ProcessGroup* occluders) {
+                                           ProcessGroup* occluders, const PixelRect& cells) {
     if (!visibility_) visibility_ = std::make_unique<VisibilityBuffer>(viewport);
     // Cleared where this or the last surface can be (elsewhere it holds no triangle already).
     visibility_->rasterize(surface, viewProj, cullBackFaces, clear);
-    if (occluders) visibility_->dropOccluded(*occluders, footprint_);
+    if (occluders) visibility_->dropOccluded(*occluders, cells, footprint_);
 }
 
 void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const {

@@ -37,8 +37,8 @@ public:
                      std::initializer_list<FlowPingPong::Attachment> shared);
     // `prevCamera` projects the pathline points into the previous F_a. `nextFlowFbo`:
     // `nextFlow` at colour attachment 0 with the shared attachments; `depth` the shared depth.
-    // `occluders`: collective then, this piece's pixels that the group's other pieces hide
-    // are skipped (SurfaceGBuffer::render's).
+    // `occluders`: collective then, the group agrees on the rasteriser and this piece's
+    // pixels that the group's other pieces hide are skipped (SurfaceGBuffer::render's).
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
                const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, const gl::Texture2D& depth,
@@ -59,7 +59,8 @@ private:
     static void setViews(const gl::Program& program, const Views& views);
     void draw(const SurfaceGpu& surface, bool cullBackFaces) const;
     void rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj, const core::Viewport& viewport,
-                             bool cullBackFaces, const PixelRect& clear, ProcessGroup* occluders);
+                             bool cullBackFaces, const PixelRect& clear, ProcessGroup* occluders,
+                             const PixelRect& cells);
     // Over the bound target, from the visibility buffer, with the resolve program in use.
     void resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const;
     // The surface program of this apply: the draw's, or the resolve's (made on first use).
