@@ -42,6 +42,7 @@ void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, b
     { "warmup", warmup }, { "dynamic", method.lastFrameDynamic() },
     { "wall_ms", clockMs(CLOCK_MONOTONIC) - wallMs_ }, { "cpu_ms", clockMs(CLOCK_PROCESS_CPUTIME_ID) - cpuMs_ },
     { "mpi_cpu_ms", group ? group->mpiCpuMs() - mpiCpuMs_ : 0.0 },
+    { "oversubscribed", group && group->oversubscribed() },
     { "bytes_sent", t.bytesSent }, { "bytes_received", t.bytesReceived }, { "tile_px", t.tilePixels },
     { "guard_px", t.guardPixels }, { "covered_px", t.coveredPixels } };
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();
