@@ -255,6 +255,7 @@ bool VtkProcessGroup::any(bool flag)
 std::unique_ptr<VtkProcessGroup> parallelGroup()
 {
   // ParaView's processes are MPI's when there are more than one (pvbatch, pvserver).
+  // Collective (the constructor): made by a mapper's first render, on every process at once.
   auto* c = vtkMPIController::SafeDownCast(vtkMultiProcessController::GetGlobalController());
   if (!c || c->GetNumberOfProcesses() < 2)
   {

@@ -19,6 +19,7 @@ namespace flowsurf::paraview {
 
 class VtkProcessGroup : public methods::ProcessGroup {
 public:
+  // Collective over the controller's processes (counts those that share this node).
   explicit VtkProcessGroup(vtkMPIController* controller);
   int rank() const override;
   int size() const override;
