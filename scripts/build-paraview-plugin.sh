@@ -6,7 +6,7 @@
 #   xvfb-run -a pvbatch --force-offscreen-rendering script.py   # script: LoadPlugin(PLUGIN)
 #
 # What it does (idempotent):
-#  1. installs paraview, paraview-dev, xvfb, xauth, openmpi-bin with
+#  1. installs paraview, paraview-dev, libopenmpi-dev, xvfb, xauth, openmpi-bin with
 #     --no-install-recommends (paraview recommends python3-paraview, which conflicts with
 #     libvtk9-dev / python3-vtk9); refuses if apt would remove anything.
 #  2. unpacks python3-paraview into a private prefix (bench/paraview/setup.sh, dpkg -x,
@@ -36,7 +36,7 @@ if [ "$(id -u)" != 0 ] && command -v sudo >/dev/null 2>&1; then SUDO="sudo"; fi
 
 # --- 1. Debian packages ------------------------------------------------------------------
 t0=$SECONDS
-"$ROOT/scripts/apt-install.sh" paraview paraview-dev xvfb xauth openmpi-bin python3-numpy cmake g++ pkg-config \
+"$ROOT/scripts/apt-install.sh" paraview paraview-dev libopenmpi-dev xvfb xauth openmpi-bin python3-numpy cmake g++ pkg-config \
     libglm-dev libepoxy-dev libegl-dev
 log "packages ready ($((SECONDS - t0)) s)"
 
