@@ -13,6 +13,7 @@
 #include <chrono>
 #include <memory>
 #include <numeric>
+#include <span>
 #include <string>
 #include <thread>
 
@@ -56,7 +57,7 @@ void check(int mpiResult, const char* what)
 constexpr std::chrono::microseconds kSpin{ 100 };
 constexpr std::chrono::microseconds kNap{ 50 };
 
-void waitAll(std::vector<MPI_Request>& requests, bool nap, const char* what)
+void waitAll(std::span<MPI_Request> requests, bool nap, const char* what)
 {
   const auto start = std::chrono::steady_clock::now();
   for (;;)
@@ -95,8 +96,7 @@ VtkProcessGroup::VtkProcessGroup(vtkMPIController* controller)
 
 void VtkProcessGroup::wait(MPI_Request request, const char* what)
 {
-  std::vector<MPI_Request> one{ request };
-  waitAll(one, oversubscribed_, what);
+  waitAll({ &request, 1 }, oversubscribed_, what);
 }
 
 int VtkProcessGroup::rank() const
