@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <mutex>
 #include <vector>
 
 namespace flowsurf::gl {
@@ -38,6 +39,25 @@ EGLContext makeContext(EGLDisplay dpy) {
         return EGL_NO_CONTEXT;
     }
     return ctx;
+}
+
+// Mesa (22.3) fills its table of depth/stencil texture-store functions on the process's first
+// depth upload, unguarded (texstore_depth_stencil: clear the table, fill it, set a flag): two
+// contexts on two threads making their first depth upload at once can read the table while
+// the other clears it, and call a null function. Threads of one group (methods::ThreadGroup)
+// do exactly that, so the first context of the process makes one depth upload alone, before
+// it is handed out. Harmless on drivers without the table.
+void fillDriverTablesOnce() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        GLuint t = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &t);
+        glTextureStorage2D(t, 1, GL_DEPTH_COMPONENT32F, 1, 1);
+        const float one = 1.0f;
+        glTextureSubImage2D(t, 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        glFinish();
+        glDeleteTextures(1, &t);
+    });
 }
 
 }  // namespace
@@ -90,6 +110,7 @@ HeadlessContext::HeadlessContext(bool verbose) {
             tried += (tried.empty() ? "" : "; ") + description_ + ": below 4.5";
             continue;
         }
+        fillDriverTablesOnce();
         if (verbose) std::fprintf(stderr, "flowsurf: OpenGL on %s\n", description_.c_str());
         return;
     }
