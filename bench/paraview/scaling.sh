@@ -4,15 +4,19 @@
 # each rank bound to its own core; the machine's own two-process speedup first.
 #
 #   bench/paraview/scaling.sh [--triangles 1000000] [--size 1024x1024] [--rounds 5]
-#       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8] [--fxaa default|on|off]
+#       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8] [--stats-rounds 3]
+#       [--fxaa default|on|off]
 #
 # Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
 # machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
-# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, an oversubscribed run with
+# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, oversubscribed runs with
 # FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there),
-# after measuring what that oversubscription costs the same work on this machine (I_N).
+# after measuring what that oversubscription costs the same work on this machine (I_N): in
+# --stats-rounds rounds of 1 rank then N ranks tiles per count (interleaved: each round's sums
+# are divided by the same round's 1-rank run; this machine's speed drifts by up to a quarter
+# between runs minutes apart), N ranks replicate in the first round only.
 # Writes OUT/calibration.txt, OUT/r<round>/<run>/{timings.json,*.png,pvbatch.log},
-# OUT/stats/np<N>/rank<r>.jsonl and OUT/results.md (scaling_report.py).
+# OUT/stats/r<round>/np<N>_<mode>/rank<r>.jsonl and OUT/results.md (scaling_report.py).
 # A run is tried up to 3 times; BENCH_TIMEOUT (900 s) bounds one, BENCH_START_TIMEOUT (300 s)
 # its wait for the first render (ParaView's start-up hang).
 set -euo pipefail
@@ -25,6 +29,7 @@ FRAMES=9
 METHODS=hybrid,isa,ibfvs
 OUT="$ROOT/out/paraview_scaling"
 STATS_RANKS=""
+STATS_ROUNDS=3
 FXAA=default
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -35,6 +40,7 @@ while [ $# -gt 0 ]; do
     --methods) METHODS=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --ranks-stats) STATS_RANKS=$2; shift 2 ;;
+    --stats-rounds) STATS_ROUNDS=$2; shift 2 ;;
     --fxaa) FXAA=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
@@ -139,16 +145,20 @@ done
 echo "== 1 rank, llvmpipe's 2 threads" >&2
 LP_NUM_THREADS=2 run "$OUT/np1_lp2" 1 tiles "${FREE[@]}" || true
 export FLOWSURF_RANK_STATS
-if [ -n "$STATS_RANKS" ]; then
-  rm -rf "$OUT/stats" && mkdir -p "$OUT/stats/np1"
-  FLOWSURF_RANK_STATS="$OUT/stats/np1" run "$OUT/stats/np1/run" 1 tiles "${FREE[@]}" || true
-fi
-for n in ${STATS_RANKS//,/ }; do
-  echo "== $n ranks, oversubscribed: per-rank CPU time (FLOWSURF_RANK_STATS)" >&2
-  for mode in tiles replicate; do
-    mkdir -p "$OUT/stats/np${n}_$mode"
-    FLOWSURF_RANK_STATS="$OUT/stats/np${n}_$mode" run "$OUT/stats/np${n}_$mode/run" "$n" "$mode" \
-      "${FREE[@]}" --oversubscribe --mca mpi_yield_when_idle 1 || true
+if [ -n "$STATS_RANKS" ]; then rm -rf "$OUT/stats"; fi
+stats_run() {  # ROUND NAME NP MODE: one run with FLOWSURF_RANK_STATS into OUT/stats/r<ROUND>/<NAME>
+  local dir="$OUT/stats/r$1/$2" np=$3 mode=$4 extra=()
+  mkdir -p "$dir"
+  if [ "$np" -gt 1 ]; then extra=(--oversubscribe --mca mpi_yield_when_idle 1); fi
+  FLOWSURF_RANK_STATS="$dir" run "$dir/run" "$np" "$mode" "${FREE[@]}" "${extra[@]}" || true
+}
+for r in $(seq 1 "$STATS_ROUNDS"); do
+  [ -n "$STATS_RANKS" ] || break
+  echo "== stats round $r: 1 rank, then ${STATS_RANKS} ranks oversubscribed (FLOWSURF_RANK_STATS)" >&2
+  stats_run "$r" np1 1 tiles
+  for n in ${STATS_RANKS//,/ }; do
+    stats_run "$r" "np${n}_tiles" "$n" tiles
+    if [ "$r" -eq 1 ]; then stats_run "$r" "np${n}_replicate" "$n" replicate; fi
   done
 done
 echo "load at end: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/plugin/info.txt" >&2

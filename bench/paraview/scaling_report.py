@@ -6,7 +6,7 @@ against the issue's bars scaled by the machine's two-process speedup (min(1, S_h
 ParaView's own frame (its Outline representation's render time in the same run, when
 recorded); whether each 2-rank image is
 byte-identical to the 1-rank image; and, when present, the per-rank CPU accounting of the
-oversubscribed runs (FLOWSURF_RANK_STATS)."""
+oversubscribed runs (FLOWSURF_RANK_STATS), round by round against the same round's 1-rank run."""
 import filecmp
 import glob
 import json
@@ -102,74 +102,105 @@ if first:
                                                      os.path.basename(png)))
     print('%d of %d identical.\n' % (same, total))
 
-stats = sorted(glob.glob(os.path.join(OUT, 'stats', '*')))
-if stats:
+def rank_sums(run_dir):
+    """Per method of a FLOWSURF_RANK_STATS run: Σ over ranks of each rank's median CPU ms per
+    render, the same outside MPI, the slowest rank / mean of both, the most bytes a rank sent."""
+    rows = timed_rows(run_dir)
+    out = {}
+    for method in sorted({r['method'] for r in rows}):
+        per_rank, outside, sent = {}, {}, []
+        for r in rows:
+            if r['method'] == method:
+                per_rank.setdefault(r['rank'], []).append(r['cpu_ms'])
+                outside.setdefault(r['rank'], []).append(r['cpu_ms'] - r.get('mpi_cpu_ms', 0.0))
+                sent.append(r['bytes_sent'])
+        cpu = {k: statistics.median(v) for k, v in per_rank.items()}
+        own = {k: statistics.median(v) for k, v in outside.items()}
+        out[method] = {'ranks': len(cpu), 'cpu': sum(cpu.values()), 'own': sum(own.values()),
+                       'slowest': max(cpu.values()) / (sum(cpu.values()) / len(cpu)),
+                       'slowest_own': max(own.values()) / (sum(own.values()) / len(own)),
+                       'sent': max(sent) / 1e6 if sent else 0.0}
+    return out
+
+
+def spread(values, fmt='%.2f'):
+    """The median of `values`, and their range when there are several."""
+    m = fmt % statistics.median(values)
+    return m if fmt % min(values) == fmt % max(values) else '%s (%s–%s)' % (m, fmt % min(values), fmt % max(values))
+
+
+stat_rounds = sorted(glob.glob(os.path.join(OUT, 'stats', 'r*')), key=lambda d: int(os.path.basename(d)[1:]))
+if stat_rounds:
     print('## Oversubscribed: per-rank CPU time (FLOWSURF_RANK_STATS)\n')
     print('Timed dynamic renders only (no warm-up); CPU time of the frame loop per render, the process\'s '
           '(llvmpipe\'s threads included), summed over ranks; "outside MPI": less the time its thread spent '
           'inside the group\'s MPI calls (copies and polling while waiting: `mpi_cpu_ms`); bytes each rank '
-          'sent per render. I_N: the machine\'s own cost of N processes sharing its cores, the same '
-          'loop\'s CPU time per copy when N copies run at once against one alone (calibration); '
-          '"/ I_N": the sums divided by it.\n')
+          'sent per render. %d round(s), each a 1-rank run then the N-rank runs: each ratio is a round\'s '
+          'sum over the same round\'s 1-rank sum; the median over the rounds, their range in brackets. '
+          'I_N: the machine\'s own cost of N processes sharing its cores, the same loop\'s CPU time per copy '
+          'when N copies run at once against one alone (calibration); "/ I_N": the median divided by it.\n'
+          % len(stat_rounds))
     print('| run | method | ranks | sum of CPU ms / 1 rank | outside MPI: sum / 1 rank | I_N | sum / I_N '
           '| outside MPI / I_N | slowest rank / mean | outside MPI: slowest / mean | MB sent per rank per render (max) |')
     print('|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
-    base = {}
-    for d in stats:
-        rows = timed_rows(d)
-        name = os.path.basename(d)
-        for method in sorted({r['method'] for r in rows}):
-            per_rank, outside = {}, {}
-            sent = []
-            for r in rows:
-                if r['method'] == method:
-                    per_rank.setdefault(r['rank'], []).append(r['cpu_ms'])
-                    outside.setdefault(r['rank'], []).append(r['cpu_ms'] - r.get('mpi_cpu_ms', 0.0))
-                    sent.append(r['bytes_sent'])
-            cpu = {k: statistics.median(v) for k, v in per_rank.items()}
-            own = {k: statistics.median(v) for k, v in outside.items()}
-            total_cpu, total_own = sum(cpu.values()), sum(own.values())
-            if name == 'np1':
-                base[method] = (total_cpu, total_own)
-            b_cpu, b_own = base.get(method, (total_cpu, total_own))
-            i_n = inflation.get(len(cpu), 1.0 if len(cpu) == 1 else float('nan'))
-            print('| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |' % (
-                name, method, len(cpu), total_cpu / b_cpu, total_own / b_own, i_n,
-                total_cpu / b_cpu / i_n, total_own / b_own / i_n,
-                max(cpu.values()) / (total_cpu / len(cpu)), max(own.values()) / (total_own / len(own)),
-                max(sent) / 1e6 if sent else 0))
+    ratios = {}  # (run, method) -> lists over the rounds
+    for rd in stat_rounds:
+        base = rank_sums(os.path.join(rd, 'np1'))
+        for d in sorted(glob.glob(os.path.join(rd, 'np*'))):
+            for method, v in rank_sums(d).items():
+                if method not in base:
+                    continue
+                acc = ratios.setdefault((os.path.basename(d), method), {'ranks': v['ranks']})
+                for key, value in (('cpu', v['cpu'] / base[method]['cpu']), ('own', v['own'] / base[method]['own']),
+                                   ('slowest', v['slowest']), ('slowest_own', v['slowest_own']), ('sent', v['sent'])):
+                    acc.setdefault(key, []).append(value)
+    order = lambda item: (int(re.match(r'np(\d+)', item[0][0]).group(1)), item[0])
+    for (name, method), acc in sorted(ratios.items(), key=order):
+        i_n = inflation.get(acc['ranks'], 1.0 if acc['ranks'] == 1 else float('nan'))
+        print('| %s | %s | %d | %s | %s | %.2f | %.2f | %.2f | %s | %s | %.2f |' % (
+            name, method, acc['ranks'], spread(acc['cpu']), spread(acc['own']), i_n,
+            statistics.median(acc['cpu']) / i_n, statistics.median(acc['own']) / i_n,
+            spread(acc['slowest']), spread(acc['slowest_own']), max(acc['sent'])))
 
-    same, total = identical([p for p in glob.glob(os.path.join(OUT, 'stats', 'np*', 'run', '*.png'))
-                             if '/np1/' not in p],
-                            lambda png: os.path.join(OUT, 'stats', 'np1', 'run', os.path.basename(png)))
+    same = total = 0
+    for rd in stat_rounds:
+        s_, t_ = identical([p for p in glob.glob(os.path.join(rd, 'np*', 'run', '*.png')) if '/np1/' not in p],
+                           lambda png, rd=rd: os.path.join(rd, 'np1', 'run', os.path.basename(png)))
+        same, total = same + s_, total + t_
     if total:
-        print('\nImages of these runs (last render of each method) byte-identical to the 1-rank run\'s: %d of %d.'
-              % (same, total))
+        print('\nImages of these runs (last render of each method) byte-identical to the same round\'s 1-rank '
+              'run\'s: %d of %d.' % (same, total))
 
     # Where the extra work goes: each stage's CPU time summed over the ranks (medians per rank),
-    # against the same stage at one rank; "other": the frame loop outside the timed stages.
-    staged = {}
-    for d in stats:
-        rows = [r for r in timed_rows(d) if r.get('stages_cpu_ms')]
-        for r in rows:
-            r['stages_cpu_ms']['other'] = r['cpu_ms'] - sum(r['stages_cpu_ms'].values())
-        for method in {r['method'] for r in rows}:
-            per = {}
+    # against the same stage at one rank, the median over the rounds; "other": the frame loop
+    # outside the timed stages.
+    staged = {}  # method -> run -> stage -> [Σ per round]
+    for rd in stat_rounds:
+        for d in glob.glob(os.path.join(rd, 'np*')):
+            rows = [r for r in timed_rows(d) if r.get('stages_cpu_ms')]
             for r in rows:
-                if r['method'] == method:
-                    for stage, ms in r['stages_cpu_ms'].items():
-                        per.setdefault(stage, {}).setdefault(r['rank'], []).append(ms)
-            staged.setdefault(method, {})[os.path.basename(d)] = {
-                stage: sum(statistics.median(v) for v in ranks.values()) for stage, ranks in per.items()}
+                r['stages_cpu_ms']['other'] = r['cpu_ms'] - sum(r['stages_cpu_ms'].values())
+            for method in {r['method'] for r in rows}:
+                per = {}
+                for r in rows:
+                    if r['method'] == method:
+                        for stage, ms in r['stages_cpu_ms'].items():
+                            per.setdefault(stage, {}).setdefault(r['rank'], []).append(ms)
+                run_ = staged.setdefault(method, {}).setdefault(os.path.basename(d), {})
+                for stage, ranks in per.items():
+                    run_.setdefault(stage, []).append(sum(statistics.median(v) for v in ranks.values()))
     if staged:
-        print('\nEach stage\'s CPU ms per render summed over the ranks (synchronous stage timing, medians per rank):\n')
+        print('\nEach stage\'s CPU ms per render summed over the ranks (synchronous stage timing, medians per '
+              'rank; the median over the rounds):\n')
         for method in sorted(staged):
-            runs_ = [n for n in sorted(staged[method]) if n == 'np1' or n.endswith('tiles')]
+            runs_ = sorted([n for n in staged[method] if n == 'np1' or n.endswith('tiles')],
+                           key=lambda n: int(re.match(r'np(\d+)', n).group(1)))
             stages_ = []
             for n in runs_:
                 stages_ += [s for s in staged[method][n] if s not in stages_]
+            med = {n: {s: statistics.median(v) for s, v in staged[method][n].items()} for n in runs_}
             print('| %s | %s |' % (method, ' | '.join(runs_)))
             print('|---|%s' % ('---:|' * len(runs_)))
             for s in stages_:
-                print('| %s | %s |' % (s, ' | '.join('%.1f' % staged[method][n].get(s, 0.0) for n in runs_)))
-            print('| **total** | %s |\n' % ' | '.join('%.1f' % sum(staged[method][n].values()) for n in runs_))
+                print('| %s | %s |' % (s, ' | '.join('%.1f' % med[n].get(s, 0.0) for n in runs_)))
+            print('| **total** | %s |\n' % ' | '.join('%.1f' % sum(med[n].values()) for n in runs_))
