@@ -9,7 +9,8 @@
 #
 # Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
 # machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
-# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, oversubscribed runs with
+# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, oversubscribed runs (the ranks
+# bound round-robin to the cores) with
 # FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there),
 # after measuring what that oversubscription costs the same work on this machine (I_N): in
 # --stats-rounds rounds of 1 rank then N ranks tiles per count (interleaved: each round's sums
@@ -75,13 +76,14 @@ t1a=$(one); t2a=$(two); t1b=$(one); t2b=$(two)
 S_HW=$(echo "scale=3; 2 * ($t1a + $t1b) / ($t2a + $t2b)" | bc)
 echo "calibration: one copy ${t1a}/${t1b} s, two at once ${t2a}/${t2b} s: two-process speedup S_hw = $S_HW" \
   | tee "$OUT/calibration.txt" >&2
-# 2. For the oversubscribed runs (N ranks on these cores, unbound): a flowsurf loop the size
+# 2. For the oversubscribed runs (N ranks bound round-robin to these cores): a flowsurf loop the size
 # of one rank's share (ISA, TRIANGLES / N at the benchmark's size), its CPU time per copy when
 # N copies share the cores against one copy alone, I_N = Σ CPU(N copies) / (N CPU(one)):
 # what sharing a core costs the same work here (switches, caches, memory), the scale of the
-# ranks' Σ CPU / 1 rank. Twice each, the sums.
-cpu_of() {  # N: CPU seconds (user + system, all threads) of one run of the loop
-  /usr/bin/python3 -c 'import resource, subprocess, sys
+# ranks' Σ CPU / 1 rank. Each copy bound like the ranks (copy i to core i mod cores, the one
+# alone to core 0). Twice each, the sums.
+cpu_of() {  # N CORE: CPU seconds (user + system, all threads) of one run of the loop on CORE
+  taskset -c "$2" /usr/bin/python3 -c 'import resource, subprocess, sys
 subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
 r = resource.getrusage(resource.RUSAGE_CHILDREN)
 print(r.ru_utime + r.ru_stime)' "$FLOWSURF" bench --methods isa --triangles "$((TRIANGLES / $1))" --sizes "$SIZE" \
@@ -90,8 +92,8 @@ print(r.ru_utime + r.ru_stime)' "$FLOWSURF" bench --methods isa --triangles "$((
 for n in ${STATS_RANKS//,/ }; do
   alone=0 shared=0
   for pass in 1 2; do
-    alone=$(echo "$alone + $(cpu_of "$n")" | bc)
-    for i in $(seq 1 "$n"); do cpu_of "$n" >"$OUT/plugin/cpu$i.txt" & done
+    alone=$(echo "$alone + $(cpu_of "$n" 0)" | bc)
+    for i in $(seq 1 "$n"); do cpu_of "$n" "$((i % $(nproc)))" >"$OUT/plugin/cpu$i.txt" & done
     wait
     shared=$(echo "$shared + $(cat "$OUT"/plugin/cpu[0-9]*.txt | paste -sd+ | bc)" | bc)
     rm -f "$OUT"/plugin/cpu[0-9]*.txt
@@ -104,6 +106,12 @@ ROOTOK=()
 [ "$(id -u)" -eq 0 ] && ROOTOK=(--allow-run-as-root)
 BOUND=(mpiexec "${ROOTOK[@]}" --bind-to core --map-by core -x LP_NUM_THREADS -x PYTHONPATH)
 FREE=(mpiexec "${ROOTOK[@]}" --bind-to none -x LP_NUM_THREADS -x PYTHONPATH -x FLOWSURF_RANK_STATS)
+# The oversubscribed runs: ranks bound round-robin to the cores, several to a core, as the
+# 1-rank run of their rounds is bound to one. Unbound, a rank's GL thread and llvmpipe's
+# rasteriser thread run on two cores and hand work across them: measured, a 1-rank render
+# costs 5-10 % more CPU so (and varies more), which made earlier ratios look lower.
+SHARED=(mpiexec "${ROOTOK[@]}" --bind-to core:overload-allowed --map-by core -x LP_NUM_THREADS -x PYTHONPATH
+        -x FLOWSURF_RANK_STATS)
 run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
   local dir=$1 np=$2 mode=$3
   shift 3
@@ -150,7 +158,7 @@ stats_run() {  # ROUND NAME NP MODE: one run with FLOWSURF_RANK_STATS into OUT/s
   local dir="$OUT/stats/r$1/$2" np=$3 mode=$4 extra=()
   mkdir -p "$dir"
   if [ "$np" -gt 1 ]; then extra=(--oversubscribe --mca mpi_yield_when_idle 1); fi
-  FLOWSURF_RANK_STATS="$dir" run "$dir/run" "$np" "$mode" "${FREE[@]}" "${extra[@]}" || true
+  FLOWSURF_RANK_STATS="$dir" run "$dir/run" "$np" "$mode" "${SHARED[@]}" "${extra[@]}" || true
 }
 for r in $(seq 1 "$STATS_ROUNDS"); do
   [ -n "$STATS_RANKS" ] || break
