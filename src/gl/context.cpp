@@ -1,6 +1,7 @@
 #include "gl/context.h"
 
 #include "core/errors.h"
+#include "gl/objects.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -50,13 +51,10 @@ EGLContext makeContext(EGLDisplay dpy) {
 void fillDriverTablesOnce() {
     static std::once_flag once;
     std::call_once(once, [] {
-        GLuint t = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &t);
-        glTextureStorage2D(t, 1, GL_DEPTH_COMPONENT32F, 1, 1);
+        const Texture2D depth(GL_DEPTH_COMPONENT32F, 1, 1, GL_NEAREST);
         const float one = 1.0f;
-        glTextureSubImage2D(t, 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        glTextureSubImage2D(depth.id(), 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
         glFinish();
-        glDeleteTextures(1, &t);
     });
 }
 
