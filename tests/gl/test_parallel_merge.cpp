@@ -333,6 +333,41 @@ TEST_P(TiledParallel, ContrastStretchEqualsTheOneProcessImage) {
     }
 }
 
+// A camera that pans and backs away (the surface slides and shrinks on screen, leaving
+// pixels that other pieces covered a frame before inside a tile's guard band): what each
+// process merged there last frame must not stand in for the background now (the velocity
+// images are merged in place, ScreenTiles::written). 2 and 4 processes, the composite exactly
+// the one-process image.
+TEST_P(TiledParallel, PanningCameraLeavesNoOtherPiecesBehind) {
+    const core::Dataset data = core::makeBuiltin("builtin:sphere");
+    const core::SurfaceMesh& mesh = data.steps.front().mesh;
+    const core::Viewport vp{200, 160};
+    const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
+    const auto pan = [cam](int k) {
+        core::Camera c = cam;
+        const glm::vec3 back = c.eye - c.target;
+        const glm::vec3 right = glm::normalize(glm::cross(c.up, back));
+        const float s = float(std::max(0, k - 4));
+        const glm::vec3 shift = right * (0.06f * s * glm::length(back) * std::tan(glm::radians(c.fovDeg) / 2.0f));
+        c.target += shift;
+        c.eye = c.target + back * (1.0f + 0.05f * s);
+        return c;
+    };
+    methods::MethodParams params = test::testParams();
+    params.common.parallel = methods::ParallelMode::Tiles;
+    params.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    const int frames = 12;
+    const Images one = renderWith(GetParam(), mesh, pan, vp, frames, nullptr, params);
+    for (int parts : {2, 4}) {
+        const Images all = renderInParallel(GetParam(), sectors(mesh, parts, 0), pan, vp, frames, params);
+        auto [mean, tile] = difference(one, all, vp);
+        std::printf("%s tiles, panning and backing camera, %d processes: mean %.3f, worst tile %.3f gray levels\n",
+                    GetParam().c_str(), parts, mean, tile);
+        EXPECT_EQ(mean, 0.0) << parts << " processes";
+        EXPECT_EQ(tile, 0.0) << parts << " processes";
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, TiledParallel, ::testing::Values("isa", "ibfvs", "hybrid"),
                          [](const auto& info) { return info.param; });
 

@@ -311,6 +311,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     if (!(M == R)) copyOwn(layers, R);
     for (size_t i = 0; i < layers.size() && !M.empty(); ++i)
         writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged[i].data());
+    written_ = M;
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
     // The whole surface's pixels in the region: the merge's in M, this piece's elsewhere

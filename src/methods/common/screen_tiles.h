@@ -47,8 +47,10 @@ namespace flowsurf::methods {
 
 // One of the per-pixel buffers an image stage reads: this process's own render (`local`)
 // and the texture of the same size and format the tile's merge goes into (`tile`; it may
-// be `local` itself): 2D textures, or one layer of two 3D textures (the hybrid's time
-// levels). Formats: float or half with 1-4 channels, or DEPTH32F. `fill`: every channel
+// be `local` itself: merged in place, which saves a copy over the region and a texture,
+// where nothing reads this piece's own values after the merge; written() says where its
+// own values were replaced): 2D textures, or one layer of two 3D textures (the hybrid's
+// time levels). Formats: float or half with 1-4 channels, or DEPTH32F. `fill`: every channel
 // off the surface (a depth layer's is 1). `ownBackground`: off this piece's fragments its
 // `local` may stand for the merge there: it holds `fill` (cleared where nothing is drawn) or
 // no stage reads the layer off the surface. When every layer says so (the depth layer
@@ -115,6 +117,9 @@ public:
     // This process's tile (where its image stages run) and the tile plus guard.
     const PixelRect& tile() const { return tiles_[size_t(rank_)]; }
     const PixelRect& region() const { return region_; }
+    // Where the last distribute wrote the merge (within region()); a layer merged in place
+    // holds other processes' values or its `fill` there.
+    const PixelRect& written() const { return written_; }
     const std::vector<PixelRect>& tiles() const { return tiles_; }
     bool ready() const { return !tiles_.empty(); }
     // What this process sent and received since the last beginFrame().
@@ -128,6 +133,7 @@ private:
     int rank_ = 0;
     std::vector<PixelRect> tiles_;          // every process's tile
     PixelRect region_;                      // this process's tile plus guard, in the viewport
+    PixelRect written_;                     // where the last merge was written
     std::vector<float> depth_;              // this process's own depth (full image, bottom-up)
     // This process's message to tile owner t covered sent_[t] (its coverage there is depth_).
     std::vector<PixelRect> sent_;

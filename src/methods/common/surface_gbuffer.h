@@ -51,6 +51,9 @@ public:
     const PixelRect& footprint() const { return footprint_; }
     // Whether the velocity (and position) buffers hold 0 wherever no fragment was drawn.
     bool clearsBackground() const { return clearBackground_; }
+    // Another stage wrote over `rect` of these buffers (ScreenTiles merging in place): the
+    // next render clears it too, so that off its own fragments they hold the background again.
+    void overwritten(const PixelRect& rect) { lastFootprint_ = lastFootprint_.united(rect); }
 
     const gl::Texture2D& velocity() const { return velocity_; }
     const gl::Texture2D& shade() const { return shade_; }

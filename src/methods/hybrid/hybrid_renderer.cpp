@@ -85,22 +85,21 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 
 // The whole surface's seeds (and time levels) over this process's tile and the streaks'
 // reach; the seeds' depth decides every layer's nearest fragment. Also when the measured
-// costs call for a new split (a still camera).
+// costs call for a new split (a still camera). The velocity and the levels are merged in
+// place: after the merge only the tracing reads them (the overlay reads this piece's depth,
+// shade and mask); the next seed pass clears what the merge wrote off this piece.
 void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
     timer_.begin(stageName(Stage::TileExchange));
-    if (!tileVelocity_)
-        tileVelocity_ = gl::Texture2D(seeds_.velocity().format(), viewport_.width, viewport_.height, GL_LINEAR);
-    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), tileVelocity_, 0.0f, seeds_.clearsBackground())};
+    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), seeds_.velocity(), 0.0f, seeds_.clearsBackground())};
     if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
         if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
         layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
     }
-    if (unsteady) {
-        if (tileLevels_.count() != levels_.count()) tileLevels_ = VelocityLevels::Volume(viewport_, levels_.count());
+    if (unsteady)
         for (int j = 0; j < levels_.count(); ++j)
-            layers.push_back(TileLayer::ofLayer(levels_.texture(), tileLevels_.id(), VelocityLevels::kFormat, j));
-    }
+            layers.push_back(TileLayer::ofLayer(levels_.texture(), levels_.texture(), VelocityLevels::kFormat, j));
     tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
+    seeds_.overwritten(tiles_->written());
 }
 
 // Stage (3) into lic_: over the whole image, or (tiles) over this process's tile, whose
@@ -108,7 +107,7 @@ void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
 void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef) {
     const CommonParams& c = params_.common;
     TracingInput t;
-    t.seedVelocity = tiled ? &tileVelocity_ : &seeds_.velocity();
+    t.seedVelocity = &seeds_.velocity();
     if (tiled) t.pixels = tiles_->tile().empty() ? PixelRect{0, 0, 0, 0} : tiles_->tile();
     t.noise = noise_.texture();
     t.noiseSize = noise_.size();
@@ -120,7 +119,7 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool ti
     t.noiseScalePx = c.noise.scale;
     if (unsteady) {
         const TimeLevels& lv = *in.levels;
-        t.velocityLevels = tiled ? tileLevels_.id() : levels_.texture();
+        t.velocityLevels = levels_.texture();
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }

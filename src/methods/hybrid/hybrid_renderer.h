@@ -51,12 +51,11 @@ private:
     core::Camera seedCamera_;
     bool haveLevels_ = false;
     TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
-    // parallel = tiles (screen_tiles.h): this process's tile and the seeds' velocity image
-    // merged over it plus the streaks' reach (guardPx); made on the first parallel frame.
+    // parallel = tiles (screen_tiles.h): this process's tile, and the seeds' velocity image
+    // and (unsteady) the time levels merged in place over it plus the streaks' reach
+    // (guardPx); made on the first parallel frame.
     std::unique_ptr<ScreenTiles> tiles_;
-    gl::Texture2D tileVelocity_;
     gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
-    VelocityLevels::Volume tileLevels_;  // unsteady: the time levels merged over the tile
     int guardPx() const;
     // Stages of renderFrame (hybrid_renderer.cpp).
     void distributeTiles(const FrameInput& in, bool unsteady);

@@ -92,15 +92,14 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
 // Tiles: the whole surface's velocity and depth over this tile plus a grid cell.
 void IsaRenderer::distributeTiles(const FrameInput& in) {
     timer_.begin(stageName(Stage::TileExchange));
-    if (!tileVelocity_) {
-        tileVelocity_ = gl::Texture2D(GL_RGBA32F, viewport_.width, viewport_.height, GL_NEAREST);
+    if (!mergedDepth_[0])
         for (gl::Texture2D& d : mergedDepth_)
             d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-    }
     const SurfaceGBuffer& v = velocityImage_[vi_];
-    // The advection mesh reads the velocity where the depth is < 1 only: this piece's own
-    // stands for the background (the velocity image does not clear it).
-    const TileLayer layers[] = {TileLayer::of(v.velocity(), tileVelocity_, 0.0f, true),
+    // The advection mesh reads the velocity where the merged depth is < 1 only: this piece's
+    // own stands for the background (the velocity image does not clear it), and the merge
+    // goes into it (the overlay reads this piece's depth, shade and mask, not its velocity).
+    const TileLayer layers[] = {TileLayer::of(v.velocity(), v.velocity(), 0.0f, true),
                                 TileLayer::of(v.depth(), mergedDepth_[vi_])};
     tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
     depthMadeWith_[vi_] = tiles_->tiles();
@@ -130,7 +129,7 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     // Tiles: the vertices this tile's pixels interpolate, the only ones it reads.
     const std::optional<PixelRect> vertices = tiled ? std::optional(meshVertices(tiles_->tile())) : std::nullopt;
     const auto computeMesh = [&] {
-        advectionMesh_.compute(tiled ? tileVelocity_ : velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
+        advectionMesh_.compute(velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
                                in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
                                params_.isa.edgeEpsilon, vertices);
     };

@@ -63,12 +63,12 @@ private:
     bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
     // parallel = tiles (screen_tiles.h): this process advects its own tile. The velocity
-    // image merged over the tile plus one grid cell (the mesh vertices it interpolates),
+    // image merged in place over the tile plus one grid cell (the mesh vertices it
+    // interpolates; nothing reads this piece's own velocity after the merge),
     // the whole surface's depth per velocity image over the same (and, where the edge test
     // reads it as the source depth, over the mesh's footprint, pulled from its makers), and
     // of F_a the tile and what its pixels read (pulled each frame).
     std::unique_ptr<ScreenTiles> tiles_;
-    gl::Texture2D tileVelocity_;
     gl::Texture2D mergedDepth_[2];
     // The split each F_a texture was made with (its owners, from whom a process pulls the
     // part its tile reads), and this tile's footprint in the source F_a.
