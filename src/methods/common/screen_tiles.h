@@ -27,8 +27,8 @@
 // Cost per dynamic frame and process: one read-back of depth (4 B/px) over the piece's
 // footprint, and of the layers over the box of what it sends and of where it is merged; messages of 4 B per pixel of tile plus guard and the
 // layers' bytes per covered pixel; the merge on the host over the box of what the others
-// sent (this piece's own layers copied on the GPU; the whole tile plus guard for a layer
-// whose own values cannot stand for the background); per frame 4 B per covered pixel back,
+// sent (this piece's own layers copied on the GPU unless merged in place; the whole tile
+// plus guard for a layer whose own values cannot stand for the background); per frame 4 B per covered pixel back,
 // the footprint's 4 B per pixel outside the tile, and one float per process (the measured cost).
 #pragma once
 
