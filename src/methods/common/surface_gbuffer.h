@@ -47,7 +47,7 @@ public:
     // Collective: every buffer merged by depth over `group` (process_group.h).
     void merge(ProcessGroup& group);
     // The pixels the last render can have drawn (its surface's projected bounds); outside
-    // it every buffer holds the background (depth 1). The whole image after a merge.
+    // it the depth holds the background (1). The whole image after a merge.
     const PixelRect& footprint() const { return footprint_; }
     // Whether the velocity (and position) buffers hold 0 wherever no fragment was drawn.
     bool clearsBackground() const { return clearBackground_; }
