@@ -166,6 +166,16 @@ std::vector<core::SurfaceMesh> sectors(const core::SurfaceMesh& mesh, int parts,
     return pieces;
 }
 
+// The test parameters in the tiles mode. The colour map's range is the speeds' 98th
+// percentile, which the pieces' shared seam vertices shift in the last bit (the same in
+// replicate mode): lit gray here.
+methods::MethodParams tiledParams() {
+    methods::MethodParams params = test::testParams();
+    params.common.parallel = methods::ParallelMode::Tiles;
+    params.common.colormap = methods::Colormap::None;
+    return params;
+}
+
 // `pieces` as one mesh, each seam's vertices in it twice (what ParaView's client renders when
 // the server delivers a split surface's geometry).
 core::SurfaceMesh appended(const std::vector<core::SurfaceMesh>& pieces) {
@@ -207,11 +217,7 @@ TEST_P(TiledParallel, CompositeEqualsTheOneProcessImage) {
         return c;
     };
     const int frames = 30;
-    methods::MethodParams params = test::testParams();
-    params.common.parallel = methods::ParallelMode::Tiles;
-    // The colour map's range is the speeds' 98th percentile, which the pieces' shared seam
-    // vertices shift in the last bit (the same in replicate mode): lit gray here.
-    params.common.colormap = methods::Colormap::None;
+    methods::MethodParams params = tiledParams();
     // GL's rasteriser (auto, on this small sphere) and the visibility buffer (each piece its own).
     for (methods::SurfaceRaster raster : {methods::SurfaceRaster::Auto, methods::SurfaceRaster::Compute}) {
         params.common.surfaceRaster = raster;
@@ -238,9 +244,7 @@ TEST_P(TiledParallel, TheGroupAgreesOnTheRasteriser) {
     const core::Viewport vp{200, 160};
     const core::Camera cam = core::fitCamera(data.bounds(), vp, {0.3f, 0.4f, 1.0f});
     const auto orbit = [cam](int k) { return core::orbitCamera(cam, 3.0f * float(std::max(0, k - 6))); };
-    methods::MethodParams gl = test::testParams();
-    gl.common.parallel = methods::ParallelMode::Tiles;
-    gl.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    methods::MethodParams gl = tiledParams();
     gl.common.surfaceRaster = methods::SurfaceRaster::Gl;
     methods::MethodParams compute = gl;
     compute.common.surfaceRaster = methods::SurfaceRaster::Compute;
@@ -276,9 +280,7 @@ TEST_P(TiledParallel, PiecesBehindOthersDropTheirPixels) {
     const core::Viewport vp{320, 256};
     const core::Camera cam = core::fitCamera(data.bounds(), vp, {1.0f, 0.3f, 0.2f});
     const auto orbit = [cam](int k) { return core::orbitCamera(cam, 3.0f * float(std::max(0, k - 6))); };
-    methods::MethodParams params = test::testParams();
-    params.common.parallel = methods::ParallelMode::Tiles;
-    params.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    methods::MethodParams params = tiledParams();
     params.common.surfaceRaster = methods::SurfaceRaster::Compute;
     const int frames = 12;
     const Images one = renderWith(GetParam(), mesh, orbit, vp, frames, nullptr, params);
@@ -318,9 +320,7 @@ TEST_P(TiledParallel, ContrastStretchEqualsTheOneProcessImage) {
                                      std::sin(angle) * d.x + std::cos(angle) * d.y, d.z);
         return c;
     };
-    methods::MethodParams params = test::testParams();
-    params.common.parallel = methods::ParallelMode::Tiles;
-    params.common.colormap = methods::Colormap::None;  // as above
+    methods::MethodParams params = tiledParams();
     params.common.enhanceContrast = methods::EnhanceContrast::Texture;
     const Images one = renderWith(GetParam(), mesh, orbit, vp, 16, nullptr, params);
     for (auto [parts, empty] : {std::pair{2, 0}, {3, 1}}) {
@@ -353,9 +353,7 @@ TEST_P(TiledParallel, PanningCameraLeavesNoOtherPiecesBehind) {
         c.eye = c.target + back * (1.0f + 0.05f * s);
         return c;
     };
-    methods::MethodParams params = test::testParams();
-    params.common.parallel = methods::ParallelMode::Tiles;
-    params.common.colormap = methods::Colormap::None;  // as CompositeEqualsTheOneProcessImage
+    methods::MethodParams params = tiledParams();
     const int frames = 12;
     const Images one = renderWith(GetParam(), mesh, pan, vp, frames, nullptr, params);
     for (int parts : {2, 4}) {
@@ -381,9 +379,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, TiledParallel, ::testing::Values("isa", "ibfvs
 // vertices twice) outlines no seam either.
 TEST(TiledParallelEdgeMask, OutlinesEqualTheOneProcessImage) {
     const core::Viewport vp{240, 200};
-    methods::MethodParams params = test::testParams();
-    params.common.parallel = methods::ParallelMode::Tiles;
-    params.common.colormap = methods::Colormap::None;  // see CompositeEqualsTheOneProcessImage
+    methods::MethodParams params = tiledParams();
     params.ibfvs.edgeMask = true;
     for (const char* scene : {"builtin:sphere", "builtin:tori"}) {
         const core::Dataset data = core::makeBuiltin(scene);
