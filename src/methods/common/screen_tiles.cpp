@@ -141,14 +141,22 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     const int cellsX = (w + kCellPx - 1) / kCellPx, cellsY = (h + kCellPx - 1) / kCellPx;
     std::vector<float> weight(size_t(cellsX) * size_t(cellsY), 0.0f);
-    PixelRect covered{w, h, 0, 0};
-    for (int y = fp.y0; y < fp.y1; ++y)
-        for (int x = fp.x0; x < fp.x1; ++x)
-            if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) {
-                weight[size_t(y / kCellPx) * size_t(cellsX) + size_t(x / kCellPx)] += 1.0f;
-                covered = {std::min(covered.x0, x), std::min(covered.y0, y), std::max(covered.x1, x + 1),
-                           std::max(covered.y1, y + 1)};
-            }
+    PixelRect covered;
+    for (int y = fp.y0; y < fp.y1; ++y) {
+        const float* row = depth_.data() + size_t(y) * size_t(w);
+        int x0 = fp.x0, x1 = fp.x1;  // the row's first and last covered pixel
+        while (x0 < x1 && !(row[x0] < 1.0f)) ++x0;
+        while (x1 > x0 && !(row[x1 - 1] < 1.0f)) --x1;
+        if (x0 == x1) continue;
+        covered = covered.united({x0, y, x1, y + 1});
+        float* cells = weight.data() + size_t(y / kCellPx) * size_t(cellsX);
+        for (int x = x0; x < x1;) {  // cell by cell
+            const int end = std::min(x1, (x / kCellPx + 1) * kCellPx);
+            int count = 0;
+            for (; x < end; ++x) count += row[x] < 1.0f;
+            cells[(end - 1) / kCellPx] += float(count);
+        }
+    }
     group.sumInPlace(weight);  // counts: exact in float, the same sum on every process
     // The image stages cost mostly per surface pixel; a little per pixel keeps empty
     // screen parts from collapsing into one tile.
@@ -177,16 +185,21 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     std::vector<std::vector<uint8_t>>& sends = sends_;
     sends.resize(size_t(n));
     for (int t = 0; t < n; ++t) {
-        sends[size_t(t)].clear();
         const PixelRect& r = sent_[size_t(t)];
-        if (t == me || r.empty()) continue;
+        std::vector<uint8_t>& out = sends[size_t(t)];
+        if (t == me || r.empty()) {
+            out.clear();
+            continue;
+        }
         std::vector<uint32_t>& idx = pixelIndex_;  // the covered pixels of r, in row order
         idx.clear();
-        for (int y = r.y0; y < r.y1; ++y)
+        for (int y = r.y0; y < r.y1; ++y) {
+            const float* row = depth_.data() + size_t(y) * size_t(w);
+            const uint32_t rowAt = indexIn(S, r.x0, y);
             for (int x = r.x0; x < r.x1; ++x)
-                if (depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f) idx.push_back(indexIn(S, x, y));
-        std::vector<uint8_t>& out = sends[size_t(t)];
-        out.resize(16 + r.area() * 4 + idx.size() * layerBytes);
+                if (row[x] < 1.0f) idx.push_back(rowAt + uint32_t(x - r.x0));
+        }
+        out.resize(16 + r.area() * 4 + idx.size() * layerBytes);  // all written below
         const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
         std::memcpy(out.data(), header, 16);
         uint8_t* at = out.data() + 16;
@@ -230,8 +243,8 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         const PixelRect r = rd.rect();
         if (r.empty() || !(r.intersect(R) == r))
             throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
-        keep.resize(r.area());
-        std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
+        const float* depths = reinterpret_cast<const float*>(rd.take(r.area() * 4));
+        keep.assign(depths, depths + r.area());
         depthOf[size_t(q)] = keep.data();
         size_t count = 0;
         for (float d : keep) count += d < 1.0f;
@@ -256,24 +269,28 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     winner_.assign(M.area(), -1);
     winnerAt_.resize(M.area());
     for (int q = 0; q < n && !M.empty(); ++q) {
-        const PixelRect r = q == me ? O : received_[size_t(q)];
+        const bool own = q == me;
+        const PixelRect r = own ? O : received_[size_t(q)];
         if (r.empty()) continue;
-        const PixelRect& sentRect = received_[size_t(q)];  // q's depth array covers this
-        uint32_t k = 0;  // q's covered pixels so far (its values are in row order of sentRect)
-        for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x) {
-                const float d = q == me ? depth_[size_t(y) * size_t(w) + size_t(x)]
-                                        : depthOf[size_t(q)][size_t(y - sentRect.y0) * size_t(sentRect.width()) +
-                                                             size_t(x - sentRect.x0)];
+        // q's values are in row order of its covered pixels: of O for this process (own_),
+        // of the rectangle it sent (r itself) for another.
+        uint32_t k = 0;
+        for (int y = r.y0; y < r.y1; ++y) {
+            const float* depth = own ? depth_.data() + size_t(y) * size_t(w) + size_t(r.x0)
+                                     : depthOf[size_t(q)] + indexIn(r, r.x0, y);
+            const size_t rowAt = indexIn(M, r.x0, y);
+            for (int i = 0; i < r.width(); ++i) {
+                const float d = depth[i];
                 if (!(d < 1.0f)) continue;
-                const uint32_t at = q == me ? indexIn(O, x, y) : k;
+                const uint32_t at = own ? indexIn(O, r.x0 + i, y) : k;
                 ++k;
-                const size_t p = size_t(y - M.y0) * size_t(M.width()) + size_t(x - M.x0);
+                const size_t p = rowAt + size_t(i);
                 if (!(d < best_[p])) continue;
                 best_[p] = d;
                 winner_[p] = q;
                 winnerAt_[p] = at;
             }
+        }
     }
     std::vector<std::vector<uint8_t>>& merged = merged_;
     merged.resize(layers.size());
@@ -396,27 +413,32 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
     const PixelFormat f = pixelFormatOf(values.format());
     if (f.bytes != 4 || f.type != GL_FLOAT) throw GlError("screen tiles: returned values must be R32F");
     const PixelRect& T = tile();
-    std::vector<float> mine(T.area());
+    std::vector<float>& mine = tileValues_;
+    mine.resize(T.area());
     if (!T.empty()) readRect(values, T, f, mine.data());
 
     // To each process q, the values at the pixels of this tile that q covers, in row order.
-    std::vector<std::vector<uint8_t>> sends(static_cast<size_t>(n));
+    std::vector<std::vector<uint8_t>>& sends = sends_;
+    sends.resize(size_t(n));
     for (int q = 0; q < n; ++q) {
-        if (q == me) continue;
+        std::vector<uint8_t>& out = sends[size_t(q)];
         const PixelRect r = received_[size_t(q)].intersect(T);
-        if (r.empty()) continue;
+        out.resize(q == me ? 0 : r.area() * 4);  // at most; cut to what is written
+        if (out.empty()) continue;
         const PixelRect& qr = received_[size_t(q)];
-        const std::vector<float>& qd = receivedDepth_[size_t(q)];
-        std::vector<float> values;
-        values.reserve(r.area());
-        for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x)
-                if (qd[size_t(y - qr.y0) * size_t(qr.width()) + size_t(x - qr.x0)] < 1.0f)
-                    values.push_back(mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)]);
-        if (values.empty()) continue;
-        sends[size_t(q)].resize(values.size() * 4);
-        std::memcpy(sends[size_t(q)].data(), values.data(), values.size() * 4);
-        traffic_.bytesSent += sends[size_t(q)].size();
+        const float* qd = receivedDepth_[size_t(q)].data();
+        uint8_t* at = out.data();
+        for (int y = r.y0; y < r.y1; ++y) {
+            const float* depth = qd + indexIn(qr, r.x0, y);
+            const float* value = mine.data() + indexIn(T, r.x0, y);
+            for (int i = 0; i < r.width(); ++i)
+                if (depth[i] < 1.0f) {
+                    std::memcpy(at, &value[i], 4);
+                    at += 4;
+                }
+        }
+        out.resize(size_t(at - out.data()));
+        traffic_.bytesSent += out.size();
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);
 
@@ -432,14 +454,24 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
         if (r.empty()) continue;
         Reader rd{in[size_t(t)]};
         if (t != me) traffic_.bytesReceived += in[size_t(t)].size();
-        for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x) {
-                if (!(depth_[size_t(y) * size_t(w) + size_t(x)] < 1.0f)) continue;
-                float v;
-                if (t == me) v = mine[size_t(y - T.y0) * size_t(T.width()) + size_t(x - T.x0)];
-                else std::memcpy(&v, rd.take(4), 4);
-                values_[size_t(y - covered.y0) * size_t(covered.width()) + size_t(x - covered.x0)] = v;
+        for (int y = r.y0; y < r.y1; ++y) {
+            const float* depth = depth_.data() + size_t(y) * size_t(w) + size_t(r.x0);
+            float* to = values_.data() + indexIn(covered, r.x0, y);
+            if (t == me) {
+                const float* from = mine.data() + indexIn(T, r.x0, y);
+                for (int i = 0; i < r.width(); ++i)
+                    if (depth[i] < 1.0f) to[i] = from[i];
+                continue;
             }
+            int count = 0;  // the row's covered pixels: their values are next in t's message
+            for (int i = 0; i < r.width(); ++i) count += depth[i] < 1.0f;
+            const uint8_t* from = rd.take(size_t(count) * 4);
+            for (int i = 0; i < r.width(); ++i)
+                if (depth[i] < 1.0f) {
+                    std::memcpy(&to[i], from, 4);
+                    from += 4;
+                }
+        }
     }
     writeRect(values, covered, f, values_.data());
 }

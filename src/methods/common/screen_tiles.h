@@ -141,7 +141,7 @@ private:
     // sends q the values where q's depth < 1).
     std::vector<PixelRect> received_;
     std::vector<std::vector<float>> receivedDepth_;
-    std::vector<float> values_;             // scratch for returnValues
+    std::vector<float> values_, tileValues_;  // scratch for returnValues
     // Scratch for distribute, kept between frames (no allocation per frame): this piece's
     // layers over what it sends and over where it takes part in the merge, the messages,
     // the covered pixels of one message, the merge's nearest depth, winning process and its
