@@ -418,15 +418,20 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
     if (!T.empty()) readRect(values, T, f, mine.data());
 
     // To each process q, the values at the pixels of this tile that q covers, in row order.
-    std::vector<std::vector<uint8_t>>& sends = sends_;
+    std::vector<std::vector<uint8_t>>& sends = returns_;
     sends.resize(size_t(n));
     for (int q = 0; q < n; ++q) {
         std::vector<uint8_t>& out = sends[size_t(q)];
-        const PixelRect r = received_[size_t(q)].intersect(T);
-        out.resize(q == me ? 0 : r.area() * 4);  // at most; cut to what is written
-        if (out.empty()) continue;
+        const PixelRect r = q == me ? PixelRect{} : received_[size_t(q)].intersect(T);
         const PixelRect& qr = received_[size_t(q)];
         const float* qd = receivedDepth_[size_t(q)].data();
+        size_t count = 0;
+        for (int y = r.y0; y < r.y1; ++y) {
+            const float* depth = qd + indexIn(qr, r.x0, y);
+            for (int i = 0; i < r.width(); ++i) count += depth[i] < 1.0f;
+        }
+        out.resize(count * 4);
+        if (out.empty()) continue;
         uint8_t* at = out.data();
         for (int y = r.y0; y < r.y1; ++y) {
             const float* depth = qd + indexIn(qr, r.x0, y);
@@ -437,7 +442,6 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
                     at += 4;
                 }
         }
-        out.resize(size_t(at - out.data()));
         traffic_.bytesSent += out.size();
     }
     std::vector<std::vector<uint8_t>> in = group.exchange(sends);

@@ -143,10 +143,11 @@ private:
     std::vector<std::vector<float>> receivedDepth_;
     std::vector<float> values_, tileValues_;  // scratch for returnValues
     // Scratch for distribute, kept between frames (no allocation per frame): this piece's
-    // layers over what it sends and over where it takes part in the merge, the messages,
+    // layers over what it sends and over where it takes part in the merge, the messages
+    // (returns_: returnValues'; apart, so that neither regrows, zeroed, every frame),
     // the covered pixels of one message, the merge's nearest depth, winning process and its
     // value index per pixel of the region, the merged layers.
-    std::vector<std::vector<uint8_t>> local_, own_, sends_, merged_;
+    std::vector<std::vector<uint8_t>> local_, own_, sends_, returns_, merged_;
     std::vector<uint32_t> pixelIndex_, winnerAt_;
     std::vector<float> best_;
     std::vector<int32_t> winner_;
