@@ -232,19 +232,18 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     PixelRect U;
     for (int q = 0; q < n; ++q) {
         std::vector<float>& keep = receivedDepth_[size_t(q)];
-        keep.clear();
-        if (q == me) {
-            received_[size_t(q)] = sent_[size_t(me)];
+        if (q == me || in[size_t(q)].empty()) {
+            keep.clear();
+            if (q == me) received_[size_t(q)] = sent_[size_t(me)];
             continue;
         }
-        if (in[size_t(q)].empty()) continue;
         traffic_.bytesReceived += in[size_t(q)].size();
         Reader rd{in[size_t(q)]};
         const PixelRect r = rd.rect();
         if (r.empty() || !(r.intersect(R) == r))
             throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
-        const float* depths = reinterpret_cast<const float*>(rd.take(r.area() * 4));
-        keep.assign(depths, depths + r.area());
+        keep.resize(r.area());  // kept from the last frame: only growth is zero-filled
+        std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
         depthOf[size_t(q)] = keep.data();
         size_t count = 0;
         for (float d : keep) count += d < 1.0f;
