@@ -118,8 +118,9 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
   mkdir -p "$dir"
   local attempt pid waited
   for attempt in 1 2 3; do
-    # In its own session, so that a hang is ended with everything it started.
-    setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24" \
+    # In its own session, so that a hang is ended with everything it started; Xvfb with
+    # -noreset (a rank connecting while it resets is refused: tests/paraview/run_parallel_test.sh).
+    setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24 -noreset" \
       timeout -k 10 "${BENCH_TIMEOUT:-900}" "$@" -np "$np" \
       pvbatch --force-offscreen-rendering "$HERE/scaling.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$dir" \
       --triangles "$TRIANGLES" --size "$SIZE" --methods "$METHODS" --parallel "$mode" --frames "$FRAMES" --fxaa "$FXAA" \

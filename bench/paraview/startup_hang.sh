@@ -50,7 +50,7 @@ hung=0
 for i in $(seq 1 "$RUNS"); do
   log="$OUT/run$i.log"
   start=$SECONDS
-  setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24" timeout -k 10 "$TIMEOUT" \
+  setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24 -noreset" timeout -k 10 "$TIMEOUT" \
     mpiexec "${ROOTOK[@]}" --bind-to none --oversubscribe --mca mpi_yield_when_idle 1 -x LP_NUM_THREADS -x PYTHONPATH \
     -np "$RANKS" pvbatch --force-offscreen-rendering "$OUT/first_render.py" "$PLUGIN" >"$log" 2>&1 || true
   if grep -q '^FIRST_RENDER' "$log"; then
