@@ -25,8 +25,9 @@ XVFB_ARGS="-screen 0 1280x1024x24 -noreset"
 # random (xvfb-run -a alone reuses :99 while the previous run's Xvfb, killed last by its
 # clean-up and not waited for, still holds it: three back-to-back failures seen under ctest
 # -j2). Tried again, up to 3 times,
-# on two failures that are not ours: a display taken by another xvfb-run starting at the
-# same moment (pvbatch aborts with "bad X server connection"), and ParaView's own startup
+# on two failures that are not ours: no X connection (pvbatch aborts with "bad X server
+# connection": a display taken by another xvfb-run starting at the same moment, or a reset
+# that -noreset should now prevent), and ParaView's own startup
 # hang at 4 ranks on 2 cores (rank 0 in IceT's MPI_Comm_dup before the first render, the
 # others waiting; seen in 3 of 11 benchmark runs, 2 of 8 of them without the plugin loaded,
 # all with `--bind-to none`, which is why it is not used here: 4 of 4 runs clean without it)
@@ -107,8 +108,7 @@ echo "errors: exit $rc, missing array reported $missing time(s), differing data 
   { echo "errors: expected each error on both ranks and a render after each"; cat "$OUT/errors.log"; exit 1; }
 # Client-server: pvserver on 2 ranks, a Python client that connects, loads the plugin on
 # both sides and saves the screenshots (compared with 1-rank pvbatch below).
-# A display taken by another xvfb-run starting at the same moment ("bad X server
-# connection") is tried again, as in xrun.
+# No X connection ("bad X server connection") is tried again, as in xrun.
 cs() {
   local PORT=$((20000 + RANDOM % 20000)) server rc
   echo "== cs2: pvserver on 2 ranks, a client on port $PORT"

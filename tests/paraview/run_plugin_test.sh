@@ -13,9 +13,12 @@ if [ ! -f "$PLUGIN" ]; then
 fi
 mkdir -p "$OUT"
 log="$OUT/plugin_test.log"
-# A display taken by another xvfb-run starting at the same moment: only that is retried.
+# No X connection (a display taken by another xvfb-run starting at the same moment): only
+# that is retried. Xvfb with -noreset, as in run_parallel_test.sh (a connection made while it
+# resets after ParaView's probe window closes is refused).
 for attempt in 1 2 3; do
-  PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a -n "$((200 + RANDOM % 600))" pvbatch \
+  PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a -n "$((200 + RANDOM % 600))" \
+    -s "-screen 0 1280x1024x24 -noreset" pvbatch \
     "$(dirname "$0")/plugin_test.py" "$PLUGIN" "$OUT" >"$log" 2>&1
   rc=$?
   grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log" || break
