@@ -127,8 +127,8 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
       >"$dir/pvbatch.log" 2>&1 &
     pid=$!
     # ParaView's own start-up hang (rank 0 in IceT's MPI_Comm_dup inside the first Render,
-    # the others in ProcessRMIs; seen in about one run in 15): no first render after
-    # BENCH_START_TIMEOUT seconds ends the run, which is tried again.
+    # the others in ProcessRMIs; seen before -noreset, not in 50 runs of startup_hang.sh
+    # since): no first render after BENCH_START_TIMEOUT seconds ends the run, which is tried again.
     waited=0
     while kill -0 "$pid" 2>/dev/null && ! grep -q '^FIRST_RENDER' "$dir/pvbatch.log"; do
       if [ "$waited" -ge "${BENCH_START_TIMEOUT:-300}" ]; then

@@ -1,24 +1,29 @@
 #!/usr/bin/env bash
-# ParaView's own start-up hang, without FlowSurf: N pvbatch runs of a script that builds the
-# scaling benchmark's sphere (RedistributeDataSet, ExtractSurface), shows it with ParaView's
-# Surface representation and renders once; a run whose first render does not come within
-# --timeout seconds counts as hung, and the stacks pvbatch prints when it is ended are kept.
+# ParaView's start-up failures on an oversubscribed node, without FlowSurf: N pvbatch runs of
+# a script that builds the scaling benchmark's sphere (RedistributeDataSet, ExtractSurface),
+# shows it with ParaView's Surface representation and renders once; a run whose first render
+# does not come within --timeout seconds failed, and its log (with the stacks pvbatch prints
+# when it is ended) is kept.
 #
-#   bench/paraview/startup_hang.sh [--ranks 8] [--runs 10] [--timeout 200] [--plugin FILE] [--out DIR]
+#   bench/paraview/startup_hang.sh [--ranks 8] [--runs 10] [--timeout 200] [--plugin FILE]
+#                                  [--xvfb-reset] [--out DIR]
 #
 # Ranks beyond the cores are oversubscribed, one llvmpipe thread each (as scaling.sh's
 # stats runs). --plugin loads a plugin first (e.g. FlowSurf.so, to compare); by default none.
-# Prints each run's outcome and the count; the hung runs' logs stay in DIR (rank 0 in IceT's
-# MPI_Comm_dup inside its first StillRender, the other ranks in ProcessRMIs' broadcast).
+# Xvfb runs with -noreset, as in the benchmarks and tests; --xvfb-reset leaves it out, to
+# count what it prevents: a rank that connects while Xvfb resets after another rank's probe
+# window is refused and aborts ("bad X server connection"), the others left in a gather.
+# Prints each run's outcome (aborted without an X connection, or hung) and the counts.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-RANKS=8 RUNS=10 TIMEOUT=200 PLUGIN=none OUT="$HERE/../../out/startup_hang"
+RANKS=8 RUNS=10 TIMEOUT=200 PLUGIN=none XVFB="-screen 0 1280x1024x24 -noreset" OUT="$HERE/../../out/startup_hang"
 while [ $# -gt 0 ]; do
   case "$1" in
     --ranks) RANKS=$2; shift 2 ;;
     --runs) RUNS=$2; shift 2 ;;
     --timeout) TIMEOUT=$2; shift 2 ;;
     --plugin) PLUGIN=$2; shift 2 ;;
+    --xvfb-reset) XVFB="-screen 0 1280x1024x24"; shift ;;
     --out) OUT=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
@@ -46,18 +51,21 @@ EOF
 ROOTOK=()
 [ "$(id -u)" -eq 0 ] && ROOTOK=(--allow-run-as-root)
 export LP_NUM_THREADS=1
-hung=0
+hung=0 nox=0
 for i in $(seq 1 "$RUNS"); do
   log="$OUT/run$i.log"
   start=$SECONDS
-  setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24 -noreset" timeout -k 10 "$TIMEOUT" \
+  setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$XVFB" timeout -k 10 "$TIMEOUT" \
     mpiexec "${ROOTOK[@]}" --bind-to none --oversubscribe --mca mpi_yield_when_idle 1 -x LP_NUM_THREADS -x PYTHONPATH \
     -np "$RANKS" pvbatch --force-offscreen-rendering "$OUT/first_render.py" "$PLUGIN" >"$log" 2>&1 || true
   if grep -q '^FIRST_RENDER' "$log"; then
     echo "run $i: rendered ($((SECONDS - start)) s)"
+  elif grep -q 'bad X server connection' "$log"; then
+    nox=$((nox + 1))
+    echo "run $i: a rank aborted without an X connection: $log"
   else
     hung=$((hung + 1))
     echo "run $i: no first render in $TIMEOUT s ($(grep -q '^PIPELINE' "$log" && echo 'after the pipeline' || echo 'before the pipeline')): $log"
   fi
 done
-echo "$hung of $RUNS runs hung ($RANKS ranks, plugin: $PLUGIN)"
+echo "$((hung + nox)) of $RUNS runs failed: $hung hung, $nox without an X connection ($RANKS ranks, plugin: $PLUGIN, Xvfb: $XVFB)"

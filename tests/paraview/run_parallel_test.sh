@@ -26,8 +26,9 @@ XVFB_ARGS="-screen 0 1280x1024x24 -noreset"
 # clean-up and not waited for, still holds it: three back-to-back failures seen under ctest
 # -j2). Tried again, up to 3 times,
 # on two failures that are not ours: no X connection (pvbatch aborts with "bad X server
-# connection": a display taken by another xvfb-run starting at the same moment, or a reset
-# that -noreset should now prevent), and ParaView's own startup
+# connection": a display taken by another xvfb-run starting at the same moment, or a reset,
+# which -noreset prevents: 3 of 20 8-rank starts without it, 0 of 30 with it, in
+# bench/paraview/startup_hang.sh), and ParaView's own startup
 # hang at 4 ranks on 2 cores (rank 0 in IceT's MPI_Comm_dup before the first render, the
 # others waiting; seen in 3 of 11 benchmark runs, 2 of 8 of them without the plugin loaded,
 # all with `--bind-to none`, which is why it is not used here: 4 of 4 runs clean without it)
