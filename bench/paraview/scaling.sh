@@ -129,11 +129,18 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
     # ParaView's own start-up hang (rank 0 in IceT's MPI_Comm_dup inside the first Render,
     # the others in ProcessRMIs; seen before -noreset, not in 50 runs of startup_hang.sh
     # since): no first render after BENCH_START_TIMEOUT seconds ends the run, which is tried again.
+    # A rank that dies on a signal is ended at once too: VTK's handler, printing its stack
+    # after a heap check failed, can wait forever on the allocator's lock.
     waited=0
-    while kill -0 "$pid" 2>/dev/null && ! grep -q '^FIRST_RENDER' "$dir/pvbatch.log"; do
-      if [ "$waited" -ge "${BENCH_START_TIMEOUT:-300}" ]; then
-        echo "# $dir: no first render after $waited s (ParaView's start-up hang)" >&2
+    while kill -0 "$pid" 2>/dev/null; do
+      if grep -q 'Loguru caught a signal' "$dir/pvbatch.log"; then
+        echo "# $dir: a rank died on a signal" >&2
         pkill -KILL -s "$pid" 2>/dev/null  # the session: timeout keeps its own process group
+        break
+      fi
+      if [ "$waited" -ge "${BENCH_START_TIMEOUT:-300}" ] && ! grep -q '^FIRST_RENDER' "$dir/pvbatch.log"; then
+        echo "# $dir: no first render after $waited s (ParaView's start-up hang)" >&2
+        pkill -KILL -s "$pid" 2>/dev/null
         break
       fi
       sleep 5
@@ -141,7 +148,8 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
     done
     wait "$pid" 2>/dev/null || true
     grep -q '^DONE' "$dir/pvbatch.log" && { grep -E 'median' "$dir/pvbatch.log" >&2; return 0; }
-    echo "# $dir: failed or hung (attempt $attempt)" >&2
+    cp "$dir/pvbatch.log" "$dir/pvbatch.failed$attempt.log"  # kept: the next attempt writes pvbatch.log
+    echo "# $dir: failed or hung (attempt $attempt; its log: pvbatch.failed$attempt.log)" >&2
   done
   return 1
 }
