@@ -16,7 +16,8 @@
 # --stats-rounds rounds of 1 rank then N ranks tiles per count (interleaved: each round's sums
 # are divided by the same round's 1-rank run; this machine's speed drifts by up to a quarter
 # between runs minutes apart), N ranks replicate in the first round only.
-# Writes OUT/calibration.txt, OUT/r<round>/<run>/{timings.json,*.png,pvbatch.log},
+# Writes OUT/calibration.txt, OUT/rounds.txt (S_hw before and after each round's 2-rank runs),
+# OUT/r<round>/<run>/{timings.json,*.png,pvbatch.log},
 # OUT/stats/r<round>/np<N>_<mode>/rank<r>.jsonl and OUT/results.md (scaling_report.py).
 # A run is tried up to 3 times; BENCH_TIMEOUT (900 s) bounds one, BENCH_START_TIMEOUT (300 s)
 # its wait for the first render (ParaView's start-up hang).
@@ -153,11 +154,21 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
   done
   return 1
 }
+# The two-process speedup again around each round's 2-rank runs (before and after): a VM's
+# second core can slow down for minutes (another guest), which only the 2-rank runs feel.
+round_shw() {  # ROUND WHEN
+  local a b
+  a=$(one); b=$(two)
+  echo "round $1 $2: S_hw = $(echo "scale=3; 2 * $a / $b" | bc)" | tee -a "$OUT/rounds.txt" >&2
+}
+rm -f "$OUT/rounds.txt"
 for r in $(seq 1 "$ROUNDS"); do
   echo "== round $r ($(cut -d' ' -f1 /proc/loadavg))" >&2
   run "$OUT/r$r/np1" 1 tiles "${BOUND[@]}" || true
+  round_shw "$r" before
   run "$OUT/r$r/np2_tiles" 2 tiles "${BOUND[@]}" || true
   run "$OUT/r$r/np2_replicate" 2 replicate "${BOUND[@]}" || true
+  round_shw "$r" after
 done
 echo "== 1 rank, llvmpipe's 2 threads" >&2
 LP_NUM_THREADS=2 run "$OUT/np1_lp2" 1 tiles "${FREE[@]}" || true

@@ -96,6 +96,36 @@ if first:
             l2 = lp2.get(method, {}).get('median_ms', float('nan')) - (lp2_paraview or float('nan'))
             print('| %s | %.0f | %.0f | %.2f | %.0f | %.2f |' % (method, t1, tt, t1 / tt, l2, tt / l2))
 
+    shw_path = os.path.join(OUT, 'rounds.txt')
+    if os.path.exists(shw_path):
+        shw = {}
+        for r, s in re.findall(r'round (\d+) \w+: S_hw = ([0-9.]+)', open(shw_path).read()):
+            shw.setdefault(int(r), []).append(float(s))
+        methods = list(runs.get('np1', {}))
+        print('\nPer round: the two-process speedup measured before and after its 2-rank runs, and the '
+              '`tiles` speedup (the round\'s 1 rank / 2 ranks; a round whose S_hw fell below 1.9 measured a '
+              'slower second core):\n')
+        print('| round | S_hw before / after | ' + ' | '.join(methods) + ' |')
+        print('|---:|---|' + '---:|' * len(methods))
+        quiet = {m: [] for m in methods}
+        for k in sorted(shw):
+            cells = []
+            for m in methods:
+                try:
+                    v = load(os.path.join(OUT, 'r%d' % k, 'np1', 'timings.json'))['methods'][m]['median_ms'] / \
+                        load(os.path.join(OUT, 'r%d' % k, 'np2_tiles', 'timings.json'))['methods'][m]['median_ms']
+                except (OSError, KeyError):
+                    cells.append('–')
+                    continue
+                cells.append('%.2f' % v)
+                if min(shw[k]) >= 1.9:
+                    quiet[m].append(v)
+            print('| %d | %s | %s |' % (k, ' / '.join('%.2f' % v for v in shw[k]), ' | '.join(cells)))
+        if any(quiet.values()):
+            print('\nMedian `tiles` speedup over the rounds with S_hw >= 1.9 before and after: ' +
+                  ', '.join('%s %.2f (%d rounds)' % (m, statistics.median(v), len(v)) for m, v in quiet.items() if v) +
+                  '.')
+
     print('\nImages (last render of each method) byte-identical to the same round\'s 1-rank image:\n')
     same, total = identical(glob.glob(os.path.join(OUT, 'r*', 'np2_*', '*.png')),
                             lambda png: os.path.join(os.path.dirname(os.path.dirname(png)), 'np1',
