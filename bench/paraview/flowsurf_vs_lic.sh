@@ -42,6 +42,7 @@ done
 case ",$RANKS," in *,1,*) ;; *) echo "--ranks must include 1 (the reference image)" >&2; exit 2 ;; esac
 
 eval "$("$HERE/setup.sh")"
+. "$HERE/../../scripts/xvfb-args.sh"
 "$ROOT/scripts/apt-install.sh" openmpi-bin python3-pil
 PLUGIN="${FLOWSURF_PLUGIN:-$(find "$ROOT/build-paraview" -name FlowSurf.so 2>/dev/null | head -n1 || true)}"
 [ -f "$PLUGIN" ] || { echo "FlowSurf.so not found: scripts/build-paraview-plugin.sh, or set FLOWSURF_PLUGIN" >&2; exit 1; }
@@ -70,7 +71,7 @@ for n in ${RANKS//,/ }; do
     [ "$attempt" -eq 0 ] || echo "# $n rank(s) hung or failed: attempt $((attempt + 1))" >&2
     echo "# $n rank(s): ${MPI[*]} -np $n pvbatch flowsurf_vs_lic.py --meshes $MESHES ..." >&2
     # /usr/bin/time per rank: each rank's peak memory ("maxrss_kb") lands in the log.
-    "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 ${XVFB_SCREEN:-1280x1024x24}" \
+    "${NICE[@]}" xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$FLOWSURF_XVFB_ARGS" \
       timeout -k 10 "${BENCH_TIMEOUT:-900}" "${MPI[@]}" -np "$n" -x PYTHONPATH \
       /usr/bin/time -f 'rank maxrss_kb %M wall_s %e' \
       pvbatch "$HERE/flowsurf_vs_lic.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$OUT/np$n" \

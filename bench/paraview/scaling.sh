@@ -48,6 +48,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 eval "$("$HERE/setup.sh")"
+. "$ROOT/scripts/xvfb-args.sh"
 "$ROOT/scripts/apt-install.sh" openmpi-bin bc
 PLUGIN="${FLOWSURF_PLUGIN:-$(find "$ROOT/build-paraview" -name FlowSurf.so 2>/dev/null | head -n1 || true)}"
 FLOWSURF="${FLOWSURF_BIN:-$ROOT/build/apps/flowsurf}"
@@ -119,9 +120,8 @@ run() {  # DIR NP PARALLEL MPIEXEC [ARGS...]
   mkdir -p "$dir"
   local attempt pid waited
   for attempt in 1 2 3; do
-    # In its own session, so that a hang is ended with everything it started; Xvfb with
-    # -noreset (a rank connecting while it resets is refused: tests/paraview/run_parallel_test.sh).
-    setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "-screen 0 1280x1024x24 -noreset" \
+    # In its own session, so that a hang is ended with everything it started.
+    setsid xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$FLOWSURF_XVFB_ARGS" \
       timeout -k 10 "${BENCH_TIMEOUT:-900}" "$@" -np "$np" \
       pvbatch --force-offscreen-rendering "$HERE/scaling.py" --plugin "$OUT/plugin/FlowSurf.so" --out "$dir" \
       --triangles "$TRIANGLES" --size "$SIZE" --methods "$METHODS" --parallel "$mode" --frames "$FRAMES" --fxaa "$FXAA" \

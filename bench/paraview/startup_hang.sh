@@ -10,25 +10,28 @@
 #
 # Ranks beyond the cores are oversubscribed, one llvmpipe thread each (as scaling.sh's
 # stats runs). --plugin loads a plugin first (e.g. FlowSurf.so, to compare); by default none.
-# Xvfb runs with -noreset, as in the benchmarks and tests; --xvfb-reset leaves it out, to
-# count what it prevents: a rank that connects while Xvfb resets after another rank's probe
+# Xvfb runs with -noreset (scripts/xvfb-args.sh), as in the benchmarks and tests;
+# --xvfb-reset leaves it out, to count what it prevents: a rank that connects while Xvfb resets after another rank's probe
 # window is refused and aborts ("bad X server connection"), the others left in a gather.
 # Prints each run's outcome (aborted without an X connection, or hung) and the counts.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-RANKS=8 RUNS=10 TIMEOUT=200 PLUGIN=none XVFB="-screen 0 1280x1024x24 -noreset" OUT="$HERE/../../out/startup_hang"
+RESET=0 RANKS=8 RUNS=10 TIMEOUT=200 PLUGIN=none OUT="$HERE/../../out/startup_hang"
 while [ $# -gt 0 ]; do
   case "$1" in
     --ranks) RANKS=$2; shift 2 ;;
     --runs) RUNS=$2; shift 2 ;;
     --timeout) TIMEOUT=$2; shift 2 ;;
     --plugin) PLUGIN=$2; shift 2 ;;
-    --xvfb-reset) XVFB="-screen 0 1280x1024x24"; shift ;;
+    --xvfb-reset) RESET=1; shift ;;
     --out) OUT=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
 eval "$("$HERE/setup.sh")"
+. "$HERE/../../scripts/xvfb-args.sh"
+XVFB="$FLOWSURF_XVFB_ARGS"
+if [ "$RESET" = 1 ]; then XVFB="${XVFB% -noreset}"; fi
 mkdir -p "$OUT"
 cat >"$OUT/first_render.py" <<'EOF'
 import sys

@@ -16,11 +16,8 @@ export PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages"
 # Open MPI as root (CI) and more ranks than cores; shared-memory transport without
 # ptrace-based single copy (refused in containers).
 MPI=(mpiexec --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none)
-# Xvfb's arguments: xvfb-run's own screen, and -noreset. Without it Xvfb resets when its
-# last client disconnects, and a rank that connects during the reset is refused ("bad X
-# server connection"): ParaView's first rank opens and closes a probe window while the
-# other starts (4 of 16 plain 2-rank pvbatch renders on a 2-core VM, 0 of 16 with it).
-XVFB_ARGS="-screen 0 1280x1024x24 -noreset"
+# Xvfb's arguments (-noreset: a rank connecting while Xvfb resets is refused).
+. "$HERE/../../scripts/xvfb-args.sh"
 # xrun LOG CMD...: CMD under xvfb-run with its output in LOG, on a display number drawn at
 # random (xvfb-run -a alone reuses :99 while the previous run's Xvfb, killed last by its
 # clean-up and not waited for, still holds it: three back-to-back failures seen under ctest
@@ -38,7 +35,7 @@ xrun() {
   local log="$1" rc attempt
   shift
   for attempt in 1 2 3; do
-    timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$XVFB_ARGS" "$@" >"$log" 2>&1
+    timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$FLOWSURF_XVFB_ARGS" "$@" >"$log" 2>&1
     rc=$?
     if grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log"; then
       echo "no X display (attempt $attempt), again"
@@ -113,13 +110,13 @@ echo "errors: exit $rc, missing array reported $missing time(s), differing data 
 cs() {
   local PORT=$((20000 + RANDOM % 20000)) server rc
   echo "== cs2: pvserver on 2 ranks, a client on port $PORT"
-  timeout -k 10 200 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$XVFB_ARGS" "${MPI[@]}" -np 2 pvserver --server-port="$PORT" \
+  timeout -k 10 200 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$FLOWSURF_XVFB_ARGS" "${MPI[@]}" -np 2 pvserver --server-port="$PORT" \
     --force-offscreen-rendering >"$OUT/cs2_server.log" 2>&1 &
   server=$!
   for _ in $(seq 1 60); do grep -q "Accepting connection" "$OUT/cs2_server.log" 2>/dev/null && break; sleep 1; done
   # The client is Debian's python3 with ParaView's modules first on its path (the private
   # prefix's pvpython finds Debian's VTK 9.1 modules first and crashes on import).
-  timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$XVFB_ARGS" /usr/bin/python3 "$HERE/parallel_test.py" "$PLUGIN" \
+  timeout -k 10 150 xvfb-run -a -n "$((200 + RANDOM % 600))" -s "$FLOWSURF_XVFB_ARGS" /usr/bin/python3 "$HERE/parallel_test.py" "$PLUGIN" \
     "$OUT" client cs2 0 "$PORT" >"$OUT/cs2.log" 2>&1
   rc=$?
   for _ in $(seq 1 20); do kill -0 "$server" 2>/dev/null || break; sleep 1; done

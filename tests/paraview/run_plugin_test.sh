@@ -7,6 +7,7 @@ set -uo pipefail
 PLUGIN="$1"
 OUT="$2"
 PREFIX="${PVPYTHON_PREFIX:-/opt/pvpython}"
+. "$(dirname "$0")/../../scripts/xvfb-args.sh"
 if [ ! -f "$PLUGIN" ]; then
   echo "FlowSurf plugin not found: $PLUGIN (build it with scripts/build-paraview-plugin.sh)"
   exit 1
@@ -14,11 +15,10 @@ fi
 mkdir -p "$OUT"
 log="$OUT/plugin_test.log"
 # No X connection (a display taken by another xvfb-run starting at the same moment): only
-# that is retried. Xvfb with -noreset, as in run_parallel_test.sh (a connection made while it
-# resets after ParaView's probe window closes is refused).
+# that is retried. Xvfb with -noreset (scripts/xvfb-args.sh).
 for attempt in 1 2 3; do
   PYTHONPATH="$PREFIX/usr/lib/python3/dist-packages" xvfb-run -a -n "$((200 + RANDOM % 600))" \
-    -s "-screen 0 1280x1024x24 -noreset" pvbatch \
+    -s "$FLOWSURF_XVFB_ARGS" pvbatch \
     "$(dirname "$0")/plugin_test.py" "$PLUGIN" "$OUT" >"$log" 2>&1
   rc=$?
   grep -q -e "bad X server connection" -e "Xvfb failed to start" "$log" || break
