@@ -11,8 +11,9 @@
 # Ranks beyond the cores are oversubscribed, one llvmpipe thread each (as scaling.sh's
 # stats runs). --plugin loads a plugin first (e.g. FlowSurf.so, to compare); by default none.
 # Xvfb runs with -noreset (scripts/xvfb-args.sh), as in the benchmarks and tests;
-# --xvfb-reset leaves it out, to count what it prevents: a rank that connects while Xvfb resets after another rank's probe
-# window is refused and aborts ("bad X server connection"), the others left in a gather.
+# --xvfb-reset leaves it out, to count what it prevents: a rank that connects while Xvfb
+# resets after another rank's probe window is refused and aborts ("bad X server
+# connection"), the others left in a gather.
 # Prints each run's outcome (aborted without an X connection, or hung) and the counts.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
