@@ -6,7 +6,8 @@ layout(local_size_x = 1) in;
 uniform uint uMaxGroupsX;
 void main() {
     uint groups = (coveringCount + uint(VIS_RASTER_GROUP) - 1u) / uint(VIS_RASTER_GROUP);
-    dispatchX = min(groups, uMaxGroupsX);
-    dispatchY = dispatchX == 0u ? 0u : (groups + dispatchX - 1u) / dispatchX;
+    uint rows = (groups + uMaxGroupsX - 1u) / uMaxGroupsX;
+    dispatchX = rows == 0u ? 0u : (groups + rows - 1u) / rows;
+    dispatchY = rows;
     dispatchZ = 1u;
 }

@@ -258,15 +258,20 @@ TEST(SurfaceRaster, LlvmpipeCoresFollowLpNumThreads) {
 }
 
 // More work groups than one dispatch dimension allows (10M triangles: 156,250 groups of 64,
-// llvmpipe allows 65,535 along x) go in rows: every group exists, the fewest rows.
+// llvmpipe allows 65,535 along x) go in rows: every group exists, the fewest rows, and fewer
+// spare groups than rows (a spare group costs llvmpipe about a full one).
 TEST(SurfaceRaster, WorkGroupGridCoversEveryGroup) {
     struct Case { size_t groups, maxX; glm::uvec2 grid; };
-    for (const Case& c : {Case{156250, 65535, {65535, 3}}, Case{10, 65535, {10, 1}}, Case{0, 65535, {0, 0}},
-                          Case{65535, 65535, {65535, 1}}, Case{65536, 65535, {65535, 2}}, Case{7, 1, {1, 7}}}) {
+    for (const Case& c : {Case{156250, 65535, {52084, 3}}, Case{78125, 65535, {39063, 2}}, Case{10, 65535, {10, 1}},
+                          Case{0, 65535, {0, 0}}, Case{65535, 65535, {65535, 1}}, Case{65536, 65535, {32768, 2}},
+                          Case{7, 1, {1, 7}}}) {
         const glm::uvec2 g = methods::workGroupGrid(c.groups, c.maxX);
         EXPECT_EQ(g, c.grid) << c.groups << " groups, at most " << c.maxX << " along x";
         EXPECT_LE(g.x, c.maxX);
         EXPECT_GE(size_t(g.x) * g.y, c.groups);
+        if (c.groups) {
+            EXPECT_LT(size_t(g.x) * g.y - c.groups, g.y) << c.groups << " groups: spare groups";
+        }
     }
 }
 

@@ -28,8 +28,9 @@ glm::ivec2 occluderCells(const core::Viewport& viewport) {
 
 glm::uvec2 workGroupGrid(size_t groups, size_t maxX) {
     if (groups == 0) return {0, 0};
-    const size_t x = std::min(groups, std::max<size_t>(maxX, 1));
-    return {GLuint(x), GLuint((groups + x - 1) / x)};
+    const size_t widest = std::max<size_t>(maxX, 1);
+    const size_t rows = (groups + widest - 1) / widest;
+    return {GLuint((groups + rows - 1) / rows), GLuint(rows)};
 }
 
 VisibilityBuffer::VisibilityBuffer(const core::Viewport& viewport)
