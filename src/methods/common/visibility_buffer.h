@@ -35,8 +35,8 @@ inline constexpr int kVisOccluderCellPx = 8;
 // rows, and in them the fewest groups (fewer than y spare). visibility_raster.comp numbers
 // its triangles row by row. Spare groups are not free: llvmpipe runs a group whose
 // invocations all return at once through the whole shader with its lanes masked, at about a
-// full group's cost (5M triangles at 1024^2, one thread: pass 0 took ~420 ms with full rows
-// of 65,535, ~210 ms with 2 rows of 39,063).
+// full group's cost (a 5M-triangle piece at 1024^2, one thread: pass 0 took ~440 ms in 2
+// rows of 65,535, ~215 ms in 2 rows of 39,031).
 glm::uvec2 workGroupGrid(size_t groups, size_t maxX);
 
 // What the processes of a group settle before each rasterises its piece (VisibilityBuffer::agree).
