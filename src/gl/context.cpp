@@ -109,6 +109,7 @@ HeadlessContext::HeadlessContext(bool verbose) {
             continue;
         }
         fillDriverTablesOnce();
+        RetiredPrograms::makeCurrent(&retired_);
         if (verbose) std::fprintf(stderr, "flowsurf: OpenGL on %s\n", description_.c_str());
         return;
     }
@@ -121,11 +122,16 @@ void HeadlessContext::makeCurrent() {
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
         throw GlError("cannot make the headless OpenGL context current (EGL error 0x" +
                       std::to_string(eglGetError()) + ")");
+    RetiredPrograms::makeCurrent(&retired_);
 }
 
-void HeadlessContext::release() { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
+void HeadlessContext::release() {
+    if (RetiredPrograms::current() == &retired_) RetiredPrograms::makeCurrent(nullptr);
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
 
 HeadlessContext::~HeadlessContext() {
+    if (RetiredPrograms::current() == &retired_) RetiredPrograms::makeCurrent(nullptr);
     if (display_) {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);

@@ -3,6 +3,8 @@
 // and logs which one it picked (GL_RENDERER).
 #pragma once
 
+#include "gl/objects.h"
+
 #include <string>
 
 namespace flowsurf::gl {
@@ -17,7 +19,8 @@ public:
 
     const std::string& renderer() const { return renderer_; }
     // Makes this context current on the calling thread / releases it from the thread (so
-    // another thread may make it current). Throws GlError if EGL refuses.
+    // another thread may make it current), with its RetiredPrograms (objects.h). Throws
+    // GlError if EGL refuses.
     void makeCurrent();
     void release();
     const std::string& description() const { return description_; }
@@ -26,6 +29,7 @@ private:
     void* display_ = nullptr;
     void* context_ = nullptr;
     std::string renderer_, description_;
+    RetiredPrograms retired_;  // freed by the context's destruction
 };
 
 }  // namespace flowsurf::gl
