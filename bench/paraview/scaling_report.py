@@ -134,21 +134,28 @@ if first:
 
 def rank_sums(run_dir):
     """Per method of a FLOWSURF_RANK_STATS run: Σ over ranks of each rank's median CPU ms per
-    render, the same outside MPI, the slowest rank / mean of both, the most bytes a rank sent."""
+    render, the same outside MPI and of the compute stages alone (`compute_cpu_ms`: every timed
+    stage but the tile exchange and return; None for logs without it), the slowest rank / mean of
+    each, the most bytes a rank sent."""
     rows = timed_rows(run_dir)
     out = {}
     for method in sorted({r['method'] for r in rows}):
-        per_rank, outside, sent = {}, {}, []
+        per_rank, outside, compute, sent = {}, {}, {}, []
         for r in rows:
             if r['method'] == method:
                 per_rank.setdefault(r['rank'], []).append(r['cpu_ms'])
                 outside.setdefault(r['rank'], []).append(r['cpu_ms'] - r.get('mpi_cpu_ms', 0.0))
+                if 'compute_cpu_ms' in r:
+                    compute.setdefault(r['rank'], []).append(r['compute_cpu_ms'])
                 sent.append(r['bytes_sent'])
         cpu = {k: statistics.median(v) for k, v in per_rank.items()}
         own = {k: statistics.median(v) for k, v in outside.items()}
+        work = {k: statistics.median(v) for k, v in compute.items()}
+        slowest = lambda d: max(d.values()) / (sum(d.values()) / len(d))
         out[method] = {'ranks': len(cpu), 'cpu': sum(cpu.values()), 'own': sum(own.values()),
-                       'slowest': max(cpu.values()) / (sum(cpu.values()) / len(cpu)),
-                       'slowest_own': max(own.values()) / (sum(own.values()) / len(own)),
+                       'slowest': slowest(cpu), 'slowest_own': slowest(own),
+                       'compute': sum(work.values()) if len(work) == len(cpu) else None,
+                       'slowest_compute': slowest(work) if len(work) == len(cpu) else None,
                        'sent': max(sent) / 1e6 if sent else 0.0}
     return out
 
@@ -164,16 +171,19 @@ if stat_rounds:
     print('## Oversubscribed: per-rank CPU time (FLOWSURF_RANK_STATS)\n')
     print('Timed dynamic renders only (no warm-up); CPU time of the frame loop per render, the process\'s '
           '(llvmpipe\'s threads included), summed over ranks; "outside MPI": less the time its thread spent '
-          'inside the group\'s MPI calls (copies and polling while waiting: `mpi_cpu_ms`); bytes each rank '
+          'inside the group\'s MPI calls (copies and polling while waiting: `mpi_cpu_ms`); "compute stages": '
+          'the CPU time of the timed stages but the tile exchange and return (`compute_cpu_ms`: the image '
+          'work itself, without moving tiles or the frame loop around the stages); bytes each rank '
           'sent per render. Every rank bound to a core, N ranks round-robin over the cores '
           '(`--bind-to core:overload-allowed`), 1 rank to one. %d round(s), each a 1-rank run then the N-rank runs: each ratio is a round\'s '
           'sum over the same round\'s 1-rank sum; the median over the rounds, their range in brackets. '
           'I_N: the machine\'s own cost of N processes sharing its cores, the same loop\'s CPU time per copy '
           'when N copies run at once against one alone (calibration); "/ I_N": the median divided by it.\n'
           % len(stat_rounds))
-    print('| run | method | ranks | sum of CPU ms / 1 rank | outside MPI: sum / 1 rank | I_N | sum / I_N '
-          '| outside MPI / I_N | slowest rank / mean | outside MPI: slowest / mean | MB sent per rank per render (max) |')
-    print('|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
+    print('| run | method | ranks | sum of CPU ms / 1 rank | outside MPI: sum / 1 rank | compute stages: sum / 1 rank '
+          '| I_N | sum / I_N | outside MPI / I_N | slowest rank / mean | outside MPI: slowest / mean '
+          '| compute stages: slowest / mean | MB sent per rank per render (max) |')
+    print('|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
     ratios = {}  # (run, method) -> lists over the rounds
     for rd in stat_rounds:
         base = rank_sums(os.path.join(rd, 'np1'))
@@ -185,13 +195,18 @@ if stat_rounds:
                 for key, value in (('cpu', v['cpu'] / base[method]['cpu']), ('own', v['own'] / base[method]['own']),
                                    ('slowest', v['slowest']), ('slowest_own', v['slowest_own']), ('sent', v['sent'])):
                     acc.setdefault(key, []).append(value)
+                if v['compute'] is not None and base[method]['compute']:
+                    acc.setdefault('compute', []).append(v['compute'] / base[method]['compute'])
+                    acc.setdefault('slowest_compute', []).append(v['slowest_compute'])
     order = lambda item: (int(re.match(r'np(\d+)', item[0][0]).group(1)), item[0])
     for (name, method), acc in sorted(ratios.items(), key=order):
         i_n = inflation.get(acc['ranks'], 1.0 if acc['ranks'] == 1 else float('nan'))
-        print('| %s | %s | %d | %s | %s | %.2f | %.2f | %.2f | %s | %s | %.2f |' % (
-            name, method, acc['ranks'], spread(acc['cpu']), spread(acc['own']), i_n,
+        print('| %s | %s | %d | %s | %s | %s | %.2f | %.2f | %.2f | %s | %s | %s | %.2f |' % (
+            name, method, acc['ranks'], spread(acc['cpu']), spread(acc['own']),
+            spread(acc['compute']) if 'compute' in acc else '—', i_n,
             statistics.median(acc['cpu']) / i_n, statistics.median(acc['own']) / i_n,
-            spread(acc['slowest']), spread(acc['slowest_own']), max(acc['sent'])))
+            spread(acc['slowest']), spread(acc['slowest_own']),
+            spread(acc['slowest_compute']) if 'slowest_compute' in acc else '—', max(acc['sent'])))
 
     same = total = 0
     for rd in stat_rounds:

@@ -38,6 +38,10 @@ TEST(StageNames, TableRowsAreDistinct) {
     for (const auto& [stage, name] : methods::kStageNames) EXPECT_TRUE(names.insert(name).second) << name;
     EXPECT_STREQ(methods::stageName(methods::Stage::Overlay), "overlay");
     EXPECT_FALSE(methods::isStageName("noise blend"));
+    int exchange = 0;
+    for (const auto& [stage, name] : methods::kStageNames) exchange += methods::isExchangeStage(name);
+    EXPECT_EQ(exchange, 2);  // the tile exchange and its return; the rest compute
+    EXPECT_TRUE(methods::isExchangeStage("tile return"));
 }
 
 TEST(StageNames, EveryStageAMethodTimesIsInTheTable) {
@@ -46,6 +50,8 @@ TEST(StageNames, EveryStageAMethodTimesIsInTheTable) {
         for (const char* method : {"isa", "ibfvs", "hybrid"})
             for (const std::string& name : timedStages(input, method)) {
                 EXPECT_TRUE(methods::isStageName(name)) << method << " on " << input << " times '" << name << "'";
+                // One process exchanges nothing: its every stage is a compute stage.
+                EXPECT_FALSE(methods::isExchangeStage(name)) << method << " times '" << name << "'";
                 seen.insert(name);
             }
     // The single-process stages all showed up.

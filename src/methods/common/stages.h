@@ -35,6 +35,12 @@ constexpr const char* stageName(Stage s) {
     return "";
 }
 
+// True for the stages that move tiles between processes (the exchange and the return) rather
+// than compute the image: FLOWSURF_RANK_STATS sums the others as the compute stages.
+constexpr bool isExchangeStage(std::string_view name) {
+    return name == stageName(Stage::TileExchange) || name == stageName(Stage::TileReturn);
+}
+
 // True if the timer's stage `name` is a row of the table.
 constexpr bool isStageName(std::string_view name) {
     for (const auto& [stage, n] : kStageNames)

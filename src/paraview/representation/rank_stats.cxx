@@ -3,6 +3,7 @@
 #include "clock_ms.h"
 
 #include "methods/common/params.h"
+#include "methods/common/stages.h"
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>
@@ -52,11 +53,17 @@ void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, b
   }
   line["stages_ms"] = stages;
   nlohmann::ordered_json stagesCpu = nlohmann::ordered_json::object();
+  double computeCpuMs = 0.0;
   for (const auto& [stage, ms] : method.timer().meanCpuMs())
   {
     stagesCpu[stage] = ms;
+    if (!methods::isExchangeStage(stage))
+    {
+      computeCpuMs += ms;
+    }
   }
   line["stages_cpu_ms"] = stagesCpu;
+  line["compute_cpu_ms"] = computeCpuMs;
   if (const methods::DyeField* dye = playback.dye())
   {
     line["dye_voxels"] = dye->advectedVoxels();
