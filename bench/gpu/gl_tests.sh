@@ -11,13 +11,8 @@ REPEAT=${2:-24}
 SUITES=${3:-2}
 OUT=${OUT:-$PWD/gpu-gl-tests}
 mkdir -p "$OUT"
-for f in "$DIR"/*.deb; do dpkg -x "$f" /; done
-ldconfig
-for vendor in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
-  if [ -e "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; break; fi
-done
-tar -C /tmp -xJf "$DIR"/flowsurf-*.tar.xz
-export LD_LIBRARY_PATH=$(ls -d /tmp/flowsurf-*)/lib
+. "$(dirname "$0")/prepare.sh"
+export LD_LIBRARY_PATH=$TREE/lib
 T="$DIR"/flowsurf_gl_tests
 nvidia-smi --query-gpu=name,driver_version --format=csv,noheader | tee "$OUT/summary.txt"
 failed() { grep -c '^\[  FAILED  \].*ms)$' "$1"; }

@@ -14,13 +14,7 @@ DIR=${1:?usage: bench/gpu/lease.sh CARRIED_DIR [GRID_SECONDS]}
 GRID_SECONDS=${2:-330}
 OUT=${OUT:-$PWD/gpu-lease}
 mkdir -p "$OUT"
-for f in "$DIR"/*.deb; do dpkg -x "$f" /; done
-ldconfig
-for vendor in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
-  if [ -e "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; break; fi
-done
-tar -C /tmp -xJf "$DIR"/flowsurf-*.tar.xz
-TREE=$(ls -d /tmp/flowsurf-*)
+. "$(dirname "$0")/prepare.sh"
 F=$TREE/bin/flowsurf
 {
   date -u '+%Y-%m-%d %H:%M UTC'
