@@ -47,6 +47,7 @@ inline constexpr BindingPoint kIbfvsPrevFlow = textureUnit("IBFVS_PREV_FLOW_UNIT
 inline constexpr BindingPoint kIbfvsTexcoord = textureUnit("IBFVS_TEXCOORD_UNIT", 0);       // RG32F, from the draw
 inline constexpr BindingPoint kIbfvsDepth = textureUnit("IBFVS_DEPTH_UNIT", 1);             // the draw's depth
 inline constexpr BindingPoint kIbfvsNextFlow = imageUnit("IBFVS_NEXT_FLOW_IMAGE_UNIT", 0);  // F_a(k), R32F
+inline constexpr BindingPoint kIbfvsBounds = storageBinding("IBFVS_BOUNDS_BINDING", 0);     // tiles: what a tile reads
 // Noise injection [L eq. 9] (common/noise_injection.*), beside either advection's units.
 inline constexpr BindingPoint kNoisePhases = textureUnit("NOISE_PHASES_UNIT", 3);  // R32F phase per noise cell
 // IBFVS edge mask (ibfvs/edge_mask.*): the surface depth, and the outline quads shared
@@ -107,6 +108,7 @@ inline constexpr BindingPoint kBindingPoints[] = {
     bindings::kMeshVelocity, bindings::kMeshDepth, bindings::kMeshSourceDepth, bindings::kMeshImage,
     bindings::kIsaPrevFlow, bindings::kIsaMesh, bindings::kIsaSurfaceDepth, bindings::kIsaNextFlow,
     bindings::kIbfvsPrevFlow, bindings::kIbfvsTexcoord, bindings::kIbfvsDepth, bindings::kIbfvsNextFlow,
+    bindings::kIbfvsBounds,
     bindings::kNoisePhases, bindings::kEdgeMaskDepth, bindings::kEdgeCapture,
     bindings::kLicSeedVelocity, bindings::kLicVelocity, bindings::kLicNoise, bindings::kLicImage,
     bindings::kSolidNoiseImage,

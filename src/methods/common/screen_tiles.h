@@ -10,8 +10,8 @@
 //           owner merges them by depth, the nearest fragment winning (on a tie the lowest
 //           rank), so its buffers over the tile and guard equal the one-process buffers;
 // and every frame:
-//   return  the owner sends the image stage's result (R32F: the hybrid's I, ISA's F_a; IBFVS
-//           draws its own fragments' F_a itself) at each pixel of its tile back
+//   return  the owner sends the image stage's result (R32F: the hybrid's I, ISA's and IBFVS's
+//           F_a) at each pixel of its tile back
 //           to every process whose piece covers that pixel, which overlays and composites
 //           its own fragments with its own shade, mask and depth; the host's depth
 //           compositing (ParaView's IceT) keeps the nearest, as for any surface.

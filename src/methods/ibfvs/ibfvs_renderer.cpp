@@ -3,6 +3,7 @@
 #include "methods/common/gpu_bindings.h"
 #include "methods/common/stages.h"
 
+#include <chrono>
 #include <cmath>
 
 namespace flowsurf::methods::ibfvs {
@@ -21,18 +22,42 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
 
-void IbfvsRenderer::pullSource(const FrameInput& in, const core::Camera& sourceCamera) {
-    if (madeWith_[source_].empty()) return;
-    // Tiles: the source texture where this piece's fragments read it, from the processes
-    // that made it: the piece seen from the source view, plus the step (at most stepPx on
-    // screen), twice for safety, and the bicubic's reach.
+// Tiles: after every process drew its piece's texture coordinates, the whole surface's
+// coordinates and depth over this tile, then the per-pixel pass on the tile from the part of
+// the source F_a it reads (from the processes that made it); the tile's F_a is kept for the
+// next frame's pulls and returned to the processes whose pieces cover its pixels.
+void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int target) {
     timer_.begin(stageName(Stage::TileExchange));
-    const int margin = int(std::ceil(2.0f * params_.common.stepPx)) + 3;
-    const PixelRect wanted = projectedRect(in.surface->pieceParts(), sourceCamera.viewProjection(viewport_.aspect()),
-                                           viewport_.width, viewport_.height)
-                                 .grown(margin)
-                                 .intersect({0, 0, viewport_.width, viewport_.height});
-    tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
+    if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
+    // The pass reads the coordinates where the merged depth is < 1 only: this piece's own
+    // stand for the background, and the merge goes into them (nothing reads them after).
+    const gl::Texture2D& texcoord = polygonAdvection_.texcoord();
+    const TileLayer layers[] = {TileLayer::of(texcoord, texcoord, 0.0f, true), TileLayer::of(depth_, tileDepth_)};
+    tiles_->distribute(*in.group, depth_, layers, 0, polygonAdvection_.footprint());
+
+    timer_.begin(stageName(Stage::TextureAdvection));
+    const PixelRect& tile = tiles_->tile();
+    const PixelRect wanted = polygonAdvection_.readRegion(tileDepth_, tile);
+    if (!madeWith_[source_].empty()) {
+        timer_.begin(stageName(Stage::TileExchange));
+        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
+        timer_.begin(stageName(Stage::TextureAdvection));
+    }
+    const auto advected = std::chrono::steady_clock::now();
+    polygonAdvection_.advect(flow_.texture(source_), flow_.texture(target), tileDepth_, params_.ibfvs.flowBackground,
+                             noise, tile);
+    glFinish();
+    tiles_->reportCost(*in.group,
+                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
+    madeWith_[target] = tiles_->tiles();
+    // (3b, tiles) the contrast histogram of this tile, summed over the processes
+    if (contrast_.enabled()) {
+        timer_.begin(stageName(Stage::ContrastTexture));
+        contrast_.measure(flow_.texture(target), tileDepth_, tile, in.group);
+    }
+    // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
+    timer_.begin(stageName(Stage::TileReturn));
+    tiles_->returnValues(*in.group, flow_.texture(target));
 }
 
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
@@ -52,41 +77,22 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const int target = 1 - source_;
     const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
     const bool tiled = tiledParallel(in, c);
-    if (tiled) pullSource(in, plan.sourceCamera);
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
     // the same draw: its fragments are exactly the surface [L eq. 9, §IV-G] (or the
-    // visibility buffer's resolve, the same per pixel: CommonParams::surfaceRaster)
+    // visibility buffer's resolve, the same per pixel: CommonParams::surfaceRaster).
+    // Tiles: the draw interpolates t, and (2)+(3) run per pixel on each tile.
     timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
                             c.cullBackFaces, noise, tiled ? in.group : nullptr);
     current_ = target;
-    // Parallel: the whole surface's advected texture on every process, which is also the
-    // next frame's source (the texture lives in the image). Tiles: each process merges its
-    // tile by depth, then every tile goes to every process; shade, mask and depth stay
-    // this piece's (its own fragments are what it composites).
-    if (tiled) {
-        // Each tile's F_a merged by depth; the owners keep it for the next frame's pulls.
-        timer_.begin(stageName(Stage::TileExchange));
-        const gl::Texture2D& fa = flow_.texture(target);
-        std::vector<TileLayer> layers{TileLayer::of(fa, fa, params_.ibfvs.flowBackground)};
-        if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
-            if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-            layers.push_back(TileLayer::of(depth_, tileDepth_));
-        }
-        tiles_->distribute(*in.group, depth_, layers, 0, polygonAdvection_.footprint());
-        madeWith_[target] = tiles_->tiles();
-        // (3b, tiles) the contrast histogram of this tile, summed over the processes
-        if (contrast_.enabled()) {
-            timer_.begin(stageName(Stage::ContrastTexture));
-            contrast_.measure(fa, tileDepth_, tiles_->tile(), in.group);
-        }
-    } else if (in.group) {
-        mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
-    }
+    // Parallel, replicated: the whole surface's advected texture on every process, which is
+    // also the next frame's source (the texture lives in the image).
+    if (tiled) advectTile(in, noise, target);
+    else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
     // (3b) contrast enhancement, display only: F_a stretched between its robust
     // percentiles [issue 28]; the advection goes on from F_a itself

@@ -31,8 +31,9 @@ public:
     TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
 
 private:
-    // Tiles: the source F_a this piece's fragments read, from the processes that made it.
-    void pullSource(const FrameInput& in, const core::Camera& sourceCamera);
+    // Tiles: stages (2)+(3) on this process's tile, after the draw of its piece (target:
+    // the F_a written).
+    void advectTile(const FrameInput& in, const NoiseStep& noise, int target);
 
     MethodParams params_;
     core::Viewport viewport_;
@@ -53,7 +54,7 @@ private:
     // owners, from whom a process pulls what its fragments read of it.
     std::unique_ptr<ScreenTiles> tiles_;
     std::vector<PixelRect> madeWith_[2];
-    gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
+    gl::Texture2D tileDepth_;  // the whole surface's depth over the tile
 };
 
 }  // namespace flowsurf::methods::ibfvs

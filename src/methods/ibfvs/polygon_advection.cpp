@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <limits>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -15,34 +16,40 @@ PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonP
                                    std::initializer_list<FlowPingPong::Attachment> shared)
     : noise_(common, viewport),
       path_(resolveGlPath(common.glPath)),
+      defines_(resampleDefine(common.resample) + noise_.defines()),
+      shared_(shared),
       raster_(common.surfaceRaster),
       renderer_(currentRendererInfo()),
-      defines_(resampleDefine(common.resample) + noise_.defines() +
-               (path_ == GlPath::Compute ? "#define ADVECT_IN_COMPUTE 1\n" : "")),
       lastFootprint_{0, 0, viewport.width, viewport.height} {
-    program_ = program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
-                       defines_);
-    if (path_ != GlPath::Compute) return;
-    advectProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/polygon_advection.comp"}},
-                             resampleDefine(common.resample) + noise_.defines());
+    surfaceProgram(false, path_ == GlPath::Compute);
+    if (path_ == GlPath::Compute) makeDeferred(viewport);
+}
+
+void PolygonAdvection::makeDeferred(const core::Viewport& viewport) {
+    if (advectProgram_) return;
+    advectProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/polygon_advection.comp"}}, defines_);
     texcoord_ = gl::Texture2D(GL_RG32F, viewport.width, viewport.height, GL_NEAREST);
     texcoordFbo_ = gl::Framebuffer::create();
     texcoordFbo_.attach(GL_COLOR_ATTACHMENT0 + outputs::kFlow, texcoord_);
     int colors = 1;
-    for (const auto& [attachment, texture] : shared) {
+    for (const auto& [attachment, texture] : shared_) {
         texcoordFbo_.attach(attachment, *texture);
         colors += attachment >= GL_COLOR_ATTACHMENT0 && attachment <= GL_COLOR_ATTACHMENT15;
     }
     texcoordFbo_.finish(colors);
 }
 
-const gl::Program& PolygonAdvection::surfaceProgram(bool visibility) {
-    if (!visibility) return program_;
-    if (!resolve_) {
-        resolve_ = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
-                           defines_);
-    }
-    return resolve_;
+const gl::Program& PolygonAdvection::surfaceProgram(bool visibility, bool deferred) {
+    gl::Program& p = visibility ? resolve_[deferred] : draw_[deferred];
+    if (p) return p;
+    const std::string defines = defines_ + (deferred ? "#define ADVECT_IN_COMPUTE 1\n" : "");
+    if (visibility)
+        p = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
+                    defines);
+    else
+        p = program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},
+                    defines);
+    return p;
 }
 
 void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
@@ -53,10 +60,11 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     const Views views{camera.view(), camera.projection(viewport.aspect()) * camera.view(),
                       prevCamera.viewProjection(viewport.aspect()), dt};
     // Where this surface can be, and what the last one can have left (the buffers hold the
-    // background elsewhere). Tiles (`occluders`): the clears and the per-pixel pass cover
-    // just that, F_a keeping stale texels elsewhere, which nothing reads: the history comes
-    // from the tiles' owners (ScreenTiles::pull), the exchange and the overlay read this
-    // piece's pixels. Otherwise F_a is the next frame's history: cleared and written whole.
+    // background elsewhere). Tiles (`occluders`): the clears cover just that; F_a is
+    // written by advect() over the tile alone and keeps stale texels elsewhere, which nothing
+    // reads: the history comes from the tiles' owners (ScreenTiles::pull), and the overlay
+    // reads this piece's pixels, returned to it. Otherwise F_a is the next frame's history:
+    // cleared and written whole.
     footprint_ = projectedRect(surface.pieceParts(), views.viewProj, viewport.width, viewport.height);
     const PixelRect drawn = lastFootprint_.united(footprint_);
     lastFootprint_ = footprint_;
@@ -67,19 +75,26 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     const RasterAgreement raster =
         occluders ? VisibilityBuffer::agree(*occluders, footprint_, compute, viewport) : RasterAgreement{compute, {}};
     lastVisibility_ = raster.compute;
-    const gl::Program& surfacePass = surfaceProgram(lastVisibility_);
+    // Tiles: the draw writes the coordinates, each tile's owner advects after the merge.
+    const bool deferred = occluders || path_ == GlPath::Compute;
+    if (deferred) makeDeferred(viewport);
+    const gl::Program& surfacePass = surfaceProgram(lastVisibility_, deferred);
     if (lastVisibility_) rasterizeVisibility(surface, views.viewProj, viewport, cullBackFaces, drawn, occluders, raster.cells);
-    const bool advectHere = path_ != GlPath::Compute;  // the fragments resample and inject
-    clearTarget(advectHere ? nextFlowFbo : texcoordFbo_, viewport, flowBackground, work);
+    clearTarget(deferred ? texcoordFbo_ : nextFlowFbo, viewport, flowBackground, work);
     surfacePass.use();
     setViews(surfacePass, views);
-    if (advectHere) {
+    if (!deferred) {  // the fragments resample and inject
         noise_.bind(surfacePass, noise);
         glBindTextureUnit(bindings::kIbfvsPrevFlow, prevFlow.id());
     }
-    if (lastVisibility_) resolveVisibility(surface, viewport);
+    if (lastVisibility_) resolveVisibility(surface, viewport, surfacePass);
     else draw(surface, cullBackFaces);
-    if (advectHere) return;
+    if (deferred && !occluders) advect(prevFlow, nextFlow, depth, flowBackground, noise, work);
+}
+
+void PolygonAdvection::advect(const gl::Texture2D& prevFlow, const gl::Texture2D& nextFlow, const gl::Texture2D& depth,
+                              float flowBackground, const NoiseStep& noise, const PixelRect& rect) {
+    if (rect.empty()) return;
     advectProgram_.use();
     noise_.bind(advectProgram_, noise);
     glUniform1f(advectProgram_.uniform("uFlowBackground"), flowBackground);
@@ -87,9 +102,35 @@ void PolygonAdvection::apply(const SurfaceGpu& surface, const core::Camera& came
     glBindTextureUnit(bindings::kIbfvsTexcoord, texcoord_.id());
     glBindTextureUnit(bindings::kIbfvsDepth, depth.id());
     glBindImageTexture(bindings::kIbfvsNextFlow, nextFlow.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glUniform2i(advectProgram_.uniform("uOrigin"), work.x0, work.y0);
-    glUniform2i(advectProgram_.uniform("uEnd"), work.x1, work.y1);
-    dispatchPerPixel(work.width(), work.height());
+    glUniform2i(advectProgram_.uniform("uOrigin"), rect.x0, rect.y0);
+    glUniform2i(advectProgram_.uniform("uEnd"), rect.x1, rect.y1);
+    dispatchPerPixel(rect.width(), rect.height());
+}
+
+PixelRect PolygonAdvection::readRegion(const gl::Texture2D& depth, const PixelRect& rect) {
+    if (rect.empty()) return {};
+    if (!boundsProgram_) {
+        boundsProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/texcoord_bounds.comp"}});
+        bounds_ = gl::Buffer(4 * sizeof(GLint), nullptr);
+    }
+    constexpr GLint kNone[4] = {std::numeric_limits<GLint>::max(), std::numeric_limits<GLint>::max(),
+                                -std::numeric_limits<GLint>::max(), -std::numeric_limits<GLint>::max()};
+    glNamedBufferSubData(bounds_.id(), 0, sizeof kNone, kNone);
+    boundsProgram_.use();
+    glBindTextureUnit(bindings::kIbfvsTexcoord, texcoord_.id());
+    glBindTextureUnit(bindings::kIbfvsDepth, depth.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kIbfvsBounds, bounds_.id());
+    glUniform2i(boundsProgram_.uniform("uOrigin"), rect.x0, rect.y0);
+    glUniform2i(boundsProgram_.uniform("uEnd"), rect.x1, rect.y1);
+    dispatchPerPixel(rect.width(), rect.height());
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLint box[4];
+    glGetNamedBufferSubData(bounds_.id(), 0, sizeof box, box);
+    if (box[0] > box[2]) return {};
+    // The bicubic's 4 x 4 texels around a coordinate (the bilinear's 2 x 2 within), and rounding.
+    constexpr int kReach = 3;
+    return PixelRect{box[0] - kReach, box[1] - kReach, box[2] + kReach + 1, box[3] + kReach + 1}.intersect(
+        {0, 0, texcoord_.width(), texcoord_.height()});
 }
 
 void PolygonAdvection::clearTarget(const gl::Framebuffer& target, const core::Viewport& viewport, float flowBackground,
@@ -137,9 +178,10 @@ void PolygonAdvection::rasterizeVisibility(const SurfaceGpu& surface, const glm:
     if (occluders) visibility_->dropOccluded(*occluders, cells, footprint_);
 }
 
-void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const {
+void PolygonAdvection::resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport,
+                                         const gl::Program& resolve) const {
     if (footprint_.empty()) return;
-    glUniform2i(resolve_.uniform("uSize"), viewport.width, viewport.height);
+    glUniform2i(resolve.uniform("uSize"), viewport.width, viewport.height);
     visibility_->drawResolve(surface, footprint_);  // the surface's pixels only
 }
 

@@ -11,6 +11,9 @@
 // Compute raster (CommonParams::surfaceRaster, the rule of SurfaceGBuffer): the draw is
 // replaced by the visibility buffer and a resolve (ibfvs/polygon_resolve.frag) that writes
 // the same outputs per pixel from each pixel's nearest triangle; either path above follows.
+// Tiles (CommonParams::parallel): the draw is the compute path's, on either GL path; after
+// the group merges the coordinates by depth, each tile's owner runs the per-pixel pass on
+// its tile alone (advect()), so the image work divides by the tiles, not by the pieces.
 #pragma once
 
 #include "core/camera.h"
@@ -25,6 +28,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -38,11 +42,22 @@ public:
     // `prevCamera` projects the pathline points into the previous F_a. `nextFlowFbo`:
     // `nextFlow` at colour attachment 0 with the shared attachments; `depth` the shared depth.
     // `occluders`: collective then, the group agrees on the rasteriser and this piece's
-    // pixels that the group's other pieces hide are skipped (SurfaceGBuffer::render's).
+    // pixels that the group's other pieces hide are skipped (SurfaceGBuffer::render's);
+    // the draw writes the texture coordinate (texcoord()), not F_a: advect() follows.
     void apply(const SurfaceGpu& surface, const core::Camera& camera, const core::Camera& prevCamera,
                const core::Viewport& viewport, float dt, const gl::Texture2D& prevFlow,
                const gl::Texture2D& nextFlow, const gl::Framebuffer& nextFlowFbo, const gl::Texture2D& depth,
                float flowBackground, bool cullBackFaces, const NoiseStep& noise, ProcessGroup* occluders = nullptr);
+    // Tiles: the coordinates the last apply drew (RG32F), for the group's merge.
+    const gl::Texture2D& texcoord() const { return texcoord_; }
+    // Tiles: the texels of the previous F_a that the surface's pixels of `rect` read, after
+    // the merge (`texcoord()` and `depth` the whole surface's there), the resampling's reach
+    // included, within the image; empty where no pixel is on the surface.
+    PixelRect readRegion(const gl::Texture2D& depth, const PixelRect& rect);
+    // Tiles: the per-pixel pass over `rect` from the merged `texcoord()` and `depth`:
+    // `nextFlow` there from `prevFlow` with the noise, the gray background off the surface.
+    void advect(const gl::Texture2D& prevFlow, const gl::Texture2D& nextFlow, const gl::Texture2D& depth,
+                float flowBackground, const NoiseStep& noise, const PixelRect& rect);
     // Whether the last apply rasterised with the visibility buffer.
     bool lastUsedVisibility() const { return lastVisibility_; }
     // The pixels the last apply's surface can cover; its depth is 1 outside them.
@@ -61,23 +76,28 @@ private:
     void rasterizeVisibility(const SurfaceGpu& surface, const glm::mat4& viewProj, const core::Viewport& viewport,
                              bool cullBackFaces, const PixelRect& clear, ProcessGroup* occluders,
                              const PixelRect& cells);
-    // Over the bound target, from the visibility buffer, with the resolve program in use.
-    void resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport) const;
-    // The surface program of this apply: the draw's, or the resolve's (made on first use).
-    const gl::Program& surfaceProgram(bool visibility);
+    // Over the bound target, from the visibility buffer, with `resolve` in use.
+    void resolveVisibility(const SurfaceGpu& surface, const core::Viewport& viewport, const gl::Program& resolve) const;
+    // The surface program of this apply: the draw's, or the resolve's; writing F_a, or the
+    // texture coordinate (`deferred`). Made on first use.
+    const gl::Program& surfaceProgram(bool visibility, bool deferred);
+    // The compute path's texture coordinates, their framebuffer and the per-pixel pass.
+    void makeDeferred(const core::Viewport& viewport);
 
     NoiseInjection noise_;
     GlPath path_;
-    gl::Program program_;        // the draw
-    gl::Program advectProgram_;  // compute path: the per-pixel pass
-    gl::Texture2D texcoord_;     // compute path: RG32F, the draw's texture coordinates
+    std::string defines_;                      // the resampling and the noise
+    gl::Program draw_[2], resolve_[2];         // [deferred]
+    gl::Program advectProgram_;                // compute path and tiles: the per-pixel pass
+    gl::Texture2D texcoord_;                   // RG32F, the draw's texture coordinates
     gl::Framebuffer texcoordFbo_;
+    std::vector<FlowPingPong::Attachment> shared_;
+    gl::Program boundsProgram_;  // tiles: readRegion's pass and its four integers
+    gl::Buffer bounds_;
     // Compute raster: made on first use.
     SurfaceRaster raster_;
     RendererInfo renderer_;  // for the auto rule of useComputeRaster
-    std::string defines_;   // the draw's, for the resolve
     std::unique_ptr<VisibilityBuffer> visibility_;
-    gl::Program resolve_;
     PixelRect footprint_;      // the pixels this apply's surface can cover
     PixelRect lastFootprint_;  // where the last one can have left fragments (in every buffer)
     bool lastVisibility_ = false;
