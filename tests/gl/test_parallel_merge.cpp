@@ -448,6 +448,36 @@ TEST(ScreenSplit, MeasuredCostsMoveTheCut) {
     EXPECT_EQ(again[1].x0, 80);
 }
 
+// Work a process has apart from its tile (drawing its own piece, which no split moves):
+// the tiles' shares are set so that the totals come out even, the split cuts by them, and
+// a process whose own work is over the mean gets no tile work.
+TEST(ScreenSplit, OwnWorkMovesTheCut) {
+    {
+        const float tile[2] = {20.0f, 20.0f}, own[2] = {30.0f, 10.0f};
+        const std::vector<float> shares = methods::tileShares(tile, own);
+        ASSERT_EQ(shares.size(), 2u);
+        // 40 ms of tile work: 10 + 30 to even 30 + 10 out at 40 each.
+        EXPECT_FLOAT_EQ(shares[0], 0.5f);
+        EXPECT_FLOAT_EQ(shares[1], 1.5f);
+        const int cellsX = 16, cellsY = 8, cell = 16;
+        const std::vector<float> weight(size_t(cellsX * cellsY), 1.0f);
+        const auto tiles = methods::splitScreen(weight, cellsX, cellsY, cell, 256, 128, 2, shares);
+        EXPECT_EQ(tiles[0].x1, 64);  // a quarter of the even weight
+        EXPECT_EQ(tiles[1], (methods::PixelRect{64, 0, 256, 128}));
+    }
+    {
+        const float tile[3] = {10.0f, 10.0f, 10.0f}, own[3] = {60.0f, 10.0f, 10.0f};
+        const std::vector<float> shares = methods::tileShares(tile, own);
+        EXPECT_EQ(shares[0], 0.0f);
+        EXPECT_FLOAT_EQ(shares[1], 1.5f);
+        EXPECT_FLOAT_EQ(shares[2], 1.5f);
+    }
+    {
+        const float none[2] = {0.0f, 0.0f};
+        EXPECT_EQ(methods::tileShares(none, none), (std::vector<float>{1.0f, 1.0f}));
+    }
+}
+
 }  // namespace
 
 namespace {

@@ -12,9 +12,11 @@ namespace flowsurf::methods {
 
 namespace {
 
-// Recursive bisection of the cell rectangle [cx0, cx1) x [cy0, cy1) into `parts`.
-void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int cy1, int parts,
-           std::vector<std::array<int, 4>>& out) {
+// Recursive bisection of the cell rectangle [cx0, cx1) x [cy0, cy1) into the parts
+// [part, part + parts), of weights in proportion to `shares` (cumulative: shares[i] the sum
+// of the first i).
+void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int cy1, int part, int parts,
+           std::span<const double> shares, std::vector<std::array<int, 4>>& out) {
     if (parts == 1) {
         out.push_back({cx0, cy0, cx1, cy1});
         return;
@@ -28,24 +30,27 @@ void split(std::span<const float> w, int cellsX, int cx0, int cy0, int cx1, int 
         for (int x = cx0; x < cx1; ++x) slice[size_t((alongX ? x : y) - lo)] += w[size_t(y) * size_t(cellsX) + size_t(x)];
     double total = 0;
     for (double s : slice) total += s;
-    const double target = total * double(first) / double(parts);
+    const double all = shares[size_t(part + parts)] - shares[size_t(part)];
+    const double below = shares[size_t(part + first)] - shares[size_t(part)];
+    const double fraction = all > 0 ? below / all : double(first) / double(parts);
+    const double target = total * fraction;
     // The cut c (lo < c < hi where possible) whose weight below is nearest the target.
-    int cut = lo + (hi - lo) * first / parts;
+    int cut = lo + int(double(hi - lo) * fraction);
     if (total > 0) {
-        double below = 0, best = -1;
+        double sum = 0, best = -1;
         for (int c = lo + 1; c < hi; ++c) {
-            below += slice[size_t(c - 1 - lo)];
-            const double miss = std::abs(below - target);
+            sum += slice[size_t(c - 1 - lo)];
+            const double miss = std::abs(sum - target);
             if (best < 0 || miss < best) best = miss, cut = c;
         }
     }
     if (hi - lo >= 2) cut = std::clamp(cut, lo + 1, hi - 1);
     if (alongX) {
-        split(w, cellsX, cx0, cy0, cut, cy1, first, out);
-        split(w, cellsX, cut, cy0, cx1, cy1, parts - first, out);
+        split(w, cellsX, cx0, cy0, cut, cy1, part, first, shares, out);
+        split(w, cellsX, cut, cy0, cx1, cy1, part + first, parts - first, shares, out);
     } else {
-        split(w, cellsX, cx0, cy0, cx1, cut, first, out);
-        split(w, cellsX, cx0, cut, cx1, cy1, parts - first, out);
+        split(w, cellsX, cx0, cy0, cx1, cut, part, first, shares, out);
+        split(w, cellsX, cx0, cut, cx1, cy1, part + first, parts - first, shares, out);
     }
 }
 
@@ -135,17 +140,37 @@ std::vector<float> costWeights(std::span<const float> weights, int cellsX, int c
 }
 
 std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
-                                   int width, int height, int parts) {
+                                   int width, int height, int parts, std::span<const float> shares) {
     if (cellWeights.size() != size_t(cellsX) * size_t(cellsY))
         throw GlError("splitScreen: " + std::to_string(cellWeights.size()) + " weights for " + std::to_string(cellsX) +
                       " x " + std::to_string(cellsY) + " cells");
+    parts = std::max(1, parts);
+    if (!shares.empty() && shares.size() != size_t(parts))
+        throw GlError("splitScreen: " + std::to_string(shares.size()) + " shares for " + std::to_string(parts) + " parts");
+    std::vector<double> cumulative(size_t(parts) + 1, 0.0);
+    for (int i = 0; i < parts; ++i)
+        cumulative[size_t(i) + 1] = cumulative[size_t(i)] + (shares.empty() ? 1.0 : std::max(0.0, double(shares[size_t(i)])));
     std::vector<std::array<int, 4>> cells;
-    split(cellWeights, cellsX, 0, 0, cellsX, cellsY, std::max(1, parts), cells);
+    split(cellWeights, cellsX, 0, 0, cellsX, cellsY, 0, parts, cumulative, cells);
     std::vector<PixelRect> rects;
     for (const auto& c : cells)
         rects.push_back({std::min(c[0] * cellPx, width), std::min(c[1] * cellPx, height), std::min(c[2] * cellPx, width),
                          std::min(c[3] * cellPx, height)});
     return rects;
+}
+
+std::vector<float> tileShares(std::span<const float> tileMs, std::span<const float> ownMs) {
+    if (tileMs.size() != ownMs.size()) throw GlError("tileShares: one own cost per tile cost");
+    const size_t n = tileMs.size();
+    double total = 0;
+    for (size_t t = 0; t < n; ++t) total += double(tileMs[t]) + double(ownMs[t]);
+    const double mean = n ? total / double(n) : 0.0;
+    std::vector<float> shares(n, 1.0f);
+    double sum = 0;
+    for (size_t t = 0; t < n; ++t) sum += std::max(0.0, mean - double(ownMs[t]));
+    if (!(sum > 0)) return shares;
+    for (size_t t = 0; t < n; ++t) shares[t] = float(std::max(0.0, mean - double(ownMs[t])) / sum * double(n));
+    return shares;
 }
 
 }  // namespace flowsurf::methods

@@ -52,13 +52,21 @@ std::vector<core::Bounds> surfaceParts(const core::SurfaceMesh& mesh, int cells 
 // The union of projectedRect over `parts`: the pixels the triangles they hold can cover.
 PixelRect projectedRect(std::span<const core::Bounds> parts, const glm::mat4& viewProj, int width, int height);
 
-// `parts` rectangles that together cover width x height, of about equal weight: the
-// weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut
+// `parts` rectangles that together cover width x height, of about equal weight, or of
+// weights in proportion to `shares` (one per part, in the order of the result) when given:
+// the weights of cellsX x cellsY cells of cellPx pixels (row-major, bottom row first), cut
 // recursively across the longer side at the cell boundary nearest the weight's share.
 // The same weights give the same rectangles on every process. Rectangles can be empty
 // when there are more parts than cells.
 std::vector<PixelRect> splitScreen(std::span<const float> cellWeights, int cellsX, int cellsY, int cellPx,
-                                   int width, int height, int parts);
+                                   int width, int height, int parts, std::span<const float> shares = {});
+
+// Load balance where a process also has work no split moves (drawing its own piece): each
+// process's share of the tile work (splitScreen's `shares`) such that its tile's measured
+// cost (`tileMs`, per unit of share as measured) plus its own (`ownMs`) is even: the mean
+// of the totals less its own, none where its own is over the mean. Equal shares when
+// nothing was measured.
+std::vector<float> tileShares(std::span<const float> tileMs, std::span<const float> ownMs);
 
 // Load balance from measured costs: the cell weights of the last split (`weights`, cellsX
 // per row of cellPx pixels) scaled so that each tile's cells carry its measured cost

@@ -163,7 +163,8 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     for (size_t c = 0; c < weight.size(); ++c) weight[c] += 0.05f * float(kCellPx * kCellPx);
     if (costScale_.size() != weight.size()) costScale_.assign(weight.size(), 1.0f);
     for (size_t c = 0; c < weight.size(); ++c) weight[c] *= costScale_[c];
-    tiles_ = splitScreen(weight, cellsX, cellsY, kCellPx, w, h, n);
+    if (shares_.size() != size_t(n)) shares_.clear();
+    tiles_ = splitScreen(weight, cellsX, cellsY, kCellPx, w, h, n, shares_);
     weights_ = std::move(weight);
     cellsX_ = cellsX;
     splitDue_ = false;
@@ -355,18 +356,26 @@ void ScreenTiles::copyOwn(std::span<const TileLayer> layers, const PixelRect& R)
     }
 }
 
-void ScreenTiles::reportCost(ProcessGroup& group, float ms) {
+void ScreenTiles::reportCost(ProcessGroup& group, float ms, float ownMs) {
     if (!ready()) return;
-    const float mine[1] = {ms};
-    const std::vector<float> all = group.gather(mine);
+    const float mine[2] = {ms, ownMs};
+    const std::vector<float> all = group.gather(mine);  // tile, own; per process in rank order
+    const size_t n = all.size() / 2;
+    std::vector<float> tileMs(n), own(n);
     double total = 0, slowest = 0;
-    for (float v : all) total += v, slowest = std::max(slowest, double(v));
-    const double mean = total / double(all.size());
+    for (size_t t = 0; t < n; ++t) {
+        tileMs[t] = all[2 * t];
+        own[t] = all[2 * t + 1];
+        total += double(tileMs[t]) + double(own[t]);
+        slowest = std::max(slowest, double(tileMs[t]) + double(own[t]));
+    }
+    const double mean = total / double(n);
     imbalanced_ = slowest > double(kImbalance) * mean && mean > 0 ? imbalanced_ + 1 : 0;
     if (imbalanced_ < kImbalanceFrames) return;
     // The same on every process: the same gathered costs and the same last split.
-    const std::vector<float> scaled = costWeights(weights_, cellsX_, kCellPx, tiles_, all);
+    const std::vector<float> scaled = costWeights(weights_, cellsX_, kCellPx, tiles_, tileMs);
     for (size_t c = 0; c < scaled.size(); ++c) costScale_[c] *= weights_[c] > 0 ? scaled[c] / weights_[c] : 1.0f;
+    shares_ = tileShares(tileMs, own);
     imbalanced_ = 0;
     splitDue_ = true;
     ++rebalances_;

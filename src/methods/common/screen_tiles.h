@@ -29,7 +29,7 @@
 // layers' bytes per covered pixel; the merge on the host over the box of what the others
 // sent (this piece's own layers copied on the GPU unless merged in place; the whole tile
 // plus guard for a layer whose own values cannot stand for the background); per frame 4 B per covered pixel back,
-// the footprint's 4 B per pixel outside the tile, and one float per process (the measured cost).
+// the footprint's 4 B per pixel outside the tile, and two floats per process (the measured costs).
 #pragma once
 
 #include "core/camera.h"
@@ -103,14 +103,16 @@ public:
               const PixelRect& wanted);
 
     // Collective, once per frame after the image stages: `ms`, what they took on this
-    // process's tile. When the slowest tile has taken more than kImbalance times the mean
-    // for kImbalanceFrames frames in a row, the cells are weighted by the measured costs
-    // (costWeights) from then on, and splitDue() says so until the next distribute, which
-    // the method then runs at once from its own buffers (history is pulled from the split
-    // that made it, so a new split needs nothing more).
+    // process's tile, and `ownMs`, what this process's own piece cost it in the same frame
+    // (work no split moves: drawing it). When the slowest process has taken more than
+    // kImbalance times the mean for kImbalanceFrames frames in a row, the cells are
+    // weighted by the measured costs (costWeights) from then on and each process's share of
+    // them is set against its own work (tileShares), and splitDue() says so until the next
+    // distribute, which the method then runs at once from its own buffers (history is
+    // pulled from the split that made it, so a new split needs nothing more).
     static constexpr float kImbalance = 1.15f;
     static constexpr int kImbalanceFrames = 3;
-    void reportCost(ProcessGroup& group, float ms);
+    void reportCost(ProcessGroup& group, float ms, float ownMs = 0.0f);
     bool splitDue() const { return splitDue_; }
     int rebalances() const { return rebalances_; }  // how often the costs redid the split
 
@@ -151,8 +153,9 @@ private:
     std::vector<uint32_t> pixelIndex_, winnerAt_;
     std::vector<float> best_;
     std::vector<int32_t> winner_;
-    // The last split's cell weights, the measured cost scale per cell, and the balance.
-    std::vector<float> weights_, costScale_;
+    // The last split's cell weights, the measured cost scale per cell, each process's share
+    // of them (empty: even), and the balance.
+    std::vector<float> weights_, costScale_, shares_;
     int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
     bool splitDue_ = false;
     TileTraffic traffic_;

@@ -25,8 +25,9 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
 // Tiles: after every process drew its piece's texture coordinates, the whole surface's
 // coordinates and depth over this tile, then the per-pixel pass on the tile from the part of
 // the source F_a it reads (from the processes that made it); the tile's F_a is kept for the
-// next frame's pulls and returned to the processes whose pieces cover its pixels.
-void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int target) {
+// next frame's pulls and returned to the processes whose pieces cover its pixels. `drawMs`:
+// what drawing this piece took, for the balance.
+void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int target, float drawMs) {
     timer_.begin(stageName(Stage::TileExchange));
     if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
     // The pass reads the coordinates where the merged depth is < 1 only: this piece's own
@@ -48,7 +49,8 @@ void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int
                              noise, tile);
     glFinish();
     tiles_->reportCost(*in.group,
-                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
+                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count(),
+                       drawMs);
     madeWith_[target] = tiles_->tiles();
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
@@ -85,13 +87,18 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // Tiles: the draw interpolates t, and (2)+(3) run per pixel on each tile.
     timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
+    const auto drawn = std::chrono::steady_clock::now();
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
                             c.cullBackFaces, noise, tiled ? in.group : nullptr);
     current_ = target;
     // Parallel, replicated: the whole surface's advected texture on every process, which is
     // also the next frame's source (the texture lives in the image).
-    if (tiled) advectTile(in, noise, target);
+    if (tiled) {
+        glFinish();  // the draw's cost, which no split moves (ScreenTiles::reportCost)
+        advectTile(in, noise, target,
+                   std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - drawn).count());
+    }
     else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
     // (3b) contrast enhancement, display only: F_a stretched between its robust

@@ -32,8 +32,8 @@ public:
 
 private:
     // Tiles: stages (2)+(3) on this process's tile, after the draw of its piece (target:
-    // the F_a written).
-    void advectTile(const FrameInput& in, const NoiseStep& noise, int target);
+    // the F_a written; drawMs: what the draw took).
+    void advectTile(const FrameInput& in, const NoiseStep& noise, int target, float drawMs);
 
     MethodParams params_;
     core::Viewport viewport_;
