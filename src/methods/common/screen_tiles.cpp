@@ -356,6 +356,11 @@ void ScreenTiles::copyOwn(std::span<const TileLayer> layers, const PixelRect& R)
     }
 }
 
+float ScreenTiles::finishedMs(Clock::time_point start) {
+    glFinish();
+    return std::chrono::duration<float, std::milli>(Clock::now() - start).count();
+}
+
 void ScreenTiles::reportCost(ProcessGroup& group, float ms, float ownMs) {
     if (!ready()) return;
     const float mine[2] = {ms, ownMs};

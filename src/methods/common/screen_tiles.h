@@ -38,6 +38,7 @@
 #include "methods/common/screen_split.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -113,6 +114,10 @@ public:
     static constexpr float kImbalance = 1.15f;
     static constexpr int kImbalanceFrames = 3;
     void reportCost(ProcessGroup& group, float ms, float ownMs = 0.0f);
+    // What GL work issued since `start` took: waits for it (glFinish), then the ms since
+    // `start`. The costs reportCost takes.
+    using Clock = std::chrono::steady_clock;
+    static float finishedMs(Clock::time_point start);
     bool splitDue() const { return splitDue_; }
     int rebalances() const { return rebalances_; }  // how often the costs redid the split
 

@@ -5,7 +5,6 @@
 #include "methods/common/stages.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace flowsurf::methods::hybrid {
@@ -123,13 +122,12 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool ti
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
-    const auto traced = std::chrono::steady_clock::now();
+    const auto traced = ScreenTiles::Clock::now();
     if (!tiled || !tiles_->tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
     if (!tiled) return;
     // The tile's cost (the return reads I back, so the wait costs nothing), then I back
     // to the processes whose fragments cover each pixel of the tile.
-    glFinish();
-    tiles_->reportCost(*in.group, std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - traced).count());
+    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(traced));
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
         timer_.begin(stageName(Stage::ContrastTexture));

@@ -3,8 +3,6 @@
 #include "methods/common/gpu_bindings.h"
 #include "methods/common/stages.h"
 
-#include <chrono>
-#include <cmath>
 
 namespace flowsurf::methods::ibfvs {
 
@@ -44,13 +42,10 @@ void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int
         tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
         timer_.begin(stageName(Stage::TextureAdvection));
     }
-    const auto advected = std::chrono::steady_clock::now();
+    const auto advected = ScreenTiles::Clock::now();
     polygonAdvection_.advect(flow_.texture(source_), flow_.texture(target), tileDepth_, params_.ibfvs.flowBackground,
                              noise, tile);
-    glFinish();
-    tiles_->reportCost(*in.group,
-                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count(),
-                       drawMs);
+    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected), drawMs);
     madeWith_[target] = tiles_->tiles();
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
@@ -87,18 +82,15 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     // Tiles: the draw interpolates t, and (2)+(3) run per pixel on each tile.
     timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    const auto drawn = std::chrono::steady_clock::now();
+    const auto drawn = ScreenTiles::Clock::now();
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
                             c.cullBackFaces, noise, tiled ? in.group : nullptr);
     current_ = target;
     // Parallel, replicated: the whole surface's advected texture on every process, which is
     // also the next frame's source (the texture lives in the image).
-    if (tiled) {
-        glFinish();  // the draw's cost, which no split moves (ScreenTiles::reportCost)
-        advectTile(in, noise, target,
-                   std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - drawn).count());
-    }
+    // Tiles: with the draw's cost, which no split moves (ScreenTiles::reportCost).
+    if (tiled) advectTile(in, noise, target, ScreenTiles::finishedMs(drawn));
     else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
     // (3b) contrast enhancement, display only: F_a stretched between its robust

@@ -4,7 +4,6 @@
 #include "methods/common/stages.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -166,7 +165,7 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
         tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
         timer_.begin(stageName(Stage::TextureAdvection));
     }
-    const auto advected = std::chrono::steady_clock::now();
+    const auto advected = ScreenTiles::Clock::now();
     if (!tiled || !tiles_->tile().empty())
         textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_, tiled),
                                 flow_.texture(target), flow_.fbo(target), params_.isa.edgeBlending, noise,
@@ -174,9 +173,7 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     current_ = target;
     if (!tiled) return;
     // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
-    glFinish();
-    tiles_->reportCost(*in.group,
-                       std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - advected).count());
+    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected));
     madeWith_[target] = tiles_->tiles();
     // (4b, tiles) the contrast histogram of this tile, summed over the processes
     if (contrast_.enabled()) {
