@@ -1,8 +1,11 @@
 // IBFVS under parallel = tiles (ibfvs_renderer.cpp): the box, in texels of the previous
 // F_a, of the texture coordinates the surface's pixels of a rectangle read it at, so that
-// a tile pulls only that part of the history (ScreenTiles::pull). A box per work group in
-// shared memory, then one atomic per side and group into the buffer.
-layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
+// a tile pulls only that part of the history (ScreenTiles::pull). Each invocation walks one
+// column of BOUNDS_ROWS pixels (the work group's invocations side by side, so that a SIMD
+// batch reads neighbouring pixels), keeps its box in registers, and adds it with one atomic
+// per side. No shared memory and no barrier: llvmpipe runs a barrier by switching between
+// the group's invocations one at a time, which cost more than the reads themselves.
+layout(local_size_x = BOUNDS_COLUMNS) in;
 layout(binding = IBFVS_TEXCOORD_UNIT) uniform sampler2D uTexcoord;  // RG32F, the merged draw's
 layout(binding = IBFVS_DEPTH_UNIT) uniform sampler2D uDepth;        // the merged depth, 1 = background
 layout(std430, binding = IBFVS_BOUNDS_BINDING) buffer Bounds {
@@ -10,30 +13,26 @@ layout(std430, binding = IBFVS_BOUNDS_BINDING) buffer Bounds {
 };
 uniform ivec2 uOrigin;  // the pixels read: [uOrigin, uEnd)
 uniform ivec2 uEnd;
-shared int groupBox[4];
 void main() {
-    if (gl_LocalInvocationIndex == 0u) {
-        groupBox[0] = 0x7fffffff;
-        groupBox[1] = 0x7fffffff;
-        groupBox[2] = -0x7fffffff;
-        groupBox[3] = -0x7fffffff;
+    int x = uOrigin.x + int(gl_GlobalInvocationID.x);
+    int y0 = uOrigin.y + int(gl_GlobalInvocationID.y) * BOUNDS_ROWS;
+    int y1 = min(y0 + BOUNDS_ROWS, uEnd.y);
+    if (x >= uEnd.x) return;
+    // Beyond the texture a coordinate reads its edge (clamp to edge).
+    vec2 size = vec2(textureSize(uTexcoord, 0));
+    ivec2 lo = ivec2(0x7fffffff), hi = ivec2(-0x7fffffff);
+    for (int y = y0; y < y1; ++y) {
+        ivec2 p = ivec2(x, y);
+        if (texelFetch(uDepth, p, 0).r < 1.0) {
+            vec2 t = clamp(texelFetch(uTexcoord, p, 0).xy * size, vec2(-1.0), size + 1.0);
+            lo = min(lo, ivec2(floor(t)));
+            hi = max(hi, ivec2(ceil(t)));
+        }
     }
-    barrier();
-    ivec2 p = uOrigin + ivec2(gl_GlobalInvocationID.xy);
-    if (all(lessThan(p, uEnd)) && texelFetch(uDepth, p, 0).r < 1.0) {
-        // Beyond the texture a coordinate reads its edge (clamp to edge).
-        vec2 size = vec2(textureSize(uTexcoord, 0));
-        vec2 t = clamp(texelFetch(uTexcoord, p, 0).xy * size, vec2(-1.0), size + 1.0);
-        atomicMin(groupBox[0], int(floor(t.x)));
-        atomicMin(groupBox[1], int(floor(t.y)));
-        atomicMax(groupBox[2], int(ceil(t.x)));
-        atomicMax(groupBox[3], int(ceil(t.y)));
-    }
-    barrier();
-    if (gl_LocalInvocationIndex == 0u && groupBox[0] <= groupBox[2]) {
-        atomicMin(box[0], groupBox[0]);
-        atomicMin(box[1], groupBox[1]);
-        atomicMax(box[2], groupBox[2]);
-        atomicMax(box[3], groupBox[3]);
+    if (lo.x <= hi.x) {
+        atomicMin(box[0], lo.x);
+        atomicMin(box[1], lo.y);
+        atomicMax(box[2], hi.x);
+        atomicMax(box[3], hi.y);
     }
 }

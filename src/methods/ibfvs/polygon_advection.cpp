@@ -12,6 +12,12 @@
 
 namespace flowsurf::methods::ibfvs {
 
+namespace {
+// readRegion's pass (texcoord_bounds.comp, which says why it has no shared memory):
+// invocations side by side in a work group, and the pixels each walks down its column.
+constexpr int kBoundsColumns = 64, kBoundsRows = 64;
+}  // namespace
+
 PolygonAdvection::PolygonAdvection(const core::Viewport& viewport, const CommonParams& common,
                                    std::initializer_list<FlowPingPong::Attachment> shared)
     : noise_(common, viewport),
@@ -110,7 +116,9 @@ void PolygonAdvection::advect(const gl::Texture2D& prevFlow, const gl::Texture2D
 PixelRect PolygonAdvection::readRegion(const gl::Texture2D& depth, const PixelRect& rect) {
     if (rect.empty()) return {};
     if (!boundsProgram_) {
-        boundsProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/texcoord_bounds.comp"}});
+        boundsProgram_ = program({{GL_COMPUTE_SHADER, "ibfvs/texcoord_bounds.comp"}},
+                                 "#define BOUNDS_COLUMNS " + std::to_string(kBoundsColumns) + "\n#define BOUNDS_ROWS " +
+                                     std::to_string(kBoundsRows) + "\n");
         bounds_ = gl::Buffer(4 * sizeof(GLint), nullptr);
     }
     constexpr GLint kNone[4] = {std::numeric_limits<GLint>::max(), std::numeric_limits<GLint>::max(),
@@ -122,7 +130,8 @@ PixelRect PolygonAdvection::readRegion(const gl::Texture2D& depth, const PixelRe
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kIbfvsBounds, bounds_.id());
     glUniform2i(boundsProgram_.uniform("uOrigin"), rect.x0, rect.y0);
     glUniform2i(boundsProgram_.uniform("uEnd"), rect.x1, rect.y1);
-    dispatchPerPixel(rect.width(), rect.height());
+    glDispatchCompute(GLuint((rect.width() + kBoundsColumns - 1) / kBoundsColumns),
+                      GLuint((rect.height() + kBoundsRows - 1) / kBoundsRows), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     GLint box[4];
     glGetNamedBufferSubData(bounds_.id(), 0, sizeof box, box);
