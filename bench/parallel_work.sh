@@ -13,7 +13,9 @@
 #
 # Prints, per method and rank count: Σ instructions per frame, that over 1 rank's, the
 # busiest rank over the mean, and LLVM's instructions per frame (shader compilation: ~0 when
-# the two runs compiled alike, as they must for the difference to mean one frame). Instructions are not time (a cache miss costs more than an
+# the two runs compiled alike, as they must for the difference to mean one frame); then, per
+# method, the functions whose instructions grew most at the most ranks (what the split adds,
+# and where: parallel_work.py). Instructions are not time (a cache miss costs more than an
 # add): compare with the CPU sums of bench/paraview/scaling.sh's oversubscribed runs to see
 # what the cores' sharing adds. About 2-5 minutes per run at 1M triangles; 18 runs by default.
 set -euo pipefail
