@@ -3,7 +3,6 @@
 #include "methods/common/gpu_bindings.h"
 #include "methods/common/stages.h"
 
-
 namespace flowsurf::methods::ibfvs {
 
 IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport)
