@@ -7,10 +7,10 @@
 #       [--frames 9] [--methods hybrid,isa,ibfvs] [--out DIR] [--ranks-stats 4,8] [--stats-rounds 3]
 #       [--fxaa default|on|off]
 #
-# Per round: 1 rank, 2 ranks tiles, 2 ranks replicate (interleaved, so that a drift of the
-# machine's speed touches all alike); after the rounds, 1 rank with llvmpipe's own 2 threads
-# (LP_NUM_THREADS=2, not bound) and, per --ranks-stats count, oversubscribed runs (the ranks
-# bound round-robin to the cores) with
+# Per round: 1 rank, 2 ranks tiles, 1 rank with llvmpipe's own 2 threads (LP_NUM_THREADS=2,
+# not bound: what the 2 ranks are compared with, right after them), 2 ranks replicate
+# (interleaved, so that a drift of the machine's speed touches all alike); after the rounds,
+# per --ranks-stats count, oversubscribed runs (the ranks bound round-robin to the cores) with
 # FLOWSURF_RANK_STATS (per-rank CPU time and bytes per render; wall time says nothing there),
 # after measuring what that oversubscription costs the same work on this machine (I_N): in
 # --stats-rounds rounds of 1 rank then N ranks tiles per count (interleaved: each round's sums
@@ -167,11 +167,10 @@ for r in $(seq 1 "$ROUNDS"); do
   run "$OUT/r$r/np1" 1 tiles "${BOUND[@]}" || true
   round_shw "$r" before
   run "$OUT/r$r/np2_tiles" 2 tiles "${BOUND[@]}" || true
+  LP_NUM_THREADS=2 run "$OUT/r$r/np1_lp2" 1 tiles "${FREE[@]}" || true
   run "$OUT/r$r/np2_replicate" 2 replicate "${BOUND[@]}" || true
   round_shw "$r" after
 done
-echo "== 1 rank, llvmpipe's 2 threads" >&2
-LP_NUM_THREADS=2 run "$OUT/np1_lp2" 1 tiles "${FREE[@]}" || true
 export FLOWSURF_RANK_STATS
 if [ -n "$STATS_RANKS" ]; then rm -rf "$OUT/stats"; fi
 stats_run() {  # ROUND NAME NP MODE: one run with FLOWSURF_RANK_STATS into OUT/stats/r<ROUND>/<NAME>

@@ -54,9 +54,31 @@ for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
         runs.setdefault(run, {}).setdefault(method, []).append(v['median_ms'])
     if 'paraview_ms' in timings:
         paraview.setdefault(run, []).append(timings['paraview_ms'])
-lp2 = os.path.join(OUT, 'np1_lp2', 'timings.json')
-lp2_paraview = load(lp2).get('paraview_ms') if os.path.exists(lp2) else None
-lp2 = load(lp2)['methods'] if os.path.exists(lp2) else {}
+# 1 rank on llvmpipe's 2 threads: in every round (r*/np1_lp2), or once after the rounds (np1_lp2).
+lp2_once = os.path.join(OUT, 'np1_lp2', 'timings.json')
+if 'np1_lp2' not in runs and os.path.exists(lp2_once):
+    for method, v in load(lp2_once)['methods'].items():
+        runs.setdefault('np1_lp2', {})[method] = [v['median_ms']]
+    if 'paraview_ms' in load(lp2_once):
+        paraview['np1_lp2'] = [load(lp2_once)['paraview_ms']]
+lp2_paraview = statistics.median(paraview['np1_lp2']) if 'np1_lp2' in paraview else None
+
+
+def round_ratios(method, num, den, less_paraview=False):
+    """`num` / `den` ms of `method` within each round that ran both (rounds in step); with
+    `less_paraview`, each less its run's ParaView frame."""
+    out = []
+    for d in sorted(glob.glob(os.path.join(OUT, 'r*', den, 'timings.json'))):
+        n = os.path.join(os.path.dirname(os.path.dirname(d)), num, 'timings.json')
+        try:
+            a, b = load(n), load(d)
+            pa, pb = (a['paraview_ms'], b['paraview_ms']) if less_paraview else (0.0, 0.0)
+            out.append((a['methods'][method]['median_ms'] - pa) / (b['methods'][method]['median_ms'] - pb))
+        except (OSError, KeyError):
+            pass
+    return out
+
+
 info = open(os.path.join(OUT, 'plugin', 'info.txt')).read().strip().splitlines()
 rounds = sorted(glob.glob(os.path.join(OUT, 'r*', 'np1', 'timings.json')))
 first = load(rounds[0]) if rounds else None  # --rounds 0: the oversubscribed runs alone
@@ -77,9 +99,15 @@ if first:
         t1 = statistics.median(runs['np1'][method])
         tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')]))
         tr = statistics.median(runs.get('np2_replicate', {}).get(method, [float('nan')]))
-        l2 = lp2.get(method, {}).get('median_ms', float('nan'))
+        l2 = statistics.median(runs.get('np1_lp2', {}).get(method, [float('nan')]))
+        # In step: the median of each round's ratio, when every round ran both.
+        per_round = round_ratios(method, 'np2_tiles', 'np1_lp2')
+        both = statistics.median(per_round) if len(per_round) > 1 else tt / l2
         print('| %s | %.0f | %.0f | **%.2f** | %.0f | %.2f | %.0f | %.2f | %d |'
-              % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, tt / l2, len(runs['np1'][method])))
+              % (method, t1, tt, t1 / tt, tr, t1 / tr, l2, both, len(runs['np1'][method])))
+    if any(len(round_ratios(m, 'np2_tiles', 'np1_lp2')) > 1 for m in runs.get('np1', {})):
+        print('\n1 rank on llvmpipe\'s 2 threads ran in every round (after its 2-rank runs); "2 ranks tiles / that" '
+              'is the median of the rounds\' own ratios.')
 
     if 'np1' in paraview and 'np2_tiles' in paraview:
         p1, p2 = statistics.median(paraview['np1']), statistics.median(paraview['np2_tiles'])
@@ -93,8 +121,10 @@ if first:
         for method in runs.get('np1', {}):
             t1 = statistics.median(runs['np1'][method]) - p1
             tt = statistics.median(runs.get('np2_tiles', {}).get(method, [float('nan')])) - p2
-            l2 = lp2.get(method, {}).get('median_ms', float('nan')) - (lp2_paraview or float('nan'))
-            print('| %s | %.0f | %.0f | %.2f | %.0f | %.2f |' % (method, t1, tt, t1 / tt, l2, tt / l2))
+            l2 = statistics.median(runs.get('np1_lp2', {}).get(method, [float('nan')])) - (lp2_paraview or float('nan'))
+            per_round = round_ratios(method, 'np2_tiles', 'np1_lp2', less_paraview=True)
+            both = statistics.median(per_round) if len(per_round) > 1 else tt / l2
+            print('| %s | %.0f | %.0f | %.2f | %.0f | %.2f |' % (method, t1, tt, t1 / tt, l2, both))
 
     shw_path = os.path.join(OUT, 'rounds.txt')
     if os.path.exists(shw_path):
@@ -104,7 +134,8 @@ if first:
         methods = list(runs.get('np1', {}))
         print('\nPer round: the two-process speedup measured before and after its 2-rank runs, and the '
               '`tiles` speedup (the round\'s 1 rank / 2 ranks; a round whose S_hw fell below 1.9 measured a '
-              'slower second core):\n')
+              'slower second core; in brackets, when the round ran it, its 2 ranks `tiles` / 1 rank on llvmpipe\'s '
+              '2 threads):\n')
         print('| round | S_hw before / after | ' + ' | '.join(methods) + ' |')
         print('|---:|---|' + '---:|' * len(methods))
         quiet = {m: [] for m in methods}
@@ -117,7 +148,12 @@ if first:
                 except (OSError, KeyError):
                     cells.append('–')
                     continue
-                cells.append('%.2f' % v)
+                both = os.path.join(OUT, 'r%d' % k, 'np1_lp2', 'timings.json')
+                if os.path.exists(both) and m in load(both)['methods']:
+                    cells.append('%.2f (%.2f)' % (v, load(os.path.join(OUT, 'r%d' % k, 'np2_tiles', 'timings.json'))
+                                                  ['methods'][m]['median_ms'] / load(both)['methods'][m]['median_ms']))
+                else:
+                    cells.append('%.2f' % v)
                 if min(shw[k]) >= 1.9:
                     quiet[m].append(v)
             print('| %d | %s | %s |' % (k, ' / '.join('%.2f' % v for v in shw[k]), ' | '.join(cells)))
