@@ -57,23 +57,28 @@ for path in sorted(glob.glob(os.path.join(OUT, 'r*', '*', 'timings.json'))):
 # 1 rank on llvmpipe's 2 threads: in every round (r*/np1_lp2), or once after the rounds (np1_lp2).
 lp2_once = os.path.join(OUT, 'np1_lp2', 'timings.json')
 if 'np1_lp2' not in runs and os.path.exists(lp2_once):
-    for method, v in load(lp2_once)['methods'].items():
-        runs.setdefault('np1_lp2', {})[method] = [v['median_ms']]
-    if 'paraview_ms' in load(lp2_once):
-        paraview['np1_lp2'] = [load(lp2_once)['paraview_ms']]
+    once = load(lp2_once)
+    runs['np1_lp2'] = {method: [v['median_ms']] for method, v in once['methods'].items()}
+    if 'paraview_ms' in once:
+        paraview['np1_lp2'] = [once['paraview_ms']]
 lp2_paraview = statistics.median(paraview['np1_lp2']) if 'np1_lp2' in paraview else None
 
 
+def round_ratio(round_dir, method, num, den, less_paraview=False):
+    """`num` / `den` ms of `method` in one round's directory (with `less_paraview`, each less
+    its run's ParaView frame); OSError or KeyError where the round lacks either."""
+    a = load(os.path.join(round_dir, num, 'timings.json'))
+    b = load(os.path.join(round_dir, den, 'timings.json'))
+    pa, pb = (a['paraview_ms'], b['paraview_ms']) if less_paraview else (0.0, 0.0)
+    return (a['methods'][method]['median_ms'] - pa) / (b['methods'][method]['median_ms'] - pb)
+
+
 def round_ratios(method, num, den, less_paraview=False):
-    """`num` / `den` ms of `method` within each round that ran both (rounds in step); with
-    `less_paraview`, each less its run's ParaView frame."""
+    """round_ratio over every round that ran both (rounds in step)."""
     out = []
     for d in sorted(glob.glob(os.path.join(OUT, 'r*', den, 'timings.json'))):
-        n = os.path.join(os.path.dirname(os.path.dirname(d)), num, 'timings.json')
         try:
-            a, b = load(n), load(d)
-            pa, pb = (a['paraview_ms'], b['paraview_ms']) if less_paraview else (0.0, 0.0)
-            out.append((a['methods'][method]['median_ms'] - pa) / (b['methods'][method]['median_ms'] - pb))
+            out.append(round_ratio(os.path.dirname(os.path.dirname(d)), method, num, den, less_paraview))
         except (OSError, KeyError):
             pass
     return out
@@ -148,11 +153,9 @@ if first:
                 except (OSError, KeyError):
                     cells.append('–')
                     continue
-                both = os.path.join(OUT, 'r%d' % k, 'np1_lp2', 'timings.json')
-                if os.path.exists(both) and m in load(both)['methods']:
-                    cells.append('%.2f (%.2f)' % (v, load(os.path.join(OUT, 'r%d' % k, 'np2_tiles', 'timings.json'))
-                                                  ['methods'][m]['median_ms'] / load(both)['methods'][m]['median_ms']))
-                else:
+                try:
+                    cells.append('%.2f (%.2f)' % (v, round_ratio(os.path.join(OUT, 'r%d' % k), m, 'np2_tiles', 'np1_lp2')))
+                except (OSError, KeyError):
                     cells.append('%.2f' % v)
                 if min(shw[k]) >= 1.9:
                     quiet[m].append(v)
