@@ -1,0 +1,178 @@
+#include "skeleton/surface_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace flowsurf::skeleton {
+
+namespace {
+
+struct CellKey {
+    int64_t x, y, z;
+    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellHash {
+    size_t operator()(const CellKey& k) const {
+        uint64_t h = uint64_t(k.x) * 0x9E3779B97F4A7C15ull;
+        h ^= uint64_t(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+        h ^= uint64_t(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+        return size_t(h);
+    }
+};
+
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+}  // namespace
+
+void tangentFrame(const glm::vec3& n, glm::vec3& u, glm::vec3& v) {
+    const glm::vec3 a = std::abs(n.x) < 0.6f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    u = glm::normalize(a - glm::dot(a, n) * n);
+    v = glm::cross(n, u);
+}
+
+SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
+    SurfaceGraph g;
+    const core::Bounds box = mesh.bounds();
+    g.diagonal = box.valid() ? glm::length(box.hi - box.lo) : 0.0f;
+    const size_t n = mesh.vertexCount();
+
+    // (1) weld: vertices in the same or a neighbouring grid cell of size tolerance x diagonal
+    // and within that distance are one vertex (union-find, so chains merge deterministically).
+    const double cell = std::max(double(tolerance) * double(g.diagonal), 1e-30);
+    std::unordered_map<CellKey, uint32_t, CellHash> firstInCell;
+    firstInCell.reserve(n);
+    std::vector<uint32_t> parent(n);
+    std::iota(parent.begin(), parent.end(), 0u);
+    std::vector<CellKey> keys(n);
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec3& p = mesh.positions[i];
+        keys[i] = {int64_t(std::floor(p.x / cell)), int64_t(std::floor(p.y / cell)), int64_t(std::floor(p.z / cell))};
+        firstInCell.emplace(keys[i], uint32_t(i));
+    }
+    for (size_t i = 0; i < n; ++i) {
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    auto it = firstInCell.find({keys[i].x + dx, keys[i].y + dy, keys[i].z + dz});
+                    if (it == firstInCell.end() || it->second == i) continue;
+                    if (glm::length(mesh.positions[it->second] - mesh.positions[i]) > float(cell)) continue;
+                    const uint32_t a = findRoot(parent, uint32_t(i)), b = findRoot(parent, it->second);
+                    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+                }
+    }
+    g.weldOf.assign(n, 0);
+    std::vector<uint32_t> welded(n, UINT32_MAX);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t r = findRoot(parent, uint32_t(i));
+        if (welded[r] == UINT32_MAX) {
+            welded[r] = uint32_t(g.positions.size());
+            g.positions.push_back(mesh.positions[r]);
+            g.normals.push_back(glm::vec3(0.0f));
+        }
+        g.weldOf[i] = welded[r];
+        if (i < mesh.normals.size()) g.normals[welded[r]] += mesh.normals[i];
+    }
+
+    // (2) triangles over the welded vertices; the area-weighted normal where merged ones cancel.
+    const size_t nv = g.positions.size();
+    g.triangles.reserve(mesh.triangles.size());
+    g.vertexArea.assign(nv, 0.0f);
+    std::vector<glm::vec3> faceNormalSum(nv, glm::vec3(0.0f));
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::uvec3 w(g.weldOf[t.x], g.weldOf[t.y], g.weldOf[t.z]);
+        if (w.x == w.y || w.y == w.z || w.x == w.z) continue;
+        const glm::vec3 c = glm::cross(g.positions[w.y] - g.positions[w.x], g.positions[w.z] - g.positions[w.x]);
+        const float area = 0.5f * glm::length(c);
+        if (!(area > 0.0f)) continue;
+        g.triangles.push_back(w);
+        for (int k = 0; k < 3; ++k) {
+            g.vertexArea[w[k]] += area / 3.0f;
+            faceNormalSum[w[k]] += c;
+        }
+    }
+    for (size_t v = 0; v < nv; ++v) {
+        glm::vec3 nn = g.normals[v];
+        if (!(glm::length(nn) > 1e-20f)) nn = faceNormalSum[v];
+        const float len = glm::length(nn);
+        g.normals[v] = len > 1e-30f ? nn / len : glm::vec3(0, 0, 1);
+    }
+
+    // (3) edges: each undirected edge once, counted by its triangles.
+    std::vector<uint64_t> edges;
+    edges.reserve(g.triangles.size() * 3);
+    for (const glm::uvec3& t : g.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    std::vector<float> lengths;
+    std::vector<uint32_t> degree(nv, 0);
+    std::vector<uint8_t> edgeOnBoundary;
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        const uint32_t a = uint32_t(edges[i] >> 32), b = uint32_t(edges[i] & 0xffffffffu);
+        ++g.edgeCount;
+        if (j - i == 1) ++g.boundaryEdges;
+        if (j - i > 2) ++g.nonManifoldEdges;
+        lengths.push_back(glm::length(g.positions[a] - g.positions[b]));
+        ++degree[a];
+        ++degree[b];
+        edges[g.edgeCount - 1] = edges[i];
+        edgeOnBoundary.push_back(j - i == 1);
+        i = j;
+    }
+    edges.resize(g.edgeCount);
+    if (!lengths.empty()) {
+        auto mid = lengths.begin() + long(lengths.size() / 2);
+        std::nth_element(lengths.begin(), mid, lengths.end());
+        g.medianEdge = *mid;
+    }
+
+    // (4) neighbours (CSR) and the connected parts.
+    g.neighbourStart.assign(nv + 1, 0);
+    for (size_t v = 0; v < nv; ++v) g.neighbourStart[v + 1] = g.neighbourStart[v] + degree[v];
+    g.neighbours.resize(g.neighbourStart[nv]);
+    g.boundaryNeighbour.assign(g.neighbourStart[nv], 0);
+    g.onBoundary.assign(nv, 0);
+    std::vector<uint32_t> fill(g.neighbourStart.begin(), g.neighbourStart.end() - 1);
+    std::vector<uint32_t> part(nv);
+    std::iota(part.begin(), part.end(), 0u);
+    for (size_t i = 0; i < edges.size(); ++i) {
+        const uint32_t a = uint32_t(edges[i] >> 32), b = uint32_t(edges[i] & 0xffffffffu);
+        g.boundaryNeighbour[fill[a]] = g.boundaryNeighbour[fill[b]] = edgeOnBoundary[i];
+        g.onBoundary[a] |= edgeOnBoundary[i];
+        g.onBoundary[b] |= edgeOnBoundary[i];
+        g.neighbours[fill[a]++] = b;
+        g.neighbours[fill[b]++] = a;
+        const uint32_t ra = findRoot(part, a), rb = findRoot(part, b);
+        if (ra != rb) part[std::max(ra, rb)] = std::min(ra, rb);
+    }
+    std::vector<uint8_t> used(nv, 0);
+    for (const glm::uvec3& t : g.triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+    for (size_t v = 0; v < nv; ++v) {
+        g.usedVertices += used[v];
+        if (used[v] && findRoot(part, uint32_t(v)) == v) ++g.parts;
+    }
+    return g;
+}
+
+std::vector<glm::vec3> weldValues(const SurfaceGraph& graph, const std::vector<glm::vec3>& values) {
+    std::vector<glm::vec3> sum(graph.vertexCount(), glm::vec3(0.0f));
+    std::vector<uint32_t> count(graph.vertexCount(), 0);
+    for (size_t i = 0; i < values.size() && i < graph.weldOf.size(); ++i) {
+        sum[graph.weldOf[i]] += values[i];
+        ++count[graph.weldOf[i]];
+    }
+    for (size_t v = 0; v < sum.size(); ++v)
+        if (count[v] > 1) sum[v] /= float(count[v]);
+    return sum;
+}
+
+}  // namespace flowsurf::skeleton
