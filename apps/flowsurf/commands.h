@@ -13,6 +13,8 @@ namespace flowsurf::app {
 
 int runRender(const RenderOptions& options, const QualityOutput& quality = {});
 int runInfo(const std::string& path, const io::SourceOptions& source = {});
+// The flow topology of the input's shown field, written as JSON, CSV or VTP (doc/topology.md).
+int runTopology(const RenderOptions& options);
 // Methods side by side on the same camera and frames, labelled with ms/frame.
 int runCompare(const RenderOptions& options, const std::string& methods, const QualityOutput& quality = {});
 // "isa,ibfvs" -> methods; ConfigError naming a bad entry (--methods of compare, quality).

@@ -45,7 +45,7 @@ int reportCurrentError() {
 
 // The subcommands, and what parsing the command line fills in for each.
 struct Commands {
-    app::RenderOptions render, compare, quality, view;
+    app::RenderOptions render, compare, quality, view, topology;
     std::string compareMethods = "isa,ibfvs,hybrid", qualityMethods = "isa,ibfvs,hybrid";
     app::QualityOutput renderQuality, compareQuality, qualityOut;
     bool autoTune = false;
@@ -54,7 +54,7 @@ struct Commands {
     session::RenderOptions infoRead;  // how info reads the file
     app::BenchOptions bench;
     CLI::App *renderCmd = nullptr, *compareCmd = nullptr, *qualityCmd = nullptr, *viewCmd = nullptr,
-             *infoCmd = nullptr, *benchCmd = nullptr;
+             *infoCmd = nullptr, *benchCmd = nullptr, *topologyCmd = nullptr;
 };
 
 // render, compare and quality, each with --quality (doc/algorithms.md, "Quality metrics").
@@ -82,6 +82,13 @@ void addRenderingCommands(CLI::App& app, Commands& c) {
         cmd->add_option("--quality-every", out->every, "Measure every N-th animation frame (a PNG: its last frame)")
             ->group("Output")->capture_default_str()->check(CLI::Range(1, 100000));
     }
+}
+
+void addTopologyCommand(CLI::App& app, Commands& c) {
+    c.topologyCmd = app.add_subcommand("topology", "Critical points, separation and attachment lines of the shown "
+                                                   "field, written as JSON, CSV or VTP (-o OUT.json)");
+    c.topology.output.clear();  // required: no image default
+    app::addRenderOptions(*c.topologyCmd, c.topology);
 }
 
 void addViewCommand(CLI::App& app, Commands& c) {
@@ -167,7 +174,7 @@ CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
 // The config file (--config FILE: its options first, the command line's on top of them),
 // then the command line; an exit code when the program is done (help, version, an error).
 std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
-    for (CLI::App* cmd : {c.renderCmd, c.compareCmd, c.viewCmd, c.qualityCmd})
+    for (CLI::App* cmd : {c.renderCmd, c.compareCmd, c.viewCmd, c.qualityCmd, c.topologyCmd})
         cmd->add_option("--config", "JSON config (e.g. saved by the viewer); options given here override it")
             ->group("Output");
     try {
@@ -176,6 +183,9 @@ std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
             c.compare = c.render;
             c.view = c.render;
             c.quality = c.render;
+            const std::string output = c.topology.output;
+            c.topology = c.render;
+            c.topology.output = output;
         }
     } catch (const std::exception&) {
         return reportCurrentError();
@@ -205,6 +215,7 @@ std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
 int run(Commands& c) {
     if (*c.renderCmd) return app::runRender(c.render, c.renderQuality);
     if (*c.infoCmd) return app::runInfo(c.infoPath, session::sourceOptions(c.infoRead));
+    if (*c.topologyCmd) return app::runTopology(c.topology);
     if (*c.viewCmd) {
 #ifdef FLOWSURF_HAVE_VIEWER
         const app::RenderOptions& view = c.view;
@@ -236,6 +247,7 @@ int main(int argc, char** argv) {
     addRenderingCommands(app, c);
     addViewCommand(app, c);
     addInfoCommand(app, c);
+    addTopologyCommand(app, c);
     c.benchCmd = addBenchCommand(app, c.bench);
     if (const std::optional<int> done = parse(app, c, argc, argv)) return *done;
     try {

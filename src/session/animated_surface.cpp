@@ -35,7 +35,8 @@ AnimatedSurface::AnimatedSurface(const RenderOptions& o, core::StepProvider& ste
     : options_(o),
       common_(o.params.common),
       field_(selectSeriesField(steps, o.field)),
-      prepared_(steps, field_, core::DerivedFieldOptions{o.curvatureRadius}),
+      reversed_(fieldShownReversed(o, field_)),
+      prepared_(steps, field_, core::DerivedFieldOptions{o.curvatureRadius}, shownField(o, field_)),
       provider_(prepared_),
       group_(group) {
     const bool series = steps.count() > 1 && !o.timeStepGiven;
@@ -72,18 +73,20 @@ void AnimatedSurface::checkScalarArrays(const core::SurfaceMesh& mesh, const std
 }
 
 methods::MethodParams AnimatedSurface::paramsFor(const methods::MethodParams& params) const {
-    return withUnitsInTitle(params, field_, units_);
+    return withUnitsInTitle(params, field_, units_, reversed_);
 }
 
 methods::MethodParams withUnitsInTitle(const methods::MethodParams& params, const std::string& field,
-                                       const std::map<std::string, std::string>& units) {
+                                       const std::map<std::string, std::string>& units, bool reversed) {
     methods::MethodParams p = params;
     if (!p.common.title.empty()) return p;
     // The name SurfaceGpu gives the colour array, with the units of the array behind it.
     const std::string array = p.common.colorBy.empty() ? field : core::ScalarSpec::parse(p.common.colorBy).array;
+    const std::string name = p.common.colorBy.empty() ? "|" + field + "|" : p.common.colorBy;
     const auto it = units.find(array);
-    if (it != units.end() && !it->second.empty())
-        p.common.title = (p.common.colorBy.empty() ? "|" + field + "|" : p.common.colorBy) + " [" + it->second + "]";
+    const bool withUnits = it != units.end() && !it->second.empty();
+    if (withUnits) p.common.title = name + " [" + it->second + "]";
+    if (reversed) p.common.title = (withUnits ? p.common.title : name) + ", " + field + " reversed";
     return p;
 }
 

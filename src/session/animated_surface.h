@@ -46,6 +46,7 @@ public:
     // The data times of the steps (empty for steady data).
     const std::vector<double>& times() const;
     const std::string& field() const { return field_; }
+    bool fieldReversed() const { return reversed_; }
     // `params` for a method drawing this data: without --title, the legend's title gains
     // the colour array's units where the file gives them ("|U| [m/s]", "p [m2/s2]").
     methods::MethodParams paramsFor(const methods::MethodParams& params) const;
@@ -64,6 +65,7 @@ private:
     const RenderOptions& options_;
     methods::CommonParams common_;  // the options' with the colour range resolved
     std::string field_;
+    bool reversed_ = false;
     PreparedSteps prepared_;
     core::StepProvider& provider_;
     std::unique_ptr<core::StepStream> stream_;
@@ -77,9 +79,10 @@ private:
 };
 
 // `params` with the legend title the data gives when --title is not set: the colour
-// array's name as SurfaceGpu shows it ("|U|", "p", "U:x") and its units, if known.
+// array's name as SurfaceGpu shows it ("|U|", "p", "U:x") and its units, if known, and
+// whether the field is shown reversed (--reverse-field).
 methods::MethodParams withUnitsInTitle(const methods::MethodParams& params, const std::string& field,
-                                       const std::map<std::string, std::string>& units);
+                                       const std::map<std::string, std::string>& units, bool reversed = false);
 
 // The frame -> data time mapping of the options for these step times.
 core::TimeMapping makeTimeMapping(const RenderOptions& o, const std::vector<double>& times);

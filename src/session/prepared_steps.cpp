@@ -1,6 +1,9 @@
 #include "session/prepared_steps.h"
 
 #include "core/errors.h"
+#include "skeleton/skeleton.h"
+
+#include <algorithm>
 
 #include <cstdio>
 #include <mutex>
@@ -8,10 +11,38 @@
 
 namespace flowsurf::session {
 
-PreparedSteps::PreparedSteps(core::StepProvider& inner, std::string field, core::DerivedFieldOptions derived)
-    : inner_(inner), field_(std::move(field)), derived_(derived) {}
+PreparedSteps::PreparedSteps(core::StepProvider& inner, std::string field, core::DerivedFieldOptions derived,
+                             ShownField shown)
+    : inner_(inner), field_(std::move(field)), derived_(derived), shown_(std::move(shown)) {}
+
+ShownField shownField(const RenderOptions& o, const std::string& field) {
+    ShownField s;
+    s.reversed = fieldShownReversed(o, field);
+    for (const std::string& spec : {o.params.common.colorBy, o.params.common.maskBy}) {
+        if (spec.empty()) continue;
+        const std::string array = core::ScalarSpec::parse(spec).array;
+        if (skeleton::isDerivedScalar(array) &&
+            std::find(s.derivedScalars.begin(), s.derivedScalars.end(), array) == s.derivedScalars.end())
+            s.derivedScalars.push_back(array);
+    }
+    return s;
+}
 
 core::SurfaceMesh PreparedSteps::load(size_t i) {
+    core::SurfaceMesh mesh = loadField(i);
+    core::VectorField* shown = nullptr;
+    for (auto& f : mesh.fields)
+        if (f.name == field_) shown = &f;
+    if (!shown) return mesh;
+    if (shown_.reversed)
+        for (glm::vec3& v : shown->values) v = -v;
+    for (const std::string& name : shown_.derivedScalars)
+        if (!mesh.findScalar(name) && mesh.triangleCount() > 0)
+            mesh.scalars.push_back({name, skeleton::derivedScalar(mesh, shown->values, name)});
+    return mesh;
+}
+
+core::SurfaceMesh PreparedSteps::loadField(size_t i) {
     core::SurfaceMesh mesh = inner_.load(i);
     if (field_.empty() || mesh.findField(field_)) return mesh;
     if (core::isDerivedField(field_)) {

@@ -39,6 +39,18 @@ float percentile99(const std::vector<glm::vec3>& f) {
 
 }  // namespace
 
+bool isDerivedScalar(const std::string& name) {
+    return std::find(kDerivedScalarNames.begin(), kDerivedScalarNames.end(), name) != kDerivedScalarNames.end();
+}
+
+std::vector<float> derivedScalar(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& field,
+                                 const std::string& name) {
+    FLOWSURF_CHECK(isDerivedScalar(name) && field.size() == mesh.vertexCount());
+    const SurfaceGraph graph = buildSurfaceGraph(mesh);
+    const std::vector<glm::vec3> welded = weldValues(graph, field);
+    return name == kDerivedScalarNames[0] ? divergence(graph, welded) : normalizedDivergence(graph, welded);
+}
+
 Skeleton analyze(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& field, const SkeletonParams& params,
                  const std::string& where) {
     checkParams(params);

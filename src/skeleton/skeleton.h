@@ -68,6 +68,16 @@ struct Skeleton {
     float speed99 = 0.0f;          // 99th-percentile speed of the smoothed field
 };
 
+// Scalars derived from the field for colour-by and mask-by (doc/topology.md §4): its
+// surface divergence and the divergence of the normalised field, the contraction (< 0) and
+// expansion (> 0) measure of wall-shear-stress topology [Mazzi et al. 2021].
+inline constexpr std::array<const char*, 2> kDerivedScalarNames{"divergence", "normalized-divergence"};
+bool isDerivedScalar(const std::string& name);
+// Per vertex of `mesh` (welded at coincident vertices as analyze() does); NaN where the
+// normalised field is undefined (a zero vector).
+std::vector<float> derivedScalar(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& field,
+                                 const std::string& name);
+
 // The skeleton of `field` (per vertex of `mesh`, its tangential part is analysed). Throws
 // FieldError (the field is zero everywhere; the surface has no triangle) naming `where`,
 // ConfigError for a parameter out of range.

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "methods/common/dye_source.h"
 #include "methods/common/params.h"
+#include "skeleton/skeleton.h"
 
 #include <functional>
 #include <optional>
@@ -62,6 +63,15 @@ struct RenderOptions {
     ViewPreset view = ViewPreset::Default;  // --view +x|-x|+y|-y|+z|-z|iso
     int upAxis = 1;                     // --up-axis x|y|z: 0, 1, 2
     float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
+    // --reverse-field auto|on|off: show the field reversed (the texture, the topology, the
+    // dye); auto: reversed where it is OpenFOAM's wallShearStress (see fieldShownReversed).
+    std::string reverseField = "auto";
+    // The flow topology: drawn over the texture with --topology on, written by `flowsurf topology`.
+    bool topology = false;
+    std::string topologyParts = "points,lines";  // --topology-parts points,lines | points | lines
+    skeleton::SkeletonParams topologyParams;     // --topology-scale, -cancel-speed, -line-strength, -line-length
+    float topologyGlyphSize = 11.0f;             // px, 4..64
+    float topologyLineWidth = 2.5f;              // px, 1..16
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
     // Dye [issue 20]: sources (--dye, repeatable) and those of --dye-file, each emitting from
@@ -73,6 +83,11 @@ struct RenderOptions {
     std::vector<methods::DyeSource> dyeFileSources;  // read from dyeFile
     methods::MethodParams params;
 };
+
+// --reverse-field's rule: on, off, or auto, which reverses OpenFOAM's `wallShearStress`
+// (the stress the wall exerts on the fluid, against the near-wall flow) so that the texture,
+// the topology and the dye follow the flow. Stored arrays handed to users stay as stored.
+bool fieldShownReversed(const RenderOptions& o, const std::string& field);
 
 // What kind of value an option takes (the viewer picks its widget from this).
 enum class OptionKind { Flag, Int, Float, Text, Choice, Size, Vec3, Color, Path };

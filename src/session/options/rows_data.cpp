@@ -59,6 +59,10 @@ std::vector<OptionSpec> readRows() {
         number("curvature-radius", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
                "Derived curvature fields: average the curvature tensor over this radius (object units; 0: one-ring "
                "estimate only)", &RenderOptions::curvatureRadius, 0, 1e30),
+        textChoice("reverse-field", {G::Data, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+                   "Show the field reversed (texture, topology, dye): on, off, or auto: reversed when it is "
+                   "OpenFOAM's wallShearStress, the stress on the fluid, which points against the near-wall flow",
+                   {"auto", "on", "off"}, FS_REF(reverseField)),
         text("patches", {G::Data, E::Reload, CommandLine | Config | Read},
              "OpenFOAM: read the boundary patches whose names match this regular expression (default: all)",
              FS_REF(patches)),
@@ -134,3 +138,13 @@ std::vector<OptionSpec> dataRows() {
 }
 
 }  // namespace flowsurf::session::rows
+
+namespace flowsurf::session {
+
+bool fieldShownReversed(const RenderOptions& o, const std::string& field) {
+    if (o.reverseField == "on") return true;
+    if (o.reverseField == "off") return false;
+    return field == "wallShearStress";
+}
+
+}  // namespace flowsurf::session

@@ -86,9 +86,40 @@ std::vector<OptionSpec> contrastRows() {
 
 }  // namespace
 
+// The flow topology: what is analysed and how it is drawn (doc/topology.md).
+std::vector<OptionSpec> topologyRows() {
+    constexpr FrontEnd all = CommandLine | Config | Panel | Renderer;
+    return {
+        onOff("topology", {G::Overlay, E::Rebuild, all},
+              "Draw the flow topology over the texture: critical points as glyphs by type, separation (red) and "
+              "attachment (blue) lines, hidden where the surface covers them", FS_REF(topology)),
+        textChoice("topology-parts", {G::Overlay, E::Rebuild, all},
+                   "Which parts of the topology to draw: points,lines, points or lines",
+                   {"points,lines", "points", "lines"}, FS_REF(topologyParts)),
+        param<float>("topology-scale", {G::Overlay, E::Rebuild, all},
+                     "Topology: smooth the field and fit its Jacobian over this radius (object units; 0: 3 median "
+                     "edge lengths)", FS_REF(topologyParams.scale), 0, 1e30),
+        param<float>("topology-cancel-speed", {G::Overlay, E::Rebuild, all},
+                     "Topology: zeros joined through a region slower than this fraction of the 99th-percentile speed "
+                     "merge into their net index (noise pairs cancel; 0: none merge)",
+                     FS_REF(topologyParams.cancelSpeed), 0, 1),
+        param<float>("topology-line-strength", {G::Overlay, E::Rebuild, all},
+                     "Topology: drop lines whose mean strength (|rate across - rate along| x diagonal / 99th-"
+                     "percentile speed) is below this", FS_REF(topologyParams.lineStrength), 0, 1e6),
+        param<float>("topology-line-length", {G::Overlay, E::Rebuild, all},
+                     "Topology: drop lines shorter than this fraction of the bounding-box diagonal",
+                     FS_REF(topologyParams.lineLength), 0, 1),
+        param<float>("topology-glyph-size", {G::Overlay, E::Rebuild, all}, "Topology: glyph size in pixels",
+                     FS_REF(topologyGlyphSize), 4, 64),
+        param<float>("topology-line-width", {G::Overlay, E::Rebuild, all}, "Topology: line width in pixels",
+                     FS_REF(topologyLineWidth), 1, 16),
+    };
+}
+
 std::vector<OptionSpec> overlayRows() {
     std::vector<OptionSpec> rows = colourRows();
     for (OptionSpec& s : contrastRows()) rows.push_back(std::move(s));
+    for (OptionSpec& s : topologyRows()) rows.push_back(std::move(s));
     return rows;
 }
 
