@@ -63,6 +63,7 @@ void Playback::reopen(core::StepProvider& steps, const RenderOptions& o) {
 void Playback::close() {
     // What a new playback would start with; options, views, timing and quality settings stay.
     methods_.clear();
+    topology_.reset();
     surface_.reset();
     cameras_.reset();
     views_.clear();
@@ -94,12 +95,17 @@ Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps
     parts.views = shownViews(o);
     for (methods::Method m : parts.views) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
     for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
+    if (o.topology) {
+        if (group_) throw ConfigError("--topology on: not available in a parallel render (ParaView's ranks) yet");
+        parts.topology = std::make_unique<TopologyOverlay>(steps, o);
+    }
     return parts;
 }
 
 void Playback::build() {
     // One surface streams from the steps at a time (its prefetch thread reads them).
     methods_.clear();
+    topology_.reset();
     surface_.reset();
     cameras_.reset();
     install(make(options_, *steps_));
@@ -112,6 +118,7 @@ void Playback::install(Parts parts) {
     surface_ = std::move(parts.surface);
     views_ = std::move(parts.views);
     methods_ = std::move(parts.methods);
+    topology_ = std::move(parts.topology);
     rebuildPending_ = camerasPending_ = false;
     clock_ = 0;
     warmedUp_ = 0;
@@ -280,6 +287,7 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         in.dye = dye_.view(camera, options_.size);
         m->renderFrame(in);
         if (quality_.plannedFrame()) quality_.collect(i, *m, s, camera, k);
+        if (topology_) topology_->draw(*m, camera, time);
     }
     quality_.frameDone();
     lastCamera_ = camera;

@@ -21,6 +21,7 @@
 #include "session/options/options.h"
 #include "session/quality_monitor.h"
 #include "session/scene_setup.h"
+#include "session/topology_overlay.h"
 
 #include <functional>
 #include <memory>
@@ -165,6 +166,7 @@ private:
         std::unique_ptr<AnimatedSurface> surface;
         std::vector<methods::Method> views;
         std::vector<std::unique_ptr<methods::FlowMethod>> methods;
+        std::unique_ptr<TopologyOverlay> topology;  // --topology on
     };
     Parts make(const RenderOptions& o, core::StepProvider& steps) const;  // throws; changes nothing
     void install(Parts parts);          // the parts, and the clock, dye and quality restart for them
@@ -184,6 +186,7 @@ private:
     std::vector<methods::Method> requestedViews_, builtViews_, views_;
     std::unique_ptr<AnimatedSurface> surface_;
     std::vector<std::unique_ptr<methods::FlowMethod>> methods_;
+    std::unique_ptr<TopologyOverlay> topology_;
     std::unique_ptr<FrameCameras> cameras_;
     bool rebuildPending_ = false, camerasPending_ = false;
     bool stageTiming_ = false;

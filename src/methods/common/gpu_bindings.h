@@ -95,6 +95,11 @@ inline constexpr BindingPoint kHistogram = storageBinding("HISTOGRAM_BINDING", 8
 inline constexpr BindingPoint kContrastFlow = textureUnit("CONTRAST_FLOW_UNIT", 0);    // F_a or I, channel r
 inline constexpr BindingPoint kContrastDepth = textureUnit("CONTRAST_DEPTH_UNIT", 1);  // window depth
 inline constexpr BindingPoint kContrastImage = imageUnit("CONTRAST_IMAGE_UNIT", 0);    // the stretched texture, R32F
+// The flow topology layer (skeleton_layer/*): the surface depth that hides it, its line
+// pieces and its critical points.
+inline constexpr BindingPoint kSkeletonDepth = textureUnit("SKELETON_DEPTH_UNIT", 0);              // 1 = background
+inline constexpr BindingPoint kSkeletonSegments = storageBinding("SKELETON_SEGMENTS_BINDING", 0);  // 2 vec4 a piece
+inline constexpr BindingPoint kSkeletonPoints = storageBinding("SKELETON_POINTS_BINDING", 1);      // 1 vec4 a point
 // ParaView's composite of a method's image into its view (paraview/composite.frag).
 inline constexpr BindingPoint kCompositeColor = textureUnit("COMPOSITE_COLOR_UNIT", 0);  // the method's composite, RGBA8
 inline constexpr BindingPoint kCompositeDepth = textureUnit("COMPOSITE_DEPTH_UNIT", 1);  // its surface depth
@@ -119,6 +124,7 @@ inline constexpr BindingPoint kBindingPoints[] = {
     bindings::kVisVertex, bindings::kVisTriangle, bindings::kVisDepth, bindings::kVisId, bindings::kVisIndirect,
     bindings::kVisDeferred, bindings::kVisDeferredId, bindings::kVisCovering, bindings::kVisOccluder,
     bindings::kHistogram, bindings::kContrastFlow, bindings::kContrastDepth, bindings::kContrastImage,
+    bindings::kSkeletonDepth, bindings::kSkeletonSegments, bindings::kSkeletonPoints,
     bindings::kCompositeColor, bindings::kCompositeDepth, bindings::kCompositeShade, bindings::kCompositeTable,
 };
 

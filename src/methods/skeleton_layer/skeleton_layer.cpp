@@ -1,0 +1,94 @@
+#include "methods/skeleton_layer/skeleton_layer.h"
+
+#include "methods/common/shader_interface.h"
+
+#include <vector>
+
+namespace flowsurf::methods {
+
+namespace {
+
+// Uniform arrays of the style tables, and the near/far planes the depth test compares in.
+void setCommon(const gl::Program& p, const gl::Texture2D& target, const core::Camera& camera) {
+    const float aspect = float(target.width()) / float(target.height());
+    const glm::mat4 vp = camera.viewProjection(aspect);
+    glProgramUniformMatrix4fv(p.id(), p.uniform("viewProj"), 1, GL_FALSE, &vp[0][0]);
+    glProgramUniform2f(p.id(), p.uniform("viewportPx"), float(target.width()), float(target.height()));
+    glProgramUniform3f(p.id(), p.uniform("depthPlanes"), camera.nearPlane, camera.farPlane,
+                       camera.orthoHeight > 0.0f ? 1.0f : 0.0f);
+}
+
+}  // namespace
+
+SkeletonLayer::SkeletonLayer()
+    : lines_(program({{GL_VERTEX_SHADER, "skeleton_layer/lines.vert"}, {GL_FRAGMENT_SHADER, "skeleton_layer/lines.frag"}})),
+      points_(program({{GL_VERTEX_SHADER, "skeleton_layer/points.vert"},
+                       {GL_FRAGMENT_SHADER, "skeleton_layer/points.frag"}})),
+      vao_(gl::VertexArray::create()),
+      fbo_(gl::Framebuffer::create()) {
+    std::vector<glm::vec3> lineColours(kLineColours.begin(), kLineColours.end());
+    glProgramUniform3fv(lines_.id(), lines_.uniform("kindColour"), GLsizei(lineColours.size()), &lineColours[0].x);
+    std::vector<glm::vec3> colours;
+    std::vector<int> shapes;
+    for (const GlyphStyle& s : kPointStyles) {
+        colours.push_back(s.colour);
+        shapes.push_back(s.shape);
+    }
+    glProgramUniform3fv(points_.id(), points_.uniform("typeColour"), GLsizei(colours.size()), &colours[0].x);
+    glProgramUniform1iv(points_.id(), points_.uniform("typeShape"), GLsizei(shapes.size()), shapes.data());
+}
+
+void SkeletonLayer::upload(const skeleton::Skeleton& s) {
+    std::vector<glm::vec4> seg;
+    for (const skeleton::SkeletonLine& l : s.lines)
+        for (size_t i = 1; i < l.points.size(); ++i) {
+            seg.emplace_back(l.points[i - 1], float(l.kind));
+            seg.emplace_back(l.points[i], 0.0f);
+        }
+    std::vector<glm::vec4> pts;
+    for (const skeleton::CriticalPoint& p : s.criticalPoints) pts.emplace_back(p.position, float(p.type));
+    segmentCount_ = GLsizei(seg.size() / 2);
+    pointCount_ = GLsizei(pts.size());
+    segments_ = seg.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(seg.size() * sizeof(glm::vec4)), seg.data());
+    pointBuffer_ = pts.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(pts.size() * sizeof(glm::vec4)), pts.data());
+}
+
+void SkeletonLayer::draw(const gl::Texture2D& composite, const gl::Texture2D& surfaceDepth, const core::Camera& camera,
+                         const SkeletonStyle& style) {
+    if ((!style.lines || segmentCount_ == 0) && (!style.points || pointCount_ == 0)) return;
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, composite.id(), 0);
+    glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, composite.width(), composite.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glBindTextureUnit(bindings::kSkeletonDepth, surfaceDepth.id());
+    glBindVertexArray(vao_.id());
+    if (style.lines && segmentCount_ > 0) {
+        setCommon(lines_, composite, camera);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSkeletonSegments, segments_.id());
+        lines_.use();
+        // the outline of every piece first, then the cores: joins show no outline across a line
+        for (int pass = 0; pass < 2; ++pass) {
+            glProgramUniform1f(lines_.id(), lines_.uniform("halfWidthPx"),
+                               0.5f * style.lineWidth + (pass == 0 ? 1.0f : 0.0f));
+            glProgramUniform1i(lines_.id(), lines_.uniform("outlinePass"), pass == 0);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 6, segmentCount_);
+        }
+    }
+    if (style.points && pointCount_ > 0) {
+        setCommon(points_, composite, camera);
+        glProgramUniform1f(points_.id(), points_.uniform("sizePx"), style.glyphSize);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSkeletonPoints, pointBuffer_.id());
+        points_.use();
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, pointCount_);
+    }
+    glDisable(GL_BLEND);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+}  // namespace flowsurf::methods
