@@ -29,13 +29,13 @@ const char* lineKindName(LineKind kind);
 struct SkeletonParams {
     float scale = 0.0f;         // object units: the field is smoothed and its Jacobian fitted over this radius
                                 // (0: 3 median edge lengths of the welded surface)
-    float cancelSpeed = 0.03f;  // fraction of the 99th-percentile speed, 0..1: zeros joined through a region
+    float cancelSpeed = 0.01f;  // fraction of the 99th-percentile speed, 0..1: zeros joined through a region
                                 // slower than this merge into their net index (a node with noise pairs: one node)
     float spiralRatio = 0.1f;   // 0..1: |Im l| / |Re l| below it is a node, |Re l| / |Im l| below it a centre,
                                 // a focus between
     bool lines = true;          // also the separation and attachment lines
-    float lineStrength = 1.0f;  // lines whose mean strength (below) is under this are dropped, 0..~100
-    float lineLength = 0.02f;   // fraction of the bounding-box diagonal: shorter lines are dropped
+    float lineStrength = 4.0f;  // lines whose mean strength (below) is under this are dropped, 0..~100
+    float lineLength = 0.03f;   // fraction of the bounding-box diagonal: shorter lines are dropped
     float lineAngle = 40.0f;    // degrees, 0..90: a line piece further than this from the flow is not one
     float weldTolerance = 1e-6f;  // fraction of the diagonal: vertices closer than this are one
 };
