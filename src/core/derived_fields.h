@@ -7,6 +7,7 @@
 
 #include "core/mesh.h"
 
+#include <array>
 #include <string>
 
 namespace flowsurf::core {
@@ -15,6 +16,9 @@ struct DerivedFieldOptions {
     float curvatureRadius = 0.0f;  // average curvature tensors over this radius (object units; 0: one ring)
 };
 
+// What --field accepts besides the stored arrays (ARRAY and X,Y,Z stand for a value).
+inline constexpr std::array<const char*, 4> kDerivedFieldSyntax{"curvature-max", "curvature-min", "gradient:ARRAY",
+                                                                "down:X,Y,Z"};
 bool isDerivedField(const std::string& name);
 // Principal directions have no sign (line fields): methods orient them (see below).
 bool isLineField(const std::string& name);

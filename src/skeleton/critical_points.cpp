@@ -1,6 +1,7 @@
 #include "skeleton/critical_points.h"
 
 #include "skeleton/tangent_field.h"
+#include "skeleton/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -97,14 +98,18 @@ std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const F
     const float tiny = 1e-7f * std::max(field.speed99, 1e-30f);
 
     // (1) every triangle's zero
-    std::vector<RawZero> raw;
-    for (uint32_t i = 0; i < graph.triangles.size(); ++i) {
-        RawZero z;
-        if (triangleZero(graph, f, graph.triangles[i], tiny, z)) {
-            z.triangle = i;
-            raw.push_back(z);
+    std::vector<std::vector<RawZero>> perThread(16);
+    detail::parallelChunks(graph.triangles.size(), [&](size_t b, size_t e, size_t thread) {
+        for (size_t i = b; i < e; ++i) {
+            RawZero z;
+            if (triangleZero(graph, f, graph.triangles[i], tiny, z)) {
+                z.triangle = uint32_t(i);
+                perThread[thread].push_back(z);
+            }
         }
-    }
+    });
+    std::vector<RawZero> raw;  // in triangle order: the chunks are in order
+    for (const auto& part : perThread) raw.insert(raw.end(), part.begin(), part.end());
     zeros = raw.size();
 
     // (2) the slow regions: vertices under the cancellation speed, joined along edges

@@ -1,6 +1,7 @@
 #include "skeleton/separation_lines.h"
 
 #include "skeleton/tangent_field.h"
+#include "skeleton/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,13 +146,13 @@ std::vector<SkeletonLine> findSeparationLines(const SurfaceGraph& graph, const F
     // the eigenvectors, s = a b (l2 - l1) / |v|^2: zero on either eigen-direction, and well
     // conditioned where the rate along v is zero (Jv = 0 there), as on most open separation.
     std::vector<float> s(nv);
-    for (uint32_t v = 0; v < nv; ++v) {
-        const glm::vec2 a = toFrame(graph, v, f[v]), b = field.jacobians[v] * a;
+    detail::parallelFor(nv, [&](size_t v) {
+        const glm::vec2 a = toFrame(graph, uint32_t(v), f[v]), b = field.jacobians[v] * a;
         const float la2 = glm::dot(a, a);
         s[v] = la2 > 0.0f ? (a.x * b.y - a.y * b.x) / la2 : std::numeric_limits<float>::quiet_NaN();
         // an exact zero counts as positive and the zero set passes beside the vertex
         if (s[v] == 0.0f) s[v] = std::numeric_limits<float>::min();
-    }
+    });
 
     // (2) per triangle: the zero set's piece between two edge crossings, classified at its middle
     const float cosMax = std::cos(glm::radians(std::clamp(params.lineAngle, 0.0f, 90.0f)));

@@ -1,5 +1,7 @@
 #include "skeleton/surface_graph.h"
 
+#include "skeleton/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -15,10 +17,14 @@ struct CellKey {
 };
 struct CellHash {
     size_t operator()(const CellKey& k) const {
-        uint64_t h = uint64_t(k.x) * 0x9E3779B97F4A7C15ull;
-        h ^= uint64_t(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-        h ^= uint64_t(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-        return size_t(h);
+        // splitmix64's finaliser over the three coordinates
+        uint64_t h = uint64_t(k.x) * 0x9E3779B97F4A7C15ull ^ uint64_t(k.y) * 0xC2B2AE3D27D4EB4Full ^
+                     uint64_t(k.z) * 0x165667B19E3779F9ull;
+        h ^= h >> 30;
+        h *= 0xBF58476D1CE4E5B9ull;
+        h ^= h >> 27;
+        h *= 0x94D049BB133111EBull;
+        return size_t(h ^ (h >> 31));
     }
 };
 
@@ -41,27 +47,49 @@ SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
     g.diagonal = box.valid() ? glm::length(box.hi - box.lo) : 0.0f;
     const size_t n = mesh.vertexCount();
 
-    // (1) weld: vertices in the same or a neighbouring grid cell of size tolerance x diagonal
-    // and within that distance are one vertex (union-find, so chains merge deterministically).
+    // (1) weld: only vertices on a boundary edge of the mesh as given can lie on a seam (a
+    // patch's or piece's own copy of a shared vertex); those in the same or a neighbouring
+    // grid cell of size tolerance x diagonal and within that distance are one vertex
+    // (union-find, so chains merge deterministically).
+    std::vector<uint8_t> onOpenEdge(n, 0);
+    {
+        std::vector<uint64_t> given;
+        given.reserve(mesh.triangles.size() * 3);
+        for (const glm::uvec3& t : mesh.triangles)
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = t[k], b = t[(k + 1) % 3];
+                given.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+            }
+        detail::radixSort(given);
+        for (size_t i = 0; i < given.size();) {
+            size_t j = i;
+            while (j < given.size() && given[j] == given[i]) ++j;
+            if (j - i == 1) onOpenEdge[given[i] >> 32] = onOpenEdge[given[i] & 0xffffffffu] = 1;
+            i = j;
+        }
+    }
     const double cell = std::max(double(tolerance) * double(g.diagonal), 1e-30);
     std::unordered_map<CellKey, uint32_t, CellHash> firstInCell;
-    firstInCell.reserve(n);
     std::vector<uint32_t> parent(n);
     std::iota(parent.begin(), parent.end(), 0u);
-    std::vector<CellKey> keys(n);
-    for (size_t i = 0; i < n; ++i) {
-        const glm::vec3& p = mesh.positions[i];
-        keys[i] = {int64_t(std::floor(p.x / cell)), int64_t(std::floor(p.y / cell)), int64_t(std::floor(p.z / cell))};
-        firstInCell.emplace(keys[i], uint32_t(i));
+    std::vector<uint32_t> candidates;
+    for (size_t i = 0; i < n; ++i)
+        if (onOpenEdge[i]) candidates.push_back(uint32_t(i));
+    std::vector<CellKey> keys(candidates.size());
+    for (size_t c = 0; c < candidates.size(); ++c) {
+        const glm::vec3& p = mesh.positions[candidates[c]];
+        keys[c] = {int64_t(std::floor(p.x / cell)), int64_t(std::floor(p.y / cell)), int64_t(std::floor(p.z / cell))};
+        firstInCell.emplace(keys[c], candidates[c]);
     }
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t c = 0; c < candidates.size(); ++c) {
+        const uint32_t i = candidates[c];
         for (int dx = -1; dx <= 1; ++dx)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dz = -1; dz <= 1; ++dz) {
-                    auto it = firstInCell.find({keys[i].x + dx, keys[i].y + dy, keys[i].z + dz});
+                    auto it = firstInCell.find({keys[c].x + dx, keys[c].y + dy, keys[c].z + dz});
                     if (it == firstInCell.end() || it->second == i) continue;
                     if (glm::length(mesh.positions[it->second] - mesh.positions[i]) > float(cell)) continue;
-                    const uint32_t a = findRoot(parent, uint32_t(i)), b = findRoot(parent, it->second);
+                    const uint32_t a = findRoot(parent, i), b = findRoot(parent, it->second);
                     if (a != b) parent[std::max(a, b)] = std::min(a, b);
                 }
     }
@@ -110,7 +138,7 @@ SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
             const uint32_t a = t[k], b = t[(k + 1) % 3];
             edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
         }
-    std::sort(edges.begin(), edges.end());
+    detail::radixSort(edges);
     std::vector<float> lengths;
     std::vector<uint32_t> degree(nv, 0);
     std::vector<uint8_t> edgeOnBoundary;

@@ -1,5 +1,7 @@
 #include "skeleton/tangent_field.h"
 
+#include "skeleton/parallel.h"
+
 #include <cmath>
 #include <limits>
 #include <unordered_set>
@@ -40,14 +42,14 @@ std::vector<glm::vec3> tangentialPart(const SurfaceGraph& graph, const std::vect
 std::vector<glm::vec3> smoothField(const SurfaceGraph& graph, std::vector<glm::vec3> field, int passes) {
     std::vector<glm::vec3> next(field.size());
     for (int pass = 0; pass < passes; ++pass) {
-        for (size_t v = 0; v < field.size(); ++v) {
+        detail::parallelFor(field.size(), [&](size_t v) {
             const glm::vec3& n = graph.normals[v];
             glm::vec3 sum = field[v];
             const uint32_t b = graph.neighbourStart[v], e = graph.neighbourStart[v + 1];
             if (!graph.onBoundary[v]) {
                 for (uint32_t k = b; k < e; ++k) sum += turnInto(field[graph.neighbours[k]], n);
                 next[v] = sum / float(1 + e - b);
-                continue;
+                return;
             }
             // On the boundary only along it, where it runs straight on (an interior average
             // would lean inwards; a corner stays as it is): a linear field stays linear.
@@ -60,7 +62,7 @@ std::vector<glm::vec3> smoothField(const SurfaceGraph& graph, std::vector<glm::v
                 next[v] = (sum + turnInto(field[along[0]], n) + turnInto(field[along[1]], n)) / 3.0f;
             else
                 next[v] = field[v];
-        }
+        });
         field.swap(next);
     }
     return field;
