@@ -131,6 +131,8 @@ public:
     methods::Method viewMethod(size_t i) const { return views_[i]; }
     AnimatedSurface& surface() { return *surface_; }  // while open
     const core::Camera& lastCamera() const { return lastCamera_; }
+    // The flow topology the last frame drew (--topology on), or null.
+    const skeleton::Skeleton* topology() const { return topology_ ? &topology_->current() : nullptr; }
     double lastTime() const { return lastTime_; }  // data time of the last frame (0: steady)
     // Composites of every view side by side, RGB8, rows top to bottom.
     std::vector<uint8_t> readImage(int* width, int* height) const;

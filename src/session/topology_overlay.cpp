@@ -14,7 +14,8 @@ TopologyOverlay::TopologyOverlay(core::StepProvider& steps, const RenderOptions&
     style_.glyphSize = o.topologyGlyphSize;
     style_.lineWidth = o.topologyLineWidth;
     uploaded_ = series_ ? stepAt(o.timeRange ? o.timeRange->first : steps.time(0)) : fixedStep_;
-    layer_.upload(source_.at(uploaded_));
+    shown_ = &source_.at(uploaded_);
+    layer_.upload(*shown_);
 }
 
 size_t TopologyOverlay::stepAt(double time) const {
@@ -28,7 +29,8 @@ size_t TopologyOverlay::stepAt(double time) const {
 void TopologyOverlay::draw(const methods::FlowMethod& method, const core::Camera& camera, double time) {
     const size_t step = stepAt(time);
     if (step != uploaded_) {
-        layer_.upload(source_.at(step));
+        shown_ = &source_.at(step);
+        layer_.upload(*shown_);
         uploaded_ = step;
     }
     layer_.draw(method.composite(), method.surfaceDepth(), camera, style_);

@@ -16,7 +16,7 @@ public:
     TopologyOverlay(core::StepProvider& steps, const RenderOptions& o);
     void draw(const methods::FlowMethod& method, const core::Camera& camera, double time);
     // The result drawn last (the viewer's hover reads it).
-    const skeleton::Skeleton& current() { return source_.at(uploaded_); }
+    const skeleton::Skeleton& current() const { return *shown_; }
 
 private:
     size_t stepAt(double time) const;
@@ -28,6 +28,7 @@ private:
     bool series_;
     size_t fixedStep_;
     size_t uploaded_;
+    const skeleton::Skeleton* shown_ = nullptr;  // source_'s result for uploaded_
 };
 
 }  // namespace flowsurf::session

@@ -29,6 +29,7 @@ public:
     void build(core::Viewport viewSize, const std::vector<methods::Method>& views);
     bool ready() const { return playback_.isOpen(); }
     session::Playback& playback() { return playback_; }
+    const session::Playback& playbackView() const { return playback_; }
 
     size_t viewCount() const { return playback_.viewCount(); }
     methods::FlowMethod& method(size_t i) { return playback_.view(i); }

@@ -12,6 +12,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <iterator>
 #include <cstdio>
@@ -196,6 +197,32 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
     emitSet("dye", session::dyeSourcesText(sources));
 }
 
+// --topology on: the type and position of the critical point under the cursor.
+void Window::topologyTooltip(const ViewPipeline& pipeline) const {
+    const skeleton::Skeleton* s = pipeline.ready() ? pipeline.playbackView().topology() : nullptr;
+    if (!s || s->criticalPoints.empty() || ImGui::GetIO().WantCaptureMouse) return;
+    int ww = 1, wh = 1, fw = 1, fh = 1;
+    glfwGetWindowSize(window_, &ww, &wh);
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    const ImVec2 mouse = ImGui::GetMousePos();
+    const core::Viewport v = pipeline.viewSize();
+    const float x = mouse.x * float(fw) / float(std::max(ww, 1)) - float(panelWidth());
+    const float yUp = float(v.height) - mouse.y * float(fh) / float(std::max(wh, 1));
+    if (x < 0.0f || v.width <= 0) return;
+    const float xInView = std::fmod(x, float(v.width));
+    const float reach = 0.5f * pipeline.playbackView().options().topologyGlyphSize + 3.0f;
+    const skeleton::CriticalPoint* best = nullptr;
+    float bestDist = reach;
+    for (const skeleton::CriticalPoint& p : s->criticalPoints) {
+        const glm::vec3 px = core::projectToPixels(pipeline.playbackView().lastCamera(), v, p.position);
+        const float d = glm::length(glm::vec2(px.x - xInView, px.y - yUp));
+        if (px.z < 1.0f && d < bestDist) { best = &p; bestDist = d; }
+    }
+    if (best)
+        ImGui::SetTooltip("%s (index %+d)\nat %.6g, %.6g, %.6g", skeleton::pointTypeName(best->type), best->index,
+                          double(best->position.x), double(best->position.y), double(best->position.z));
+}
+
 void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info) {
     if (dyeClick_) dropDye(state, pipeline);
     int fw = 0, fh = 0;
@@ -220,6 +247,7 @@ void Window::present(ViewerState& state, ViewPipeline& pipeline, const FrameInfo
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     panel(state, pipeline, info);
+    topologyTooltip(pipeline);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (!windowShot_.empty()) {

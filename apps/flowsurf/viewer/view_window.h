@@ -53,6 +53,7 @@ public:
 
 private:
     void panel(ViewerState& state, ViewPipeline& pipeline, const FrameInfo& info);
+    void topologyTooltip(const ViewPipeline& pipeline) const;
     // The panel's sections, top to bottom.
     void readout(ViewerState& state, const ViewPipeline& pipeline, const FrameInfo& info);
     void methodSection(const ViewerState& state, const ViewPipeline& pipeline);
