@@ -28,8 +28,9 @@ public:
     // .case .pvd), a file series (surf_%04d.vtp, surf_*.vtp) or builtin:NAME. `field`
     // chooses the vector array (empty: the first one that is not zero everywhere). A
     // series is streamed step by step while rendering. `options`: how the file is read, by
-    // the command line's names (readOptionNames(): "patches", "foam-case"). Throws IoError,
-    // FormatError, FieldError naming the file, ConfigError naming a bad option.
+    // the command line's names (readOptionNames(): "patches", "foam-case",
+    // "foam-zero-time"). Throws IoError, FormatError, FieldError naming the file,
+    // ConfigError naming a bad option.
     static Surface read(const std::string& path, const std::string& field = "",
                         const std::vector<std::pair<std::string, std::string>>& options = {});
     // The options read() takes: those of the command line that say how the input is read.

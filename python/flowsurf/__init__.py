@@ -100,7 +100,8 @@ def _apply(renderer, options):
 def read(path, field=None, **options):
     """Reads a surface: any format the command line reads, a file series, or builtin:NAME.
     `field` picks the vector array (default: the first that is not zero everywhere);
-    keywords say how the input is read (read_option_names(): patches, foam_case)."""
+    keywords say how the input is read (read_option_names(): patches, foam_case,
+    foam_zero_time)."""
     pairs = [(name, text) for _, name, text in _keywords(options, _READ_OPTIONS, "read options")]
     return _read(path, field or "", pairs)
 

@@ -291,7 +291,7 @@ def test_input_options_go_to_read_not_to_the_renderer():
         flowsurf.Renderer(foam_case="decomposed")
     with pytest.raises(ValueError, match="alpha"):
         flowsurf.read("builtin:sphere", alpha=0.1)
-    assert set(flowsurf.read_option_names()) == {"patches", "foam-case"}
+    assert set(flowsurf.read_option_names()) == {"patches", "foam-case", "foam-zero-time"}
     assert flowsurf.read("builtin:sphere", patches="wall.*").triangle_count > 0
 
 

@@ -168,7 +168,7 @@ TEST(Api, AnimationStartsConvergedAsTheCommandLinesMovie) {
 // command line; a camera change keeps the frame count; a parameter change starts over.
 TEST(Api, OptionsAreAppliedAsTheTableSays) {
     flowsurf::Renderer r;
-    for (const char* input : {"patches", "foam-case", "field", "input"}) {
+    for (const char* input : {"patches", "foam-case", "foam-zero-time", "field", "input"}) {
         try {
             r.set(input, "auto");
             FAIL() << input << " accepted by a Renderer";

@@ -64,6 +64,7 @@ struct RenderOptions {
     float curvatureRadius = 0.0f;       // --curvature-radius: smoothing of curvature tensors (0: 1-ring)
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
+    bool foamZeroTime = false;          // --foam-zero-time: 0/ a step also when solved times exist
     // Dye [issue 20]: sources (--dye, repeatable) and those of --dye-file, each emitting from
     // its start frame for --dye-release frames (0: continuously) unless its stop frame says.
     std::vector<methods::DyeSource> dye;
