@@ -295,6 +295,54 @@ def test_input_options_go_to_read_not_to_the_renderer():
     assert flowsurf.read("builtin:sphere", patches="wall.*").triangle_count > 0
 
 
+def test_arrays_out_are_the_stored_arrays_read_only(tmp_path):
+    pts, tris, vel, _ = sphere(8, 16)
+    s = flowsurf.Surface(pts, tris, vel)
+    p, t, v = s.points(), s.triangles(), s.point_array("velocity")
+    assert p.dtype == np.float32 and p.shape == pts.shape and np.array_equal(p, pts.astype(np.float32))
+    # The triangles the surface keeps: the poles' zero-area ones are dropped on the way in.
+    assert t.dtype == np.int64 and t.shape == (s.triangle_count, 3)
+    assert {tuple(r) for r in t} <= {tuple(r) for r in tris}
+    assert v.shape == vel.shape and np.array_equal(v, vel.astype(np.float32))
+    for a in (p, t, v):
+        assert not a.flags.writeable
+        with pytest.raises(ValueError):
+            a[0] = 0
+    assert s.point_arrays() == ["velocity"]
+    # A bad name or step: a Python error naming what there is; the program goes on.
+    with pytest.raises(flowsurf.FieldError, match=r"no point array 'p' \(has: velocity\)"):
+        s.point_array("p")
+    for step in (1, -1):
+        with pytest.raises(ValueError, match="out of range \\(the surface has one step, 0\\)"):
+            s.points(step=step)
+    assert s.points().shape == pts.shape
+
+    # A file's scalar (n,) and vector (n, 3), as stored (values tied to the points, which
+    # the reader may order its own way).
+    xy = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    (tmp_path / "quad.vtk").write_text(
+        "# vtk DataFile Version 3.0\nquad\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n" +
+        "".join("%g %g 0\n" % (x, y) for x, y in xy) + "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\nPOINT_DATA 4\n"
+        "SCALARS p float 1\nLOOKUP_TABLE default\n" + "".join("%g\n" % (x + 10 * y) for x, y in xy) +
+        "VECTORS U float\n" + "".join("%g 2 %g\n" % (y, -x) for x, y in xy))
+    q = flowsurf.read(str(tmp_path / "quad.vtk"))
+    qp, pr, u = q.points(), q.point_array("p"), q.point_array("U")
+    assert set(q.point_arrays()) == {"p", "U"}
+    assert pr.shape == (4,) and u.shape == (4, 3)
+    assert np.array_equal(pr, (qp[:, 0] + 10 * qp[:, 1]).astype(np.float32))
+    assert np.array_equal(u, np.stack([qp[:, 1], np.full(4, 2), -qp[:, 0]], 1).astype(np.float32))
+
+    # A series whose mesh changes (the piston, streamed): each step its own mesh.
+    piston = flowsurf.read("builtin:piston")
+    first, longest = piston.points(), piston.points(step=12)  # bottom dead centre
+    assert first.shape == (piston.point_count, 3)
+    assert len(longest) > len(first) and longest[:, 2].min() < first[:, 2].min()
+    assert piston.triangles(step=12).max() == len(longest) - 1
+    assert all(len(piston.point_array(n, step=12)) == len(longest) for n in piston.point_arrays(step=12))
+    with pytest.raises(ValueError, match=r"step 25 is out of range \(steps 0..24\)"):
+        piston.points(step=25)
+
+
 def test_quality_is_the_command_lines(tmp_path):
     # Renderer.quality() and `render --quality` measure the same frame the same way.
     subprocess.run([FLOWSURF, "render", "builtin:sphere", "--size", "96x80", "--frames", "20", "-q",
