@@ -70,8 +70,7 @@ def main(out_dir):
     from flowsurf import _flowsurf
 
     opts = flowsurf.option_info()
-    read_opts = [{"name": n, "kind": "text", "help": "how the input is read (flowsurf render --help)", "default": "",
-                  "choices": []} for n in flowsurf.read_option_names()]
+    read_opts = _flowsurf.read_option_info()  # typed by kind too (foam_zero_time: bool)
     surface_methods = "\n".join(pybind_method(_flowsurf.Surface, n) for n in ("add_vectors", "set_field"))
     # The arrays out, typed by hand (pybind11's signatures say only numpy.ndarray).
     arrays_out = {
@@ -118,6 +117,7 @@ def read(path: str, field: str | None = None, *,
 
 def option_names() -> list[str]: ...
 def read_option_names() -> list[str]: ...
+def read_option_info() -> list[OptionInfo]: ...
 
 class OptionInfo(TypedDict):
     name: str

@@ -249,16 +249,20 @@ void bindRenderer(py::module_& m) {
 // The option table as the keyword layer reads it.
 void bindOptions(py::module_& m) {
     m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
-    m.def("option_info", [] {
+    const auto rows = [](const std::vector<OptionInfo>& info) {
         py::list rows;
-        for (const OptionInfo& o : Renderer::optionInfo())
+        for (const OptionInfo& o : info)
             rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
                                  py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
                                  py::arg("choices") = o.choices, py::arg("default") = o.defaultValue,
                                  py::arg("separator") = o.separator));
         return rows;
-    }, "The render options described (name, group, help, kind, min, max, choices, default, separator), in --help "
-       "order");
+    };
+    m.def("option_info", [rows] { return rows(Renderer::optionInfo()); },
+          "The render options described (name, group, help, kind, min, max, choices, default, separator), in "
+          "--help order");
+    m.def("read_option_info", [rows] { return rows(Renderer::readOptionInfo()); },
+          "The options of read() described as option_info() describes the render options");
 }
 
 // Writers of what Python renders: MP4 (Animation) and PNG.
