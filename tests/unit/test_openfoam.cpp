@@ -119,6 +119,20 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
 
     // Asked for the reconstructed case, which has no mesh: an error naming the case.
     EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"", "reconstructed"})->load(0), FormatError);
+    // The processors' 0/ as the tutorials write it (decomposePar copies it so): asked
+    // for, it is left out by name and the solved time stays.
+    for (const char* p : {"processor0", "processor1"}) {
+        const std::string text = readBytes((dir.path() / p / "0/U").string());
+        const size_t open = text.find("boundaryField\n{") + 15;  // right after the brace, as some write it
+        writeText((dir.path() / p / "0/U").string(),
+                  text.substr(0, open) + "#includeEtc \"caseDicts/setConstraintTypes\"\n" + text.substr(open));
+    }
+    ::testing::internal::CaptureStderr();
+    auto tutorial = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    ASSERT_EQ(tutorial->count(), 1u);
+    EXPECT_DOUBLE_EQ(tutorial->time(0), 0.5);
+    EXPECT_NE(err.find("left out time directory 0: "), std::string::npos) << err;
     // With a reconstructed mesh and 0/ only (a parallel run not reconstructed), auto
     // still takes the processor directories' solved time; asked for, the reconstructed
     // case's one time, 0/ (the only one, so not skipped).

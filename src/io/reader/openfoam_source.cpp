@@ -22,10 +22,10 @@
 #include <vtkOpenFOAMReader.h>
 #include <vtkPOpenFOAMReader.h>
 #include <vtkPointData.h>
-#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -121,7 +121,8 @@ bool readsDecomposed(const std::string& casePath, const std::string& choice) {
 // directive (or is compressed, so it cannot be looked into here), are read once at opening
 // to learn whether VTK parses them.
 
-// `#` followed by a letter at the start of a word, as a directive is written.
+// `#` followed by a letter, not inside a word, as a directive is written (`{#include`
+// too); a binary field's bytes may look so, and then cost a read at opening.
 bool holdsDirective(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::vector<char> buf(1 << 16);
@@ -132,11 +133,26 @@ bool holdsDirective(const fs::path& file) {
         for (std::streamsize i = 0; i < in.gcount(); ++i) {
             const char c = buf[size_t(i)];
             if (hash && std::isalpha(static_cast<unsigned char>(c))) return true;
-            hash = c == '#' && std::isspace(static_cast<unsigned char>(before));
+            hash = c == '#' && !std::isalnum(static_cast<unsigned char>(before)) && before != '_';
             before = c;
         }
     }
     return false;
+}
+
+// The time directory of each of `times` (as VTK lists them, by the value of the name; empty
+// where none matches).
+std::vector<std::string> timeDirNames(const fs::path& dir, const std::vector<double>& times) {
+    std::vector<std::string> names(times.size());
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (!e.is_directory(ec) || !isTimeName(name)) continue;
+        const double value = std::strtod(name.c_str(), nullptr);
+        for (size_t i = 0; i < times.size(); ++i)
+            if (std::abs(times[i] - value) <= 1e-12 * std::max(1.0, std::abs(value))) names[i] = name;
+    }
+    return names;
 }
 
 bool mayNotParse(const fs::path& timeDir) {
@@ -224,16 +240,17 @@ class OpenFoamSource final : public AlgorithmSource {
 public:
     using AlgorithmSource::AlgorithmSource;
 
-    // Reads once each time directory of `names` (VTK's, in the order of the times, below
-    // `timeRoot`) that VTK may not parse, and leaves out those it does not, each named in
-    // a warning with VTK's reason; throws FormatError with the reasons when none is left.
-    void dropUnparsedTimes(const std::vector<std::string>& names, const fs::path& timeRoot) {
-        if (times_.empty() || names.size() != times_.size()) return;
+    // Reads once each time directory below `timeRoot` (the case folder or processor0)
+    // that VTK may not parse, and leaves out those it does not, each named in a warning
+    // with VTK's reason; throws FormatError with the reasons when none is left.
+    void dropUnparsedTimes(const fs::path& timeRoot) {
+        if (times_.empty()) return;
+        const std::vector<std::string> names = timeDirNames(timeRoot, times_);
         const std::string prefix = path() + ": cannot read " + format() + ": ";
         std::vector<double> kept;
         std::vector<std::string> failures;
         for (size_t i = 0; i < times_.size(); ++i) {
-            if (mayNotParse(timeRoot / names[i])) {
+            if (!names[i].empty() && mayNotParse(timeRoot / names[i])) {
                 try {
                     readStep(i);
                 } catch (const FormatError& e) {
@@ -327,10 +344,7 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
     r->DisableAllLagrangianArrays();
     readInformation(r, path, format, trap);
     auto source = std::make_unique<OpenFoamSource>(r, path, format, trap);
-    std::vector<std::string> names;
-    if (vtkStringArray* t = r->GetTimeNames())
-        for (vtkIdType i = 0; i < t->GetNumberOfValues(); ++i) names.push_back(t->GetValue(i));
-    source->dropUnparsedTimes(names, timeRoot);
+    source->dropUnparsedTimes(timeRoot);
     return source;
 }
 
