@@ -70,9 +70,18 @@ def main(out_dir):
     from flowsurf import _flowsurf
 
     opts = flowsurf.option_info()
-    read_opts = [{"name": n, "kind": "text", "help": "how the input is read (flowsurf render --help)", "default": "",
-                  "choices": []} for n in flowsurf.read_option_names()]
+    read_opts = _flowsurf.read_option_info()  # typed by kind too (foam_zero_time: bool)
     surface_methods = "\n".join(pybind_method(_flowsurf.Surface, n) for n in ("add_vectors", "set_field"))
+    # The arrays out, typed by hand (pybind11's signatures say only numpy.ndarray).
+    arrays_out = {
+        "points": "def points(self, step: int = 0) -> NDArray[np.float32]: ...",
+        "triangles": "def triangles(self, step: int = 0) -> NDArray[np.int64]: ...",
+        "point_array": "def point_array(self, name: str, step: int = 0) -> NDArray[np.float32]: ...",
+        "point_arrays": "def point_arrays(self, step: int = 0) -> list[str]: ...",
+    }
+    for n, line in arrays_out.items():
+        assert callable(getattr(_flowsurf.Surface, n)), n
+        surface_methods += "\n    " + line
     surface_props = []
     for n, t in (("field", "str"), ("fields", "list[str]"), ("point_count", "int"), ("triangle_count", "int"),
                  ("times", "list[float]"), ("source", "str"),
@@ -108,6 +117,7 @@ def read(path: str, field: str | None = None, *,
 
 def option_names() -> list[str]: ...
 def read_option_names() -> list[str]: ...
+def read_option_info() -> list[OptionInfo]: ...
 
 class OptionInfo(TypedDict):
     name: str

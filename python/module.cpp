@@ -71,6 +71,38 @@ py::array_t<float> flowTexture(const Renderer& r) {
     return out;
 }
 
+// A read-only numpy array over `values` (moved into the capsule that owns them).
+template <typename T>
+py::array readOnly(std::vector<T> values, std::vector<py::ssize_t> shape) {
+    auto* owned = new std::vector<T>(std::move(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    py::array_t<T> a(shape, owned->data(), free);
+    a.attr("setflags")(py::arg("write") = false);
+    return std::move(a);
+}
+
+// A Python step index as the library's; a negative one is refused as the library refuses
+// one too large.
+size_t stepIndex(const Surface& s, int64_t step) {
+    if (step >= 0) return size_t(step);
+    const size_t n = s.stepCount();
+    throw ConfigError(s.source() + ": step " + std::to_string(step) + " is out of range (" +
+                      (n == 1 ? "the surface has one step, 0" : "steps 0.." + std::to_string(n - 1)) + ")");
+}
+
+SurfaceArrays stepArrays(const Surface& s, int64_t step) {
+    const size_t index = stepIndex(s, step);
+    py::gil_scoped_release release;
+    return s.arrays(index);
+}
+
+// (n,) for a scalar, (n, 3) for a vector.
+py::array arrayOf(PointArray v) {
+    const auto c = py::ssize_t(v.components);
+    if (c == 1) return readOnly(std::move(v.values), {py::ssize_t(v.values.size())});
+    return readOnly(std::move(v.values), {py::ssize_t(v.values.size()) / c, c});
+}
+
 // Errors: what a user can cause maps to Python's own kinds.
 void bindErrors(py::module_& m) {
     static py::exception<FormatError> formatError(m, "FormatError", PyExc_ValueError);
@@ -109,6 +141,35 @@ void bindSurface(py::module_& m) {
              },
              py::arg("name"), py::arg("vectors"))
         .def("set_field", &Surface::setField, py::arg("name"))
+        .def("points",
+             [](const Surface& s, int64_t step) {
+                 SurfaceArrays a = stepArrays(s, step);
+                 const auto n = py::ssize_t(a.pointCount());
+                 return readOnly(std::move(a.points), {n, 3});
+             },
+             py::arg("step") = 0, "The points of time step `step` (0: the first), (n, 3) float32, read-only")
+        .def("triangles",
+             [](const Surface& s, int64_t step) {
+                 const SurfaceArrays a = stepArrays(s, step);
+                 return readOnly(std::vector<int64_t>(a.triangles.begin(), a.triangles.end()),
+                                 {py::ssize_t(a.triangles.size() / 3), 3});
+             },
+             py::arg("step") = 0, "The triangles of time step `step`, (m, 3) int64 point indices, read-only")
+        .def("point_array",
+             [](const Surface& s, const std::string& name, int64_t step) {
+                 const size_t index = stepIndex(s, step);
+                 PointArray v;
+                 {
+                     py::gil_scoped_release release;
+                     v = s.pointArray(name, index);
+                 }
+                 return arrayOf(std::move(v));
+             },
+             py::arg("name"), py::arg("step") = 0,
+             "The per-point array `name` of time step `step` exactly as stored: (n,) float32 for a scalar, (n, 3) "
+             "for a vector, read-only")
+        .def("point_arrays", [](const Surface& s, int64_t step) { return stepArrays(s, step).arrayNames(); },
+             py::arg("step") = 0, "The names of the per-point arrays of time step `step`")
         .def_property_readonly("field", &Surface::field)
         .def_property_readonly("fields", &Surface::vectorFields)
         .def_property_readonly("point_count", &Surface::pointCount)
@@ -188,16 +249,20 @@ void bindRenderer(py::module_& m) {
 // The option table as the keyword layer reads it.
 void bindOptions(py::module_& m) {
     m.def("option_names", &Renderer::optionNames, "The render options a Renderer takes, in --help order");
-    m.def("option_info", [] {
+    const auto rows = [](const std::vector<OptionInfo>& info) {
         py::list rows;
-        for (const OptionInfo& o : Renderer::optionInfo())
+        for (const OptionInfo& o : info)
             rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
                                  py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
                                  py::arg("choices") = o.choices, py::arg("default") = o.defaultValue,
                                  py::arg("separator") = o.separator));
         return rows;
-    }, "The render options described (name, group, help, kind, min, max, choices, default, separator), in --help "
-       "order");
+    };
+    m.def("option_info", [rows] { return rows(Renderer::optionInfo()); },
+          "The render options described (name, group, help, kind, min, max, choices, default, separator), in "
+          "--help order");
+    m.def("read_option_info", [rows] { return rows(Renderer::readOptionInfo()); },
+          "The options of read() described as option_info() describes the render options");
 }
 
 // Writers of what Python renders: MP4 (Animation) and PNG.

@@ -115,10 +115,14 @@ void addInfoCommand(CLI::App& app, Commands& c) {
     infoCmd->add_option("file", c.infoPath, "Surface file or builtin:NAME")->required();
     // How info reads the file: the table's options of reading an input.
     session::RenderOptions& infoRead = c.infoRead;
-    for (const auto& spec : session::renderOptionTable())
-        if (spec.takes(session::FrontEnd::Read))
+    for (const auto& spec : session::renderOptionTable()) {
+        if (!spec.takes(session::FrontEnd::Read)) continue;
+        if (spec.kind == session::OptionKind::Flag)
+            infoCmd->add_flag_callback("--" + spec.name, [&infoRead, s = &spec] { s->set(infoRead, "true"); }, spec.help);
+        else
             infoCmd->add_option_function<std::string>(
                 "--" + spec.name, [&infoRead, s = &spec](const std::string& v) { s->set(infoRead, v); }, spec.help);
+    }
 }
 
 CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {

@@ -3,7 +3,7 @@
 // The one header a C++ consumer includes; it pulls in no OpenGL, EGL or VTK header.
 //
 //   errors.h    typed exceptions (IoError, FormatError, FieldError, ConfigError, GlError)
-//   surface.h   Surface: from arrays or read from a file; time series
+//   surface.h   Surface: from arrays or read from a file; time series; its arrays out per step
 //   renderer.h  Renderer: options by name, camera, frames, images into caller memory
 //   image.h     writePng: 8-bit RGB or 16-bit gray PNG
 //

@@ -93,6 +93,8 @@ public:
     static std::vector<std::string> optionNames();
     // Those options described: group, help, kind, range, choices, default.
     static std::vector<OptionInfo> optionInfo();
+    // The options Surface::read takes instead (Surface::readOptionNames()), described so.
+    static std::vector<OptionInfo> readOptionInfo();
 
     // Dye [issue 20]: adds a source of ink at the surface point nearest `point` (object
     // space), `radius` in object units (0: a few pixels at the first frame's view), `color`

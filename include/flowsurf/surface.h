@@ -1,5 +1,6 @@
 // flowsurf — a triangle surface with per-vertex vector fields, steady or a time series,
-// built from caller arrays or read from a file. Cheap to copy (shared, immutable data).
+// built from caller arrays or read from a file, and its arrays out again per time step
+// (SurfaceArrays). Cheap to copy (shared, immutable data).
 #pragma once
 
 #include <cstddef>
@@ -15,6 +16,27 @@ namespace detail {
 struct SurfaceData;
 }
 
+// A per-vertex array exactly as stored (no projection, no sign rule): `components` 1 (a
+// scalar: n values; NaN where a patch has none) or 3 (a vector: n x 3, row-major).
+struct PointArray {
+    std::string name;
+    int components = 1;
+    std::vector<float> values;
+};
+
+// One time step's mesh and per-vertex arrays as read: row-major copies the caller owns.
+struct SurfaceArrays {
+    double time = 0.0;
+    std::vector<float> points;        // n x 3, object space
+    std::vector<uint32_t> triangles;  // m x 3, indices into the points (zero-area ones dropped on the way in)
+    std::vector<PointArray> arrays;   // the vectors, then the scalars, in the file's order
+
+    size_t pointCount() const { return points.size() / 3; }
+    std::vector<std::string> arrayNames() const;
+    // The array named `name`; throws FieldError naming the arrays there are.
+    const PointArray& array(const std::string& name) const;
+};
+
 class Surface {
 public:
     // From arrays, copied: `points` n x 3 (object space), `triangles` m x 3 indices into
@@ -28,8 +50,9 @@ public:
     // .case .pvd), a file series (surf_%04d.vtp, surf_*.vtp) or builtin:NAME. `field`
     // chooses the vector array (empty: the first one that is not zero everywhere). A
     // series is streamed step by step while rendering. `options`: how the file is read, by
-    // the command line's names (readOptionNames(): "patches", "foam-case"). Throws IoError,
-    // FormatError, FieldError naming the file, ConfigError naming a bad option.
+    // the command line's names (readOptionNames(): "patches", "foam-case",
+    // "foam-zero-time"). Throws IoError, FormatError, FieldError naming the file,
+    // ConfigError naming a bad option.
     static Surface read(const std::string& path, const std::string& field = "",
                         const std::vector<std::pair<std::string, std::string>>& options = {});
     // The options read() takes: those of the command line that say how the input is read.
@@ -51,6 +74,16 @@ public:
     void bounds(float lo[3], float hi[3]) const;
     // Where it came from, for messages: the path, builtin:NAME or "arrays".
     const std::string& source() const;
+
+    // Step `step`'s mesh and point arrays (0: the first; a series whose mesh changes gives
+    // each step its own). A streamed series reads the step again on each call. Throws
+    // ConfigError for a step out of range (naming the steps there are), else as read().
+    SurfaceArrays arrays(size_t step = 0) const;
+    // Step `step`'s points (n x 3), triangles (m x 3) or array `name` (n or n x 3, as
+    // stored; FieldError naming the arrays there are): arrays(step)'s.
+    std::vector<float> points(size_t step = 0) const;
+    std::vector<uint32_t> triangles(size_t step = 0) const;
+    PointArray pointArray(const std::string& name, size_t step = 0) const;
 
     // The library's own view of the data (for Renderer).
     const std::shared_ptr<detail::SurfaceData>& data_shared() const { return data_; }

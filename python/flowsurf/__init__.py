@@ -28,11 +28,13 @@ import zlib as _zlib
 
 import numpy as _np
 
-from ._flowsurf import FieldError, FormatError, GlError, Surface, option_info, option_names, read_option_names
+from ._flowsurf import (FieldError, FormatError, GlError, Surface, option_info, option_names, read_option_info,
+                        read_option_names)
 from ._flowsurf import _Renderer, _read
 
 __all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "Animation", "animate", "Player",
-           "FormatError", "FieldError", "GlError", "option_names", "option_info", "read_option_names"]
+           "FormatError", "FieldError", "GlError", "option_names", "option_info", "read_option_names",
+           "read_option_info"]
 
 # The keywords, from the C++ option table: a Renderer's (what the frame loop applies) and
 # read()'s (how the input is read); and what the table says of each Renderer option.
@@ -100,7 +102,8 @@ def _apply(renderer, options):
 def read(path, field=None, **options):
     """Reads a surface: any format the command line reads, a file series, or builtin:NAME.
     `field` picks the vector array (default: the first that is not zero everywhere);
-    keywords say how the input is read (read_option_names(): patches, foam_case)."""
+    keywords say how the input is read (read_option_names(): patches, foam_case,
+    foam_zero_time)."""
     pairs = [(name, text) for _, name, text in _keywords(options, _READ_OPTIONS, "read options")]
     return _read(path, field or "", pairs)
 

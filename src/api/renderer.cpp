@@ -150,16 +150,24 @@ std::vector<std::string> Renderer::optionNames() {
     return names;
 }
 
-std::vector<OptionInfo> Renderer::optionInfo() {
+namespace {
+
+// The rows of the option table that `frontEnd` takes, described.
+std::vector<OptionInfo> describeOptions(session::FrontEnd frontEnd) {
     static constexpr const char* kKinds[] = {"flag", "int", "float", "text", "choice", "size", "vec3", "color", "path"};
     static_assert(std::size(kKinds) == size_t(session::OptionKind::Path) + 1, "one name per OptionKind");
     std::vector<OptionInfo> out;
     for (const auto& spec : session::renderOptionTable())
-        if (spec.takes(session::FrontEnd::Renderer))
+        if (spec.takes(frontEnd))
             out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)],
                            spec.min, spec.max, spec.choices, session::defaultText(spec), spec.arraySeparator});
     return out;
 }
+
+}  // namespace
+
+std::vector<OptionInfo> Renderer::optionInfo() { return describeOptions(session::FrontEnd::Renderer); }
+std::vector<OptionInfo> Renderer::readOptionInfo() { return describeOptions(session::FrontEnd::Read); }
 
 void Renderer::setCamera(const CameraView& v) {
     session::RenderOptions o = impl_->playback.options();

@@ -173,6 +173,54 @@ size_t Surface::stepCount() const { return data_->times.size(); }
 std::vector<double> Surface::times() const { return data_->times; }
 const std::string& Surface::source() const { return data_->source; }
 
+std::vector<std::string> SurfaceArrays::arrayNames() const {
+    std::vector<std::string> names;
+    for (const auto& a : arrays) names.push_back(a.name);
+    return names;
+}
+
+const PointArray& SurfaceArrays::array(const std::string& name) const {
+    for (const auto& a : arrays)
+        if (a.name == name) return a;
+    std::string list;
+    for (const auto& a : arrays) list += (list.empty() ? "" : ", ") + a.name;
+    throw FieldError("no point array '" + name + "' (has: " + (list.empty() ? "none" : list) + ")");
+}
+
+SurfaceArrays Surface::arrays(size_t step) const {
+    const size_t count = data_->times.size();
+    if (step >= count)
+        throw ConfigError(data_->source + ": step " + std::to_string(step) + " is out of range (" +
+                          (count == 1 ? "the surface has one step, 0" : "steps 0.." + std::to_string(count - 1)) + ")");
+    const core::SurfaceMesh m = data_->provider()->load(step);
+    SurfaceArrays out;
+    out.time = data_->times[step];
+    out.points.resize(m.positions.size() * 3);
+    std::copy_n(reinterpret_cast<const float*>(m.positions.data()), out.points.size(), out.points.data());
+    out.triangles.resize(m.triangles.size() * 3);
+    std::copy_n(reinterpret_cast<const uint32_t*>(m.triangles.data()), out.triangles.size(), out.triangles.data());
+    for (const auto& f : m.fields) {
+        PointArray a{f.name, 3, std::vector<float>(f.values.size() * 3)};
+        std::copy_n(reinterpret_cast<const float*>(f.values.data()), a.values.size(), a.values.data());
+        out.arrays.push_back(std::move(a));
+    }
+    for (const auto& f : m.scalars) out.arrays.push_back({f.name, 1, f.values});
+    return out;
+}
+
+std::vector<float> Surface::points(size_t step) const { return arrays(step).points; }
+std::vector<uint32_t> Surface::triangles(size_t step) const { return arrays(step).triangles; }
+
+PointArray Surface::pointArray(const std::string& name, size_t step) const {
+    SurfaceArrays a = arrays(step);
+    try {
+        return a.array(name);
+    } catch (const FieldError& e) {
+        throw FieldError(data_->source + (stepCount() > 1 ? " step " + std::to_string(step) : "") +
+                         ": " + e.what());
+    }
+}
+
 void Surface::bounds(float lo[3], float hi[3]) const {
     for (int a = 0; a < 3; ++a) {
         lo[a] = data_->bounds.lo[a];

@@ -20,6 +20,7 @@ struct ReadOptions {
 struct SourceOptions {
     std::string patches;            // boundary patches to read: a regular expression on the name (empty: all)
     std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
+    bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
 };
 
 // Reads every time step of `path` into a Dataset. Each step's mesh holds all point

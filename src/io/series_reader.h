@@ -1,5 +1,5 @@
 // flowsurf — time series read lazily, one step at a time (for core::StepStream): a
-// multi-step file (.pvd, OpenFOAM .foam with every time directory, Exodus, EnSight, ...)
+// multi-step file (.pvd, OpenFOAM .foam with its time directories, Exodus, EnSight, ...)
 // or a numbered file series given as a printf pattern ("surf_%04d.vtp") or a glob
 // ("surf_*.vtp"). Memory holds only the steps the stream keeps.
 #pragma once

@@ -7,7 +7,7 @@
 
 namespace flowsurf::session {
 
-io::SourceOptions sourceOptions(const RenderOptions& o) { return io::SourceOptions{o.patches, o.foamCase}; }
+io::SourceOptions sourceOptions(const RenderOptions& o) { return io::SourceOptions{o.patches, o.foamCase, o.foamZeroTime}; }
 
 ViewFrame viewFrame(int upAxis) {
     ViewFrame f;

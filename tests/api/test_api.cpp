@@ -163,12 +163,52 @@ TEST(Api, AnimationStartsConvergedAsTheCommandLinesMovie) {
     EXPECT_EQ(image(r), hybrid);
 }
 
+// The arrays out are the arrays in, exactly; each step of a series whose mesh changes has
+// its own; a bad array name or step is an error that names what there is.
+TEST(Api, ArraysOutAreTheStoredArraysOfEachStep) {
+    const Arrays in = vortexPlane();
+    const flowsurf::Surface s = surfaceOf(in);
+    EXPECT_EQ(s.points(), in.points);
+    EXPECT_EQ(s.triangles(), in.triangles);
+    const flowsurf::PointArray swirl = s.pointArray("swirl");
+    EXPECT_EQ(swirl.components, 3);
+    EXPECT_EQ(swirl.values, in.vectors);
+    EXPECT_EQ(s.arrays().arrayNames(), std::vector<std::string>{"swirl"});
+    try {
+        s.pointArray("pressure");
+        FAIL() << "a missing array was found";
+    } catch (const flowsurf::FieldError& e) {
+        EXPECT_NE(std::string(e.what()).find("no point array 'pressure' (has: swirl)"), std::string::npos) << e.what();
+    }
+    try {
+        s.points(1);
+        FAIL() << "step 1 of one";
+    } catch (const flowsurf::ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("step 1 is out of range (the surface has one step, 0)"), std::string::npos)
+            << e.what();
+    }
+
+    // The piston's mesh changes over its 25 steps (streamed): each step's own points.
+    const flowsurf::Surface piston = flowsurf::Surface::read("builtin:piston");
+    ASSERT_EQ(piston.stepCount(), 25u);
+    const flowsurf::SurfaceArrays first = piston.arrays(0), later = piston.arrays(12);  // bottom dead centre
+    EXPECT_EQ(first.pointCount(), piston.pointCount());
+    EXPECT_GT(later.pointCount(), first.pointCount()) << "the cylinder is longer: more points";
+    EXPECT_DOUBLE_EQ(later.time, piston.times()[12]);
+    for (const flowsurf::SurfaceArrays* a : {&first, &later}) {
+        for (uint32_t i : a->triangles) EXPECT_LT(i, a->pointCount());
+        for (const auto& array : a->arrays)
+            EXPECT_EQ(array.values.size(), a->pointCount() * size_t(array.components)) << array.name;
+    }
+    EXPECT_THROW(piston.arrays(25), flowsurf::ConfigError);
+}
+
 // What an option change means is the option table's: options read with the input belong
 // to the Surface (they were once accepted here and silently ignored), output files to the
 // command line; a camera change keeps the frame count; a parameter change starts over.
 TEST(Api, OptionsAreAppliedAsTheTableSays) {
     flowsurf::Renderer r;
-    for (const char* input : {"patches", "foam-case", "field", "input"}) {
+    for (const char* input : {"patches", "foam-case", "foam-zero-time", "field", "input"}) {
         try {
             r.set(input, "auto");
             FAIL() << input << " accepted by a Renderer";

@@ -122,6 +122,8 @@ fi
 if "$FLOWSURF" render --list-builtins | grep -q sphere; then ok "list builtins"; else bad "list builtins"; fi
 if "$FLOWSURF" render --help | grep -q -- "--grid-res"; then ok "help lists options"; else bad "help lists options"; fi
 if "$FLOWSURF" info builtin:tori | grep -q triangles; then ok "info builtin"; else bad "info builtin"; fi
+# The table's read options of kind flag are flags for info too, as for render.
+if "$FLOWSURF" info builtin:tori --foam-zero-time | grep -q triangles; then ok "info read flag"; else bad "info read flag"; fi
 if "$FLOWSURF" render builtin:sphere --size 96x64 --frames 3 -q -o "$WORK/s.png" --flow-texture "$WORK/f.png" \
    && [ -s "$WORK/s.png" ] && [ -s "$WORK/f.png" ] && ! ls "$WORK"/*.tmp* >/dev/null 2>&1; then
     ok "render png + flow texture"

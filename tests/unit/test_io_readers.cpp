@@ -2,6 +2,7 @@
 // counts after triangulation, field names and values, cell data → point data, time steps.
 #include "core/errors.h"
 #include "io/dataset_reader.h"
+#include "io/series_reader.h"
 
 #include "test_io_common.h"
 
@@ -297,8 +298,15 @@ TEST(IoReaders, OpenFoamBoundaryPatchesAndTimeDirectories) {
     ScratchDir dir;
     writeCubeCase(dir);
     core::Dataset ds = io::readDataset(dir.file("cube.foam"));
-    ASSERT_EQ(ds.steps.size(), 2u);  // 0/ included
-    EXPECT_DOUBLE_EQ(ds.steps[1].time, 1.0);
+    // The initial conditions in 0/ are skipped by default (a solved time exists), read
+    // when asked for (--foam-zero-time).
+    ASSERT_EQ(ds.steps.size(), 1u);
+    EXPECT_DOUBLE_EQ(ds.steps[0].time, 1.0);
+    auto withZero = io::openSeries(dir.file("cube.foam"), {.zeroTime = true});
+    ASSERT_EQ(withZero->count(), 2u);
+    EXPECT_DOUBLE_EQ(withZero->time(0), 0.0);
+    EXPECT_DOUBLE_EQ(withZero->time(1), 1.0);
+    ds.steps.insert(ds.steps.begin(), core::TimeStep{0.0, withZero->load(0)});
     for (const auto& step : ds.steps) {
         // Two patch blocks, merged: 4 + 8 points, 6 quads. No internal mesh.
         EXPECT_EQ(step.mesh.vertexCount(), 12u);

@@ -1,7 +1,8 @@
 // OpenFOAM cases as they come, written here as small text files (unit hex cells): a
 // decomposed case (processor* directories only), a moving mesh (points per time
-// directory), units from `dimensions`, `info`'s patches with their fields, and the
-// warning when a field file has no entry for a patch.
+// directory), units from `dimensions`, `info`'s patches with their fields, the
+// warning when a field file has no entry for a patch, and a case as the tutorials are
+// written and a solver leaves it (0/ skipped; a time directory VTK cannot parse left out).
 #include "core/errors.h"
 #include "io/dataset_reader.h"
 #include "io/series_reader.h"
@@ -70,12 +71,13 @@ void writeField(const fs::path& timeDir, const std::string& name, const std::str
     writeText((timeDir / name).string(), header(cls, name) + body + "}\n");
 }
 
-void writeControlDict(const ScratchDir& dir) {
-    fs::create_directories(dir.path() / "system");
-    writeText(dir.file("system/controlDict"),
+void writeControlDict(const fs::path& dir) {
+    fs::create_directories(dir / "system");
+    writeText((dir / "system/controlDict").string(),
               header("dictionary", "controlDict") + "application pimpleFoam;\nstartTime 0;\nendTime 1;\ndeltaT 1;\n");
-    writeText(dir.file("case.foam"), "");
+    writeText((dir / "case.foam").string(), "");
 }
+void writeControlDict(const ScratchDir& dir) { writeControlDict(dir.path()); }
 
 }  // namespace
 
@@ -96,11 +98,13 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
                        {{"walls", u}, {p == std::string("processor0") ? "procBoundary0to1" : "procBoundary1to0", u}});
         }
 
-    // auto: the case folder has no mesh, so the processor directories are read.
+    // auto: the case folder has no mesh, so the processor directories are read; their 0/
+    // (initial conditions) is skipped as a solved time exists, read when asked for.
     auto steps = io::openSeries(dir.file("case.foam"));
-    ASSERT_EQ(steps->count(), 2u);
-    EXPECT_DOUBLE_EQ(steps->time(1), 0.5);
-    const core::SurfaceMesh m = steps->load(1);
+    ASSERT_EQ(steps->count(), 1u);
+    EXPECT_DOUBLE_EQ(steps->time(0), 0.5);
+    EXPECT_EQ(io::openSeries(dir.file("case.foam"), {.zeroTime = true})->count(), 2u);
+    const core::SurfaceMesh m = steps->load(0);
     EXPECT_EQ(m.triangleCount(), 20u) << "both cells' five wall faces, not the faces between processors";
     EXPECT_FLOAT_EQ(m.bounds().lo.x, 0.0f);
     EXPECT_FLOAT_EQ(m.bounds().hi.x, 2.0f);
@@ -115,12 +119,31 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
 
     // Asked for the reconstructed case, which has no mesh: an error naming the case.
     EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"", "reconstructed"})->load(0), FormatError);
+    // The processors' 0/ as the tutorials write it (decomposePar copies it so): asked
+    // for, it is left out by name and the solved time stays.
+    for (const char* p : {"processor0", "processor1"}) {
+        const std::string text = readBytes((dir.path() / p / "0/U").string());
+        const size_t open = text.find("boundaryField\n{") + 15;  // right after the brace, as some write it
+        writeText((dir.path() / p / "0/U").string(),
+                  text.substr(0, open) + "#includeEtc \"caseDicts/setConstraintTypes\"\n" + text.substr(open));
+    }
+    ::testing::internal::CaptureStderr();
+    auto tutorial = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    ASSERT_EQ(tutorial->count(), 1u);
+    EXPECT_DOUBLE_EQ(tutorial->time(0), 0.5);
+    EXPECT_NE(err.find("left out time directory 0: "), std::string::npos) << err;
     // With a reconstructed mesh and 0/ only (a parallel run not reconstructed), auto
-    // still takes the processor directories' two times; asked for, the one reconstructed time.
+    // still takes the processor directories' solved time; asked for, the reconstructed
+    // case's one time, 0/ (the only one, so not skipped).
     writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
     writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
-    EXPECT_EQ(io::openSeries(dir.file("case.foam"))->count(), 2u);
-    EXPECT_EQ(io::openSeries(dir.file("case.foam"), {"", "reconstructed"})->count(), 1u);
+    auto decomposed = io::openSeries(dir.file("case.foam"));
+    ASSERT_EQ(decomposed->count(), 1u);
+    EXPECT_DOUBLE_EQ(decomposed->time(0), 0.5);
+    auto reconstructed = io::openSeries(dir.file("case.foam"), {"", "reconstructed"});
+    ASSERT_EQ(reconstructed->count(), 1u);
+    EXPECT_DOUBLE_EQ(reconstructed->time(0), 0.0);
     // Asked for a decomposed case where there is none.
     ScratchDir plain;
     writeControlDict(plain);
@@ -131,16 +154,27 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
 }
 
 // Dynamic-mesh solvers write polyMesh/points into the time directories where the mesh
-// moved; a time directory without them keeps the last points written before it.
+// moved; a time directory without them keeps the last points written before it. Read with
+// 0/ (--foam-zero-time), so the first step is the mesh of constant/; without, 0/ is skipped
+// and the case still opens from the first solved time; with 0/ alone, that is the step.
 TEST(OpenFoam, MovingMeshPointsAreReadPerStep) {
     ScratchDir dir;
     writeControlDict(dir);
     writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3, 4, 5}}});
-    for (const char* t : {"0", "1", "2"})
+    writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(0 0 0)", {{"walls", "(0 0 0)"}});
+    const core::SurfaceMesh atRest = io::openSeries(dir.file("case.foam"))->load(0);
+    ASSERT_NE(atRest.findField("U"), nullptr);
+    for (const auto& u : atRest.findField("U")->values) EXPECT_EQ(u, glm::vec3(0)) << "0/ alone: from rest";
+    for (const char* t : {"1", "2"})
         writeField(dir.path() / t, "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}});
     fs::create_directories(dir.path() / "1/polyMesh");
     writeText(dir.file("1/polyMesh/points"), header("vectorField", "points") + cubePoints(0, 2));
-    auto steps = io::openSeries(dir.file("case.foam"));
+    auto solved = io::openSeries(dir.file("case.foam"));
+    ASSERT_EQ(solved->count(), 2u);
+    EXPECT_DOUBLE_EQ(solved->time(0), 1.0);
+    EXPECT_FLOAT_EQ(solved->load(0).bounds().lo.z, 2.0f);
+    EXPECT_FLOAT_EQ(solved->load(1).bounds().lo.z, 2.0f);
+    auto steps = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
     ASSERT_EQ(steps->count(), 3u);
     const float expectedLoZ[3] = {0, 2, 2};
     for (size_t i = 0; i < 3; ++i) {
@@ -199,4 +233,82 @@ TEST(OpenFoam, InfoListsPatchesWithTheirFieldsAndMissingEntriesAreWarned) {
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(m.findScalar("T"), nullptr);
     EXPECT_NE(err.find("fields T of time 0 have no entry for boundary patch 'ends'"), std::string::npos) << err;
+}
+
+// A case written as OpenFOAM's tutorials are and left by a solver: the fields of 0/ hold
+// `#includeEtc "caseDicts/setConstraintTypes"` (VTK 9.1: "Unsupported directive
+// includeEtc"), the solved times are plain and have uniform/time. 0/ is skipped by default;
+// asked for, it is left out with a warning naming it and the other steps stay; a case with
+// that 0/ alone is an error that says why.
+TEST(OpenFoam, TutorialCaseOpensAtItsSolvedTimesAndUnparsedTimesAreWarned) {
+    ScratchDir dir;
+    writeControlDict(dir);
+    writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3}}, {"frontAndBack", "empty", {4, 5}}});
+    auto writeInitial = [&] {
+        fs::create_directories(dir.path() / "0");
+        const std::string boundary = "boundaryField\n{\n    #includeEtc \"caseDicts/setConstraintTypes\"\n\n"
+                                     "    walls\n    {\n        type noSlip;\n    }\n}\n";
+        writeText(dir.file("0/U"), header("volVectorField", "U") +
+                                       "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n" + boundary);
+        writeText(dir.file("0/p"), header("volScalarField", "p") +
+                                       "dimensions [0 2 -2 0 0 0 0];\ninternalField uniform 0;\n" + boundary);
+    };
+    writeInitial();
+    for (const char* t : {"1", "2"}) {
+        const std::string u = std::string("(") + t + " 0 0)";
+        writeField(dir.path() / t, "U", "volVectorField", "0 1 -1 0 0 0 0", u, {{"walls", u}, {"frontAndBack", u}});
+        writeField(dir.path() / t, "p", "volScalarField", "0 2 -2 0 0 0 0", t, {{"walls", t}, {"frontAndBack", t}});
+        fs::create_directories(dir.path() / t / "uniform");
+        writeText((dir.path() / t / "uniform/time").string(),
+                  header("dictionary", "time") + "value " + t + ";\nname \"" + t + "\";\nindex " + t + ";\n");
+    }
+
+    // As the solver left it: the solved times, nothing to warn about.
+    ::testing::internal::CaptureStderr();
+    auto steps = io::openSeries(dir.file("case.foam"));
+    ASSERT_EQ(steps->count(), 2u);
+    EXPECT_DOUBLE_EQ(steps->time(0), 1.0);
+    EXPECT_DOUBLE_EQ(steps->time(1), 2.0);
+    const core::SurfaceMesh m = steps->load(1);
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(err.find("left out"), std::string::npos) << err;
+    ASSERT_NE(m.findField("U"), nullptr);
+    for (const auto& u : m.findField("U")->values) EXPECT_EQ(u, glm::vec3(2, 0, 0));
+    const io::FileInfo info = io::inspectFile(dir.file("case.foam"));
+    EXPECT_NE(info.format.find("initial conditions 0/ skipped"), std::string::npos) << info.format;
+    EXPECT_EQ(info.times.size(), 2u);
+
+    // 0/ asked for: VTK cannot parse it, so it is left out by name; the solved times stay.
+    ::testing::internal::CaptureStderr();
+    auto withZero = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    ASSERT_EQ(withZero->count(), 2u);
+    EXPECT_DOUBLE_EQ(withZero->time(0), 1.0);
+    EXPECT_NO_THROW(withZero->load(0));
+    err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("left out time directory 0: "), std::string::npos) << err;
+    EXPECT_NE(err.find("includeEtc"), std::string::npos) << err;
+
+    // Any time directory, not only 0/: one written by hand with a directive VTK lacks.
+    writeInitial();
+    fs::create_directories(dir.path() / "3");
+    fs::copy_file(dir.path() / "0/U", dir.path() / "3/U");
+    ::testing::internal::CaptureStderr();
+    auto handWritten = io::openSeries(dir.file("case.foam"));
+    err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(handWritten->count(), 2u);
+    EXPECT_NE(err.find("left out time directory 3: "), std::string::npos) << err;
+
+    // That 0/ alone: nothing VTK can read, and the error says why.
+    const fs::path alone = dir.path() / "alone";
+    writeControlDict(alone);
+    writeCubeMesh(alone, 0, {{"walls", "wall", {0, 1, 2, 3}}, {"frontAndBack", "empty", {4, 5}}});
+    fs::create_directories(alone / "0");
+    fs::copy_file(dir.path() / "0/U", alone / "0/U");
+    try {
+        io::openSeries((alone / "case.foam").string());
+        ADD_FAILURE() << "a case whose only time VTK cannot parse opened";
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("time directory 0: "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Unsupported directive includeEtc"), std::string::npos) << e.what();
+    }
 }

@@ -1,9 +1,12 @@
 // OpenFOAM cases through VTK's reader: the boundary patches (--patches) of a reconstructed
 // case or of a decomposed one (processor* directories, --foam-case), every time directory a
-// step (0/ included), points re-read for time directories that have polyMesh/points (moving
-// meshes), and each field's units from its `dimensions` (VTK's "m/s" notation, kept on the
-// arrays as UNITS_LABEL).
-// Sections: case layout · units and VTK's warnings · the source · openOpenFoam.
+// step except the initial conditions in 0/ when solved times exist (--foam-zero-time reads
+// them too, as ParaView's Skip Zero Time off), a time directory VTK cannot parse left out
+// with a warning naming it, points re-read for time directories that have polyMesh/points
+// (moving meshes), and each field's units from its `dimensions` (VTK's "m/s" notation, kept
+// on the arrays as UNITS_LABEL).
+// Sections: case layout · directories VTK may not parse · units and VTK's warnings ·
+// the source · openOpenFoam.
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
@@ -21,8 +24,11 @@
 #include <vtkPointData.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 
@@ -41,12 +47,24 @@ bool isTimeName(const std::string& name) {
     return end != name.c_str() && *end == '\0';
 }
 
+bool isZeroTime(const std::string& name) { return isTimeName(name) && std::strtod(name.c_str(), nullptr) == 0.0; }
+
 size_t countTimeDirs(const fs::path& dir) {
     std::error_code ec;
     size_t n = 0;
     for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_directory(ec) && isTimeName(e.path().filename().string())) ++n;
     return n;
+}
+
+// Whether `dir` holds a time directory that is (`zero`) or is not the initial conditions.
+bool hasTime(const fs::path& dir, bool zero) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (e.is_directory(ec) && isTimeName(name) && isZeroTime(name) == zero) return true;
+    }
+    return false;
 }
 
 bool hasMesh(const fs::path& dir) {
@@ -93,6 +111,58 @@ bool readsDecomposed(const std::string& casePath, const std::string& choice) {
     }
     if (procs.empty()) return false;
     return !hasMesh(dir) || countTimeDirs(procs.front()) > countTimeDirs(dir);
+}
+
+// --- directories VTK may not parse ---------------------------------------------------
+// VTK 9.1's dictionary parser knows few of OpenFOAM's `#` directives: a field with
+// `#includeEtc "caseDicts/setConstraintTypes"` (in the 0/ of most tutorials since v3) fails
+// the whole step with "Unsupported directive includeEtc". A solver writes its time
+// directories plain, with uniform/time; only the others, when a field file holds a
+// directive (or is compressed, so it cannot be looked into here), are read once at opening
+// to learn whether VTK parses them.
+
+// `#` followed by a letter, not inside a word, as a directive is written (`{#include`
+// too); a binary field's bytes may look so, and then cost a read at opening.
+bool holdsDirective(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::vector<char> buf(1 << 16);
+    char before = '\n';
+    bool hash = false;  // the last character was a '#' starting a word
+    while (in) {
+        in.read(buf.data(), std::streamsize(buf.size()));
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            const char c = buf[size_t(i)];
+            if (hash && std::isalpha(static_cast<unsigned char>(c))) return true;
+            hash = c == '#' && !std::isalnum(static_cast<unsigned char>(before)) && before != '_';
+            before = c;
+        }
+    }
+    return false;
+}
+
+// The time directory of each of `times` (as VTK lists them, by the value of the name; empty
+// where none matches).
+std::vector<std::string> timeDirNames(const fs::path& dir, const std::vector<double>& times) {
+    std::vector<std::string> names(times.size());
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (!e.is_directory(ec) || !isTimeName(name)) continue;
+        const double value = std::strtod(name.c_str(), nullptr);
+        for (size_t i = 0; i < times.size(); ++i)
+            if (std::abs(times[i] - value) <= 1e-12 * std::max(1.0, std::abs(value))) names[i] = name;
+    }
+    return names;
+}
+
+bool mayNotParse(const fs::path& timeDir) {
+    std::error_code ec;
+    if (fs::exists(timeDir / "uniform" / "time", ec)) return false;
+    for (const auto& e : fs::directory_iterator(timeDir, ec)) {
+        if (!e.is_regular_file(ec)) continue;
+        if (e.path().extension() == ".gz" || holdsDirective(e.path())) return true;
+    }
+    return false;
 }
 
 // --- units and VTK's warnings -----------------------------------------------------------
@@ -170,6 +240,38 @@ class OpenFoamSource final : public AlgorithmSource {
 public:
     using AlgorithmSource::AlgorithmSource;
 
+    // Reads once each time directory below `timeRoot` (the case folder or processor0)
+    // that VTK may not parse, and leaves out those it does not, each named in a warning
+    // with VTK's reason; throws FormatError with the reasons when none is left.
+    void dropUnparsedTimes(const fs::path& timeRoot) {
+        if (times_.empty()) return;
+        const std::vector<std::string> names = timeDirNames(timeRoot, times_);
+        const std::string prefix = path() + ": cannot read " + format() + ": ";
+        std::vector<double> kept;
+        std::vector<std::string> failures;
+        for (size_t i = 0; i < times_.size(); ++i) {
+            if (!names[i].empty() && mayNotParse(timeRoot / names[i])) {
+                try {
+                    readStep(i);
+                } catch (const FormatError& e) {
+                    std::string why = e.what();
+                    if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
+                    failures.push_back("time directory " + names[i] + ": " + why);
+                    continue;
+                }
+            }
+            kept.push_back(times_[i]);
+        }
+        if (kept.empty()) {
+            std::string all;
+            for (const auto& f : failures) all += (all.empty() ? "" : "; ") + f;
+            throw FormatError(path() + ": VTK's OpenFOAM reader cannot parse any time directory (" + all + ")");
+        }
+        for (const auto& f : failures)
+            warnOnce(path() + ": left out " + f + " (VTK 9.1's OpenFOAM reader cannot parse it; the other times are read)");
+        times_ = std::move(kept);
+    }
+
 protected:
     void afterUpdate(VtkMessageTrap& trap) override { warnMissingPatchEntries(trap.warnings(), path()); }
     void adapt(vtkDataObject& step) override { moveUnitsToLabels(&step, units_); }
@@ -209,7 +311,8 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
                                          const SourceOptions& options) {
     vtkSmartPointer<vtkOpenFOAMReader> r;
     std::string format = caseFormat;
-    if (readsDecomposed(path, options.foamCase)) {
+    const bool readsDecomposedLayout = readsDecomposed(path, options.foamCase);
+    if (readsDecomposedLayout) {
         // One reader per processor directory, appended patch by patch; VTK's parallel
         // reader wants a controller even in one process.
         auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
@@ -221,8 +324,12 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
         r = vtkSmartPointer<vtkOpenFOAMReader>::New();
     }
     r->SetFileName(path.c_str());
-    // Every time directory is a step, 0/ included (SkipZeroTime is on by default).
-    r->SkipZeroTimeOff();
+    // The initial conditions in 0/ are no result: skipped, as ParaView does, when a solver
+    // wrote later times; a case with only 0/ (a mesh, a moving-mesh set-up) is that step.
+    const fs::path timeRoot = readsDecomposedLayout ? processorDirs(caseDir(path)).front() : caseDir(path);
+    const bool skipZero = !options.zeroTime && hasTime(timeRoot, false);
+    r->SetSkipZeroTime(skipZero);
+    if (skipZero && hasTime(timeRoot, true)) format += " (initial conditions 0/ skipped)";
     r->ListTimeStepsByControlDictOff();
     // Units travel as " [m/s]" name suffixes; the source moves them to UNITS_LABEL.
     r->AddDimensionsToArrayNamesOn();
@@ -236,7 +343,9 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
     r->EnableAllPointArrays();
     r->DisableAllLagrangianArrays();
     readInformation(r, path, format, trap);
-    return std::make_unique<OpenFoamSource>(r, path, format, trap);
+    auto source = std::make_unique<OpenFoamSource>(r, path, format, trap);
+    source->dropUnparsedTimes(timeRoot);
+    return source;
 }
 
 }  // namespace flowsurf::io::detail

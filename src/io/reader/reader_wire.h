@@ -134,6 +134,7 @@ void record(Io& io, R& r) {
         io.field(r.path);
         io.field(r.options.patches);
         io.field(r.options.foamCase);
+        io.field(r.options.zeroTime);
     }
     if (r.op == Op::Step) io.field(r.step);
 }

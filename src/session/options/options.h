@@ -74,6 +74,7 @@ struct RenderOptions {
     float topologyLineWidth = 2.5f;              // px, 1..16
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
+    bool foamZeroTime = false;          // --foam-zero-time: 0/ a step also when solved times exist
     // Dye [issue 20]: sources (--dye, repeatable) and those of --dye-file, each emitting from
     // its start frame for --dye-release frames (0: continuously) unless its stop frame says.
     std::vector<methods::DyeSource> dye;

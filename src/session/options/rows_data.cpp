@@ -70,6 +70,10 @@ std::vector<OptionSpec> readRows() {
                    "OpenFOAM: read the reconstructed case or the processor* directories of a decomposed one (auto: "
                    "the decomposed one when it has more time directories or the case folder has no mesh)",
                    {"auto", "reconstructed", "decomposed"}, FS_REF(foamCase)),
+        flag("foam-zero-time", {G::Data, E::Reload, CommandLine | Config | Read},
+             "OpenFOAM: also read the initial conditions in 0/ as a time step (default: 0/ is skipped when solved "
+             "time directories exist, as ParaView's Skip Zero Time; a case with only 0/ always reads it)",
+             FS_REF(foamZeroTime)),
     };
 }
 
