@@ -193,6 +193,47 @@ void bindSurface(py::module_& m) {
           py::call_guard<py::gil_scoped_release>(),
           "Read a surface: any format the command line reads, a file series, or builtin:NAME");
     m.def("read_option_names", &Surface::readOptionNames, "The options of read(): how the input is read");
+    m.def("_topology",
+          [](const Surface& s, int64_t step, const std::vector<std::pair<std::string, std::string>>& options) {
+              const size_t index = stepIndex(s, step);
+              Topology t;
+              {
+                  py::gil_scoped_release release;
+                  t = s.topology(index, options);
+              }
+              std::vector<float> positions;
+              std::vector<int64_t> indices;
+              py::list types;
+              for (const CriticalPoint& p : t.criticalPoints) {
+                  positions.insert(positions.end(), p.position, p.position + 3);
+                  indices.push_back(p.index);
+                  types.append(p.type);
+              }
+              py::list lines;
+              for (TopologyLine& l : t.lines) {
+                  py::dict line;
+                  line["kind"] = l.kind;
+                  const auto n = py::ssize_t(l.points.size() / 3);
+                  line["points"] = readOnly(std::move(l.points), {n, 3});
+                  line["strength"] = readOnly(std::move(l.strength), {n});
+                  lines.append(line);
+              }
+              py::dict out;
+              const auto k = py::ssize_t(indices.size());
+              out["positions"] = readOnly(std::move(positions), {k, 3});
+              out["types"] = types;
+              out["index"] = readOnly(std::move(indices), {k});
+              out["lines"] = lines;
+              out["euler_characteristic"] = t.eulerCharacteristic;
+              out["index_sum"] = t.indexSum;
+              out["closed"] = t.closed;
+              out["field"] = t.field;
+              out["field_reversed"] = t.fieldReversed;
+              return out;
+          },
+          py::arg("surface"), py::arg("step") = 0,
+          py::arg("options") = std::vector<std::pair<std::string, std::string>>{},
+          "The flow topology of time step `step` (see flowsurf.topology)");
 }
 
 // The quality of the last frames: metrics by the JSON report's names; None where not

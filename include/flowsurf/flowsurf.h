@@ -15,6 +15,7 @@
 #include <flowsurf/image.h>
 #include <flowsurf/renderer.h>
 #include <flowsurf/surface.h>
+#include <flowsurf/topology.h>
 
 #define FLOWSURF_VERSION_MAJOR 0
 #define FLOWSURF_VERSION_MINOR 1

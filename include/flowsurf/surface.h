@@ -3,6 +3,8 @@
 // (SurfaceArrays). Cheap to copy (shared, immutable data).
 #pragma once
 
+#include <flowsurf/topology.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -84,6 +86,14 @@ public:
     std::vector<float> points(size_t step = 0) const;
     std::vector<uint32_t> triangles(size_t step = 0) const;
     PointArray pointArray(const std::string& name, size_t step = 0) const;
+
+    // The flow topology of step `step`'s field as the renderer shows it (docs/topology.md):
+    // `options` by the command line's names, those a Renderer takes ("reverse-field",
+    // "topology-scale", "topology-cancel-speed", "topology-line-strength",
+    // "topology-line-length", "topology-parts", "curvature-radius"). Analysed on each call.
+    // Throws ConfigError (a step out of range, a bad option), FieldError (a field zero
+    // everywhere, no triangles) naming the surface.
+    Topology topology(size_t step = 0, const std::vector<std::pair<std::string, std::string>>& options = {}) const;
 
     // The library's own view of the data (for Renderer).
     const std::shared_ptr<detail::SurfaceData>& data_shared() const { return data_; }

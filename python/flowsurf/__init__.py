@@ -30,9 +30,9 @@ import numpy as _np
 
 from ._flowsurf import (FieldError, FormatError, GlError, Surface, option_info, option_names, read_option_info,
                         read_option_names)
-from ._flowsurf import _Renderer, _read
+from ._flowsurf import _Renderer, _read, _topology
 
-__all__ = ["Surface", "read", "render", "Renderer", "to_png", "Image", "Animation", "animate", "Player",
+__all__ = ["Surface", "read", "render", "topology", "Renderer", "to_png", "Image", "Animation", "animate", "Player",
            "FormatError", "FieldError", "GlError", "option_names", "option_info", "read_option_names",
            "read_option_info"]
 
@@ -249,6 +249,24 @@ class Renderer:
         the frames measured since render() or frames() began; with measuring off, the last
         frame measured now (no frame correlations). None where not measured."""
         return self._r.quality()
+
+
+# What topology() takes: the analysis thresholds and how the field is shown, by the option
+# table's names (docs/topology.md).
+TOPOLOGY_OPTIONS = {"reverse-field", "curvature-radius", "topology-parts", "topology-scale", "topology-cancel-speed",
+                    "topology-line-strength", "topology-line-length"}
+
+
+def topology(surface, field=None, step=0, **options):
+    """The flow topology of `surface`'s field at time step `step`, as `flowsurf topology` writes it:
+    a dict with positions (K, 3) float32, types (K names: source, sink, saddle, center,
+    repelling_focus, attracting_focus), index (K,) int64 (Poincare index), lines (dicts with
+    kind "separation" or "attachment", points (n, 3) and strength (n,)), euler_characteristic,
+    index_sum, closed, field and field_reversed. Keywords: reverse_field, topology_scale,
+    topology_cancel_speed, topology_line_strength, topology_line_length, topology_parts."""
+    s = _as_surface(surface, field)
+    pairs = [(name, text) for _, name, text in _keywords(options, TOPOLOGY_OPTIONS, "topology options")]
+    return _topology(s, step, pairs)
 
 
 def render(surface, flow_texture=False, field=None, **options):

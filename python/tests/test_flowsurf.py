@@ -445,3 +445,30 @@ def test_dye_keyword_and_add_dye_release_ink_that_the_flow_carries():
         r.add_dye((0, 0, 1), radius=-1)
     with pytest.raises(ValueError, match="dye"):
         flowsurf.Renderer(dye="1,2")
+
+
+def test_topology_as_the_command_line_with_the_sign_rule():
+    # The tori's vertical field: sources and sinks, swapped when the field is reversed.
+    s = flowsurf.read("builtin:tori")
+    t = flowsurf.topology(s)
+    k = len(t["types"])
+    assert k > 0 and t["positions"].shape == (k, 3) and t["positions"].dtype == np.float32
+    assert t["index"].shape == (k,) and t["index"].dtype == np.int64
+    assert set(t["types"]) <= {"source", "sink", "saddle", "center", "repelling_focus", "attracting_focus"}
+    assert all(line["kind"] in ("separation", "attachment") and line["points"].shape[1] == 3 for line in t["lines"])
+    assert t["euler_characteristic"] == 0 and t["index_sum"] == 0 and t["closed"]
+    r = flowsurf.topology(s, reverse_field="on")
+    assert r["field_reversed"] and sorted(r["types"]) == sorted(
+        {"source": "sink", "sink": "source"}.get(x, x) for x in t["types"])
+    # OpenFOAM's wallShearStress is shown reversed by default; the arrays stay as stored.
+    pts, tris = s.points(), s.triangles()
+    wss = flowsurf.Surface(pts, tris, s.point_array("velocity"), field="wallShearStress")
+    w = flowsurf.topology(wss)
+    assert w["field_reversed"] and sorted(w["types"]) == sorted(r["types"])
+    assert np.array_equal(wss.point_array("wallShearStress"), s.point_array("velocity"))
+    with pytest.raises(ValueError, match="topology_scale|unknown keyword"):
+        flowsurf.topology(s, no_such_option=1)
+    with pytest.raises(ValueError, match="topology-cancel-speed"):
+        flowsurf.topology(s, topology_cancel_speed=2)
+    with pytest.raises(ValueError, match="step"):
+        flowsurf.topology(s, step=4)

@@ -6,6 +6,7 @@
 #include "methods/common/surface_gpu.h"
 #include "session/options/options.h"
 #include "session/scene_setup.h"
+#include "session/topology_source.h"
 
 #include <algorithm>
 #include <cmath>
@@ -219,6 +220,50 @@ PointArray Surface::pointArray(const std::string& name, size_t step) const {
         throw FieldError(data_->source + (stepCount() > 1 ? " step " + std::to_string(step) : "") +
                          ": " + e.what());
     }
+}
+
+Topology Surface::topology(size_t step, const std::vector<std::pair<std::string, std::string>>& options) const {
+    session::RenderOptions o;
+    o.field = data_->field;
+    for (const auto& [name, value] : options) {
+        const session::OptionSpec* spec = session::findOption(name);
+        if (!spec || !spec->takes(session::FrontEnd::Renderer))
+            throw ConfigError("topology: unknown option '" + name + "' (it takes the Renderer's options, e.g. "
+                              "topology-scale, reverse-field)");
+        session::setOption(o, name, value);
+    }
+    const size_t count = data_->times.size();
+    if (step >= count)
+        throw ConfigError(data_->source + ": step " + std::to_string(step) + " is out of range (" +
+                          (count == 1 ? "the surface has one step, 0" : "steps 0.." + std::to_string(count - 1)) + ")");
+    std::unique_ptr<core::StepProvider> steps = data_->provider();
+    session::TopologySource source(*steps, o);
+    const skeleton::Skeleton& s = source.at(step);
+    Topology out;
+    for (const skeleton::CriticalPoint& p : s.criticalPoints) {
+        CriticalPoint c;
+        for (int a = 0; a < 3; ++a) c.position[a] = p.position[a];
+        c.type = skeleton::pointTypeName(p.type);
+        c.index = p.index;
+        for (int k = 0; k < 2; ++k) {
+            c.eigenvalues[k][0] = p.eigenvalues[k].x;
+            c.eigenvalues[k][1] = p.eigenvalues[k].y;
+        }
+        out.criticalPoints.push_back(std::move(c));
+    }
+    for (const skeleton::SkeletonLine& l : s.lines) {
+        TopologyLine t;
+        t.kind = skeleton::lineKindName(l.kind);
+        for (const glm::vec3& p : l.points) t.points.insert(t.points.end(), {p.x, p.y, p.z});
+        t.strength = l.strength;
+        out.lines.push_back(std::move(t));
+    }
+    out.eulerCharacteristic = s.eulerCharacteristic;
+    out.indexSum = s.indexSum;
+    out.closed = s.closed;
+    out.field = source.field();
+    out.fieldReversed = source.reversed();
+    return out;
 }
 
 void Surface::bounds(float lo[3], float hi[3]) const {

@@ -296,3 +296,30 @@ TEST(Api, AddDyeReleasesInkThatTheFlowCarries) {
     const double angle = std::atan2(-(cy / red - 47.5), cx / red - 47.5);
     EXPECT_NEAR(angle, 1.0, 0.1);
 }
+
+TEST(Api, TopologyOfTheShownFieldAsTheCommandLineFindsIt) {
+    // A plane with a vortex about its centre: one centre, index 1, on a disc (chi 1).
+    const Arrays a = vortexPlane();
+    flowsurf::Surface s = flowsurf::Surface::fromArrays(a.points.data(), a.points.size() / 3, a.triangles.data(),
+                                                        a.triangles.size() / 3, a.vectors.data());
+    const flowsurf::Topology t = s.topology();
+    ASSERT_EQ(t.criticalPoints.size(), 1u);
+    EXPECT_EQ(t.criticalPoints[0].index, 1);
+    EXPECT_EQ(t.eulerCharacteristic, 1);
+    EXPECT_FALSE(t.closed);
+    EXPECT_FALSE(t.fieldReversed);
+    // The sphere's constant-direction field: a source and a sink, swapped when reversed.
+    const flowsurf::Surface tori = flowsurf::Surface::read("builtin:tori");
+    auto count = [](const flowsurf::Topology& r, const char* type) {
+        return std::count_if(r.criticalPoints.begin(), r.criticalPoints.end(),
+                             [&](const flowsurf::CriticalPoint& p) { return p.type == type; });
+    };
+    const flowsurf::Topology plain = tori.topology(), reversed = tori.topology(0, {{"reverse-field", "on"}});
+    EXPECT_TRUE(reversed.fieldReversed);
+    EXPECT_GT(count(plain, "source"), 0);
+    EXPECT_EQ(count(plain, "source"), count(reversed, "sink"));
+    EXPECT_EQ(count(plain, "sink"), count(reversed, "source"));
+    EXPECT_THROW(tori.topology(3), flowsurf::ConfigError);
+    EXPECT_THROW(tori.topology(0, {{"topology-cancel-speed", "2"}}), flowsurf::ConfigError);
+    EXPECT_THROW(tori.topology(0, {{"no-such-option", "1"}}), flowsurf::ConfigError);
+}

@@ -243,5 +243,60 @@ expect_fail "quality missing input"  3 "nosuch.vtp"          "$WORK/q3.json" -- 
 expect_fail "quality every 0"        2 "quality-every"       "$WORK/q4.json" -- quality builtin:sphere --quality-every 0 --quality "$WORK/q4.json" -q
 expect_fail "render quality no dir"  3 "nodir"               "$WORK/q5.png" -- render builtin:sphere --size 64x64 --frames 2 -o "$WORK/q5.png" --quality "$WORK/nodir/q5.json" -q
 
+# --- flow topology -----------------------------------------------------------------
+if "$FLOWSURF" topology builtin:sphere -q -o "$WORK/t1.json" && python3 -c "
+import json, sys; d = json.load(open(sys.argv[1]))
+assert d['euler_characteristic'] == 2 and d['index_sum'] == 2 and d['closed'], d
+assert sorted(p['type'] for p in d['critical_points']) == ['center', 'center'], d['critical_points']
+assert all(len(p['position']) == 3 and p['index'] == 1 for p in d['critical_points'])
+assert isinstance(d['lines'], list)
+" "$WORK/t1.json"; then
+    ok "topology: a rotating sphere has two centres, chi 2"
+else
+    bad "topology: a rotating sphere has two centres, chi 2"
+fi
+# The tangential part of a vertical field on two tori: sources where it leaves, sinks where
+# it arrives; reversed, the two swap.
+count_types() { python3 -c "
+import json, sys, collections; c = collections.Counter(p['type'] for p in json.load(open(sys.argv[1]))['critical_points'])
+print(c['source'], c['sink'], c['saddle'])" "$1"; }
+if "$FLOWSURF" topology builtin:tori -q -o "$WORK/t2.json" &&
+   "$FLOWSURF" topology builtin:tori --reverse-field on -q -o "$WORK/t3.json" &&
+   read -r so si sa < <(count_types "$WORK/t2.json") && read -r so2 si2 sa2 < <(count_types "$WORK/t3.json") &&
+   [ "$so" -gt 0 ] && [ "$si" -gt 0 ] && [ "$sa" -gt 0 ] && [ "$so" = "$si2" ] && [ "$si" = "$so2" ] && [ "$sa" = "$sa2" ]; then
+    ok "topology: --reverse-field swaps sources and sinks"
+else
+    bad "topology: --reverse-field swaps sources and sinks"
+fi
+if "$FLOWSURF" topology builtin:tori -q -o "$WORK/t4.csv" && head -1 "$WORK/t4.csv" | grep -q '^record,id,type,index,x,y,z,strength$' &&
+   grep -q '^point,0,' "$WORK/t4.csv" &&
+   "$FLOWSURF" topology builtin:tori -q -o "$WORK/t5.vtp" && grep -q '<VTKFile type="PolyData"' "$WORK/t5.vtp"; then
+    ok "topology: CSV and VTP"
+else
+    bad "topology: CSV and VTP"
+fi
+if "$FLOWSURF" topology builtin:double-gyre -q -o "$WORK/dg_%02d.json" && [ "$(ls "$WORK"/dg_*.json | wc -l)" -eq 11 ]; then
+    ok "topology: one file per time step with a pattern"
+else
+    bad "topology: one file per time step with a pattern"
+fi
+if "$FLOWSURF" info builtin:sphere | grep -q "Derived scalars .*normalized-divergence"; then
+    ok "info lists the derived fields and scalars"
+else
+    bad "info lists the derived fields and scalars"
+fi
+expect_fail "topology without -o"     2 "-o OUT.json"          ""               -- topology builtin:sphere -q
+expect_fail "topology image output"   2 "\.json, \.csv or \.vtp" "$WORK/t6.png" -- topology builtin:sphere -o "$WORK/t6.png" -q
+expect_fail "topology zero field"     5 "zero everywhere"      "$WORK/t7.json"  -- topology builtin:uniform-plane --field down:0,0,1 -o "$WORK/t7.json" -q
+expect_fail "topology no triangles"   4 "nogeometry.stl"       "$WORK/t8.json"  -- topology "$WORK/nogeometry.stl" -o "$WORK/t8.json" -q
+expect_fail "topology missing field"  5 "no vector field 'p'"  "$WORK/t9.json"  -- topology builtin:sphere --field p -o "$WORK/t9.json" -q
+expect_fail "topology bad threshold"  2 "topology-cancel-speed" "$WORK/ta.json" -- topology builtin:sphere --topology-cancel-speed 2 -o "$WORK/ta.json" -q
+if "$FLOWSURF" render builtin:tori --method isa --topology on --size 96x72 --frames 2 -q -o "$WORK/t10.png" && [ -s "$WORK/t10.png" ] &&
+   "$FLOWSURF" render builtin:vortex-plane --color-by normalized-divergence --size 96x72 --frames 2 -q -o "$WORK/t11.png" && [ -s "$WORK/t11.png" ]; then
+    ok "render --topology on, --color-by normalized-divergence"
+else
+    bad "render --topology on, --color-by normalized-divergence"
+fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
