@@ -93,15 +93,18 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     glUniform1f(program.uniform("uStepPerDist"), in.stepPx * pixelPerDist / speed);
     glUniform1f(program.uniform("uStepOrtho"), in.stepPx * pixelOrtho / speed);
     // Texture coordinates per P-space unit so that one texel spans half the noise scale:
-    // the blur and the lower octave make features about four texels wide.
-    const float texel = 2.0f / float(in.noiseSize);
+    // the blur and the lower octave make features about four texels wide. Oriented LIC's
+    // drops: one texel spans the noise scale, so a drop (about two texels) spans more
+    // integration steps than one and its streak is not dotted at the step spacing.
+    const float texel = (params.oriented ? 1.0f : 2.0f) / float(in.noiseSize);
     glUniform1f(program.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
     if (params.oriented) {
-        // A lone drop of the finer octave: about two texels of half the noise scale through
-        // its centre (blur and trilinear tent), in steps of stepPx.
-        const float dropSamples = std::max(1.0f, in.noiseScalePx / in.stepPx);
+        // A lone drop of the finer octave: two texels (blur and trilinear tent) of the noise
+        // scale through its centre, about 0.7 of that where the surface cuts it off-centre,
+        // in steps of stepPx; a typical head then shows near white.
+        const float dropSamples = std::max(1.0f, 1.4f * in.noiseScalePx / in.stepPx);
         glUniform1f(program.uniform("uInvDropSamples"), 1.0f / dropSamples);
     }
     // The pixel rays (seedPosition in particle_tracing.glsl): the view's basis, scaled to

@@ -25,7 +25,7 @@ public:
     // Sparse noise for oriented LIC: this fraction of the texels are drops at a time (a
     // dense texel is lit half the time). Drops are spaced so that the streaks of the
     // default filter length cover about a third of the surface.
-    static constexpr float kSparseDensity = 0.0012f;
+    static constexpr float kSparseDensity = 0.0024f;
 
     // sparse: drops on a dark ground (oriented LIC), coded as N itself instead.
     SolidNoise(int size, bool sparse);
