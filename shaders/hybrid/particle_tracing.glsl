@@ -206,7 +206,7 @@ bool licAt(ivec2 px, out float result) {
         }
     }
 #ifdef ORIENTED
-    // Not normalised by the weights: a drop lit through uDropSamples samples at the head's
+    // Not normalised by the weights: a drop met over 1 / uInvDropSamples samples at the head's
     // weight gives 1, the streak behind it the kernel's falloff; the ground (no drop, 0) and
     // a full head (1) land at the ends of the overlay's contrast about the noise mean.
     result = NOISE_MEAN + DROP_SPREAD * (2.0 * min(lic * uInvDropSamples, 1.0) - 1.0);
