@@ -38,3 +38,17 @@ void kernelNext(inout KernelWalk w) {
         w.weight = 0.5 + 0.5 * w.phase.x;
     }
 }
+#ifdef ORIENTED
+// Oriented LIC [Wegenkittl, Groller, Purgathofer 1997]: the kernel made one-sided, so that a
+// sparse drop smears into a streak that brightens downstream and ends in a sharp head. v in
+// [0, 1] runs along the streamline from its backward end (v = 0) to its forward end: the
+// chosen kernel's half from its peak outward, stretched over the whole filter length. A
+// pixel the drop reaches at the backward end of its streamline lies downstream of it and
+// gets the most weight. (Box has no falloff: refused by the caller.)
+//   exponential  exp(-3 v)      Gaussian  exp(-4.5 v^2)      Hann  0.5 + 0.5 cos(pi v)
+float orientedWeight(float v) {
+    if (KERNEL == KERNEL_EXPONENTIAL) return exp(-3.0 * v);
+    if (KERNEL == KERNEL_HANN) return 0.5 + 0.5 * cos(3.14159265 * v);
+    return exp(-4.5 * v * v);
+}
+#endif

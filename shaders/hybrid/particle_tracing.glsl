@@ -50,11 +50,15 @@ uniform float uStepPerDist;  // P-space step per unit of distance to the eye (dt
 uniform float uStepOrtho;    // P-space step for orthographic views
 uniform float uFreqAtUnit;   // noise texels per P-space unit at distance 1 (ortho: absolute)
 uniform float uDepthTolerance;  // fraction of the depth range
+#ifdef ORIENTED
+uniform float uInvDropSamples;  // 1 / the samples a lone drop covers along a streamline
+#endif
 // Compile-time choices (program variants; a uniform branch per step halves the speed on
 // llvmpipe): KERNEL one of KERNEL_BOX .. KERNEL_HANN; INTEGRATOR one of INTEGRATOR_EULER,
 // INTEGRATOR_RK2 (midpoint), INTEGRATOR_RK4; LINE_FIELD 1 for vectors without sign
 // (principal directions): each sample is turned to agree with the particle's previous
-// step, so a streamline never folds back at a sign flip.
+// step, so a streamline never folds back at a sign flip. ORIENTED: oriented LIC, the
+// sparse solid noise under a one-sided kernel (orientedWeight in kernels.glsl).
 
 // A P-space displacement d mapped to the particle's clip coordinates, noise coordinates
 // and layer depth (times the step length h: d = h v for a velocity v).
@@ -170,7 +174,11 @@ bool licAt(ivec2 px, out float result) {
     float dt = 0.0;
     float velocityScale = 1.0;
 #endif
+#ifdef ORIENTED
+    float lic = orientedWeight(0.5) * noiseAt(noise0, coarse, f);  // the seed: mid-streak
+#else
     float lic = noiseAt(noise0, coarse, f), weight = 1.0;  // k(0) = 1
+#endif
     vec3 ref0 = velocityImage(clip0.xy / clip0.z, 0.0).xyz;  // both halves start along the seed's vector
     for (int dir = -1; dir <= 1; dir += 2) {  // backward and forward halves
         float hs = float(dir) * h * velocityScale;
@@ -178,7 +186,9 @@ bool licAt(ivec2 px, out float result) {
                                   invTolerance);
         vec3 c = clip0, q = noise0, ref = ref0;
         float d = depth0;
+#ifndef ORIENTED
         KernelWalk k = kernelWalk(du);
+#endif
         for (int i = 1; i <= halfLength; ++i) {
             // Step i runs from data time (i - 1) dt to i dt, backward in time for dir < 0.
             vec3 v;
@@ -186,11 +196,22 @@ bool licAt(ivec2 px, out float result) {
             c += m.clip * v;
             q += m.noise * v;
             d += dot(m.depth, v);
+#ifdef ORIENTED
+            lic += orientedWeight(0.5 + 0.5 * float(dir * i) * du) * noiseAt(q, coarse, f);
+#else
             kernelNext(k);
             lic += k.weight * noiseAt(q, coarse, f);
             weight += k.weight;
+#endif
         }
     }
+#ifdef ORIENTED
+    // Not normalised by the weights: a drop met over 1 / uInvDropSamples samples at the head's
+    // weight gives 1, the streak behind it the kernel's falloff; the ground (no drop, 0) and
+    // a full head (1) land at the ends of the overlay's contrast about the noise mean.
+    result = NOISE_MEAN + DROP_SPREAD * (2.0 * min(lic * uInvDropSamples, 1.0) - 1.0);
+#else
     result = 0.5 + (lic / weight - 0.5) * (1.0 / NOISE_CODE);  // the code's average, decoded
+#endif
     return true;
 }

@@ -9,7 +9,8 @@
 // (x + 1, y, z), (x, y + 1, z) and (x + 1, y + 1, z), wrapped, so a lookup fetches two
 // texels (z and z + 1) instead of eight. Code: 0.5 + NOISE_CODE (N - 0.5), which keeps
 // the blurred square profile's extremes (0.5 +- 1.09) inside [0, 1]; the tracing decodes
-// its average once per pixel.
+// its average once per pixel. With SPARSE (oriented LIC) the texels are rare drops and the
+// code is the value itself (0: no drop).
 // One invocation writes ROWS rows along x (y0 .. y0 + ROWS - 1) at one z, so it blurs
 // ROWS + 1 rows of N: it takes the profiled values of the ROWS + 3 rows around them at 3
 // depths once per x, blurs across z, then y, and slides the x blur along the rows; the y-z
@@ -25,9 +26,20 @@ uniform uint uSeed;
 int wrapped(int p) { return p < 0 ? p + NOISE_SIZE : (p >= NOISE_SIZE ? p - NOISE_SIZE : p); }
 // The hash of texel (x, y, z) is hashPcg(x + rowHash(y, z)).
 uint rowHash(int y, int z) { return hashPcg(uint(wrapped(y)) + hashPcg(uint(wrapped(z)) + hashPcg(uSeed))); }
+#ifdef SPARSE
+// Sparse noise for oriented LIC (SPARSE = the fraction of texels lit at a time): a texel is
+// a drop for the first SPARSE of its cycle, which lasts uPeriod / (2 SPARSE) frames, so a
+// drop lives half a period, as long as a dense texel stays on or off; over its life it
+// follows the profile's rising part (square: 1 throughout; sawtooth: 0 to 1).
+float texelValue(int x, uint row) {
+    float life = fract(float(uFrame) * (2.0 * SPARSE / uPeriod) + hashToUnit(hashPcg(uint(wrapped(x)) + row)));
+    return life < SPARSE ? (uProfile == NOISE_PROFILE_SQUARE ? 1.0 : life * (1.0 / SPARSE)) : 0.0;
+}
+#else
 float texelValue(int x, uint row) {
     return noiseProfile(uProfile, float(uFrame) / uPeriod + hashToUnit(hashPcg(uint(wrapped(x)) + row)));
 }
+#endif
 const float kW[3] = float[3](0.25, 0.5, 0.25);
 // The y-z blurs at x of rows y0 .. y0 + ROWS (ROWS + 1 values), from the row hashes
 // rows[3 j + k] of row y0 - 1 + j at depth z - 1 + k.
@@ -41,7 +53,12 @@ void columns(int x, uint rows[3 * (ROWS + 3)], out float col[ROWS + 1]) {
 }
 // sqrt(sum of squared 3D weights) = (0.25^2 + 0.5^2 + 0.25^2)^(3/2) = 0.2296; half the
 // unblurred deviation is restored (N stays mostly in [0, 1]); then the code.
+// Sparse: the value itself, a lone drop's centre (0.5^3 of its texel) scaled to 1.
+#ifdef SPARSE
+float code(float blurred) { return min(blurred * 8.0, 1.0); }
+#else
 float code(float blurred) { return 0.5 + NOISE_CODE * ((blurred - 0.5) * (0.5 / 0.2296)); }
+#endif
 void main() {
     const int y0 = int(gl_GlobalInvocationID.x) * ROWS, z = int(gl_GlobalInvocationID.y);
     if (y0 >= NOISE_SIZE || z >= NOISE_SIZE) return;

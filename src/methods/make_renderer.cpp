@@ -11,6 +11,15 @@ namespace flowsurf::methods {
 
 namespace {
 std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params, const core::Viewport& viewport) {
+    // Oriented LIC needs a kernel that is applied at once along the whole streamline; ISA's and
+    // IBFVS's noise injection (eq. 9) blends over past frames instead, which weights a streak
+    // most where the noise was injected last, at its upstream end.
+    if (params.hybrid.oriented && method != Method::Hybrid)
+        throw ConfigError("--oriented on: only the hybrid method draws oriented streaks (ISA's and IBFVS's noise "
+                          "injection gives no sound one-sided kernel); use --method hybrid, or --oriented off");
+    if (params.hybrid.oriented && params.hybrid.kernel == LicKernel::Box)
+        throw ConfigError("--oriented on with --kernel box: the drops take the kernel's falloff from their head and a "
+                          "box has none; use --kernel gaussian (the default), exponential or hann");
     switch (method) {
         case Method::Isa: return std::make_unique<isa::IsaRenderer>(params, viewport);
         case Method::Ibfvs: return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);

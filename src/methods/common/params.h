@@ -177,6 +177,10 @@ struct HybridParams {
     Integrator integrator = Integrator::Euler;  // as in [W]; RK2/RK4 on request
     int noiseSize = 64;               // solid noise texels per side: 64 or 128
     float depthTolerance = 0.03f;     // particle vs visible layer, fraction of depth range
+    // Oriented LIC [Wegenkittl, Groller, Purgathofer 1997]: sparse solid noise and a one-sided
+    // kernel, so each streak is a drop whose bright head points downstream (still images show
+    // the sign). Off: the symmetric texture of [W]. Needs a kernel with a falloff (not box).
+    bool oriented = false;
 };
 
 // Whether `e` stretches the flow texture / the colour's lightness.

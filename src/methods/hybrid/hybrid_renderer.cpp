@@ -14,7 +14,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       viewport_(viewport),
       seeds_(viewport, false, params.common.cullBackFaces, true, params.common.surfaceRaster),
       levels_(viewport, params.common.cullBackFaces),
-      noise_(params.hybrid.noiseSize),
+      noise_(params.hybrid.noiseSize, params.hybrid.oriented),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
       overlay_(params.common),
       contrast_(params.common, viewport),
@@ -38,6 +38,9 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
                    !core::sameCamera(in.camera, seedCamera_) || unsteady != haveLevels_ ||
                    (unsteady && !(*in.levels == seedLevels_));
+    if (params_.hybrid.oriented && in.surface->lineField())
+        throw ConfigError("--oriented on: the field has no sign (a line field such as principal directions), so "
+                          "its streaks have no direction to show; use --oriented off");
     const float speedRef = in.surface->maxSpeed();
     if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (lastDynamic_) {

@@ -14,13 +14,18 @@ namespace flowsurf::methods::hybrid {
 namespace {
 // Compute work group: 8 x 8 pixels (llvmpipe runs 8 invocations per SIMD batch).
 constexpr int kLocalX = 8, kLocalY = 8;
+// Oriented LIC: I of the dark ground and of a full drop head, the noise mean -+ this: the
+// overlay's default contrast (2.5 about the mean) shows them near black and white.
+constexpr float kDropSpread = 0.18f;
 }  // namespace
 
 ParticleTracing::ParticleTracing(const HybridParams& params, GlPath path)
     : compute_(path == GlPath::Compute),
       defines_("#define KERNEL " + std::to_string(int(params.kernel)) + "\n#define INTEGRATOR " +
                std::to_string(int(params.integrator)) + "\n#define LOCAL_X " + std::to_string(kLocalX) +
-               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n" + SolidNoise::defines(params.noiseSize)),
+               "\n#define LOCAL_Y " + std::to_string(kLocalY) + "\n" + SolidNoise::defines(params.noiseSize) +
+               (params.oriented ? "#define ORIENTED 1\n#define DROP_SPREAD " + std::to_string(kDropSpread) + "\n"
+                                : "")),
       emptyVao_(gl::VertexArray::create()) {
     programFor(false, false);  // the common variant, so that a shader error shows at construction
 }
@@ -88,11 +93,20 @@ void ParticleTracing::setUniforms(const gl::Program& program, const TracingInput
     glUniform1f(program.uniform("uStepPerDist"), in.stepPx * pixelPerDist / speed);
     glUniform1f(program.uniform("uStepOrtho"), in.stepPx * pixelOrtho / speed);
     // Texture coordinates per P-space unit so that one texel spans half the noise scale:
-    // the blur and the lower octave make features about four texels wide.
-    const float texel = 2.0f / float(in.noiseSize);
+    // the blur and the lower octave make features about four texels wide. Oriented LIC's
+    // drops: one texel spans the noise scale, so a drop (about two texels) spans more
+    // integration steps than one and its streak is not dotted at the step spacing.
+    const float texel = (params.oriented ? 1.0f : 2.0f) / float(in.noiseSize);
     glUniform1f(program.uniform("uFreqAtUnit"), cam.orthographic() ? texel / (in.noiseScalePx * pixelOrtho)
                                                                     : texel / (in.noiseScalePx * pixelPerDist));
     glUniform1f(program.uniform("uDepthTolerance"), params.depthTolerance);  // a fraction of the range, as w
+    if (params.oriented) {
+        // A lone drop of the finer octave: two texels (blur and trilinear tent) of the noise
+        // scale through its centre, about 0.7 of that where the surface cuts it off-centre,
+        // in steps of stepPx; a typical head then shows near white.
+        const float dropSamples = std::max(1.0f, 1.4f * in.noiseScalePx / in.stepPx);
+        glUniform1f(program.uniform("uInvDropSamples"), 1.0f / dropSamples);
+    }
     // The pixel rays (seedPosition in particle_tracing.glsl): the view's basis, scaled to
     // the image's half extent at unit distance (perspective) or in object units (ortho).
     const glm::vec3 forward = glm::normalize(cam.target - cam.eye);

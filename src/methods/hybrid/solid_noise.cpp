@@ -13,11 +13,13 @@ std::string SolidNoise::defines(int size) {
     return "#define NOISE_SIZE " + std::to_string(size) + "\n#define NOISE_CODE " + std::to_string(kCode) + "\n";
 }
 
-SolidNoise::SolidNoise(int size)
+SolidNoise::SolidNoise(int size, bool sparse)
     : size_(size),
+      sparse_(sparse),
       program_(program({{GL_COMPUTE_SHADER, "hybrid/solid_noise.comp"}},
                        defines(size) + "#define ROWS " + std::to_string(kRows) + "\n#define GROUP " +
-                           std::to_string(kGroup) + "\n")) {
+                           std::to_string(kGroup) + "\n" +
+                           (sparse ? "#define SPARSE " + std::to_string(kSparseDensity) + "\n" : ""))) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     texture_ = gl::Handle<gl::detail::deleteTexture>(id);
@@ -44,7 +46,8 @@ std::vector<float> SolidNoise::values() const {
     std::vector<uint8_t> codes(size_t(size_) * size_ * size_ * 4);
     glGetTextureImage(texture_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(codes.size()), codes.data());
     std::vector<float> n(codes.size() / 4);
-    for (size_t i = 0; i < n.size(); ++i) n[i] = 0.5f + (float(codes[4 * i]) / 255.0f - 0.5f) / kCode;
+    for (size_t i = 0; i < n.size(); ++i)
+        n[i] = sparse_ ? float(codes[4 * i]) / 255.0f : 0.5f + (float(codes[4 * i]) / 255.0f - 0.5f) / kCode;
     return n;
 }
 

@@ -3,7 +3,7 @@
 // shaders/hybrid/solid_noise.comp). Each texel holds 8-bit codes of N over a 2 x 2
 // neighbourhood in x and y, so that the particle tracing's trilinear lookup fetches two
 // texels instead of eight; the paper found 8-bit noise adequate. Cost: size^3 texels per
-// frame.
+// frame. Oriented LIC takes a sparse variant: rare drops on a dark ground.
 #pragma once
 
 #include "core/noise.h"
@@ -22,7 +22,13 @@ public:
     // NOISE_SIZE and NOISE_CODE for the shaders that write or read the texture.
     static std::string defines(int size);
 
-    explicit SolidNoise(int size);
+    // Sparse noise for oriented LIC: this fraction of the texels are drops at a time (a
+    // dense texel is lit half the time). Drops are spaced so that the streaks of the
+    // default filter length cover about a third of the surface.
+    static constexpr float kSparseDensity = 0.0024f;
+
+    // sparse: drops on a dark ground (oriented LIC), coded as N itself instead.
+    SolidNoise(int size, bool sparse);
     // Recomputes the volume for frame k (skipped if k is unchanged).
     void update(uint32_t frame, const core::NoiseParams& params);
     // RGBA8, texel (x, y, z): codes of N at (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)
@@ -34,6 +40,7 @@ public:
 
 private:
     int size_;
+    bool sparse_;
     gl::Handle<gl::detail::deleteTexture> texture_;
     gl::Program program_;
     bool valid_ = false;

@@ -89,6 +89,9 @@ std::vector<OptionSpec> stageRows() {
                    "Hybrid LIC filter length L in samples ([W] 25-70)", FS_REF(params.hybrid.filterLength), 1, 1001),
         choice("kernel", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
                "Hybrid LIC kernel", methods::kKernelNames, FS_REF(params.hybrid.kernel)),
+        onOff("oriented", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
+              "Hybrid: streaks as drops whose bright head points downstream (oriented LIC: sparse noise, "
+              "one-sided --kernel), so still images show the flow's sign", FS_REF(params.hybrid.oriented)),
         choice("integrator", {G::Method, E::Rebuild, CommandLine | Config | Panel | Renderer | ParaView},
                "Hybrid particle integrator (euler as in [W])", methods::kIntegratorNames,
                FS_REF(params.hybrid.integrator)),
