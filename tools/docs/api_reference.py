@@ -11,7 +11,7 @@ import os
 import re
 import sys
 
-HEADERS = ["flowsurf.h", "surface.h", "renderer.h", "image.h", "errors.h"]  # the order a reader wants
+HEADERS = ["flowsurf.h", "surface.h", "topology.h", "renderer.h", "image.h", "errors.h"]  # the order a reader wants
 
 
 def cpp_header(path):
