@@ -57,11 +57,18 @@ std::vector<SkeletonLine> bridgeGaps(std::vector<SkeletonLine> lines, float gap)
     const float cos45 = 0.7071f;
     // the ends on a grid of cell `gap`
     std::unordered_map<uint64_t, std::vector<uint32_t>> grid;  // cell -> line * 2 + side
-    auto cellOf = [&](const glm::vec3& p) {
-        const glm::ivec3 c = glm::ivec3(glm::floor(p / gap));
+    // grid coordinates clamped to 21 bits each: far cells may share a key, never a wrong pair
+    // (each candidate's distance is checked)
+    auto coordOf = [&](const glm::vec3& p) {
+        glm::ivec3 c;
+        for (int a = 0; a < 3; ++a) c[a] = int(std::clamp(std::floor(double(p[a]) / gap), -1.0e6, 1.0e6));
+        return c;
+    };
+    auto keyOf = [](const glm::ivec3& c) {
         return (uint64_t(uint32_t(c.x) & 0x1fffff) << 42) | (uint64_t(uint32_t(c.y) & 0x1fffff) << 21) |
                uint64_t(uint32_t(c.z) & 0x1fffff);
     };
+    auto cellOf = [&](const glm::vec3& p) { return keyOf(coordOf(p)); };
     for (uint32_t i = 0; i < lines.size(); ++i)
         for (int side = 0; side < 2; ++side) grid[cellOf(endOf(i, side).position)].push_back(i * 2 + uint32_t(side));
     struct Pair {
@@ -72,11 +79,11 @@ std::vector<SkeletonLine> bridgeGaps(std::vector<SkeletonLine> lines, float gap)
     for (uint32_t i = 0; i < lines.size(); ++i)
         for (int side = 0; side < 2; ++side) {
             const End e = endOf(i, side);
-            const glm::ivec3 c = glm::ivec3(glm::floor(e.position / gap));
+            const glm::ivec3 c = coordOf(e.position);
             for (int dx = -1; dx <= 1; ++dx)
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dz = -1; dz <= 1; ++dz) {
-                        auto it = grid.find(cellOf((glm::vec3(c + glm::ivec3(dx, dy, dz)) + 0.5f) * gap));
+                        auto it = grid.find(keyOf(c + glm::ivec3(dx, dy, dz)));
                         if (it == grid.end()) continue;
                         for (uint32_t other : it->second) {
                             const uint32_t j = other / 2;
@@ -256,7 +263,7 @@ std::vector<SkeletonLine> findSeparationLines(const SurfaceGraph& graph, const F
     // or two), then (5) keep the lines long and strong enough
     std::vector<SkeletonLine> lines;
     const float minLength = params.lineLength * graph.diagonal;
-    for (SkeletonLine& line : bridgeGaps(std::move(pieces), 2.0f * field.scale)) {
+    for (SkeletonLine& line : bridgeGaps(std::move(pieces), std::max(2.0f * field.scale, 1e-6f * graph.diagonal))) {
         float mean = 0.0f;
         for (size_t i = 1; i < line.points.size(); ++i) line.length += glm::length(line.points[i] - line.points[i - 1]);
         for (float v : line.strength) mean += v;

@@ -72,7 +72,7 @@ Skeleton analyze(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& fi
 
     // (1) smoothed over the scale: k umbrella passes reach about sqrt(k) edges
     const float ratio = graph.medianEdge > 0.0f ? on.scale / graph.medianEdge : 0.0f;
-    const int passes = int(std::clamp(std::lround(ratio * ratio), 0l, 400l));
+    const int passes = int(std::lround(std::min(double(ratio) * double(ratio), 400.0)));
     on.smoothed = tangentialPart(graph, smoothField(graph, raw, passes));
     on.speed99 = percentile99(on.smoothed);
     if (!(on.speed99 > 0.0f)) on.speed99 = percentile99(raw);

@@ -28,6 +28,11 @@ struct CellHash {
     }
 };
 
+// A grid coordinate, clamped so that no tolerance makes the conversion overflow.
+int64_t cellOf(float x, double cell) {
+    return int64_t(std::clamp(std::floor(double(x) / cell), -4.0e18, 4.0e18));
+}
+
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
@@ -78,7 +83,7 @@ SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
     std::vector<CellKey> keys(candidates.size());
     for (size_t c = 0; c < candidates.size(); ++c) {
         const glm::vec3& p = mesh.positions[candidates[c]];
-        keys[c] = {int64_t(std::floor(p.x / cell)), int64_t(std::floor(p.y / cell)), int64_t(std::floor(p.z / cell))};
+        keys[c] = {cellOf(p.x, cell), cellOf(p.y, cell), cellOf(p.z, cell)};
         firstInCell.emplace(keys[c], candidates[c]);
     }
     for (size_t c = 0; c < candidates.size(); ++c) {

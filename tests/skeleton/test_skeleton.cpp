@@ -276,3 +276,33 @@ TEST(Skeleton, RefusesWhatHasNoTopology) {
     bad.cancelSpeed = 2.0f;
     EXPECT_THROW(run(m, std::vector<glm::vec3>(m.vertexCount(), glm::vec3(1, 0, 0)), bad), ConfigError);
 }
+
+TEST(Skeleton, ACentreIsToldFromAWeakFocusByTheSpiralRatio) {
+    // Re/Im of the eigenvalues: 0.05 is a centre, 0.3 a focus, at the default ratio 0.1.
+    const core::SurfaceMesh m = square();
+    for (auto [ratio, type] : {std::pair{0.05f, PointType::Center}, std::pair{0.3f, PointType::RepellingFocus},
+                               std::pair{-0.3f, PointType::AttractingFocus}}) {
+        const skeleton::Skeleton s = run(m, sample(m, [r = ratio](glm::vec2 p) {
+            const glm::vec2 d = p - kAt;
+            return glm::vec2(r * d.x - d.y, d.x + r * d.y);
+        }));
+        ASSERT_EQ(s.criticalPoints.size(), 1u);
+        EXPECT_EQ(s.criticalPoints[0].type, type) << ratio;
+    }
+}
+
+TEST(Skeleton, ExtremeParametersAnswerWithoutOverflow) {
+    const core::SurfaceMesh m = square(10);
+    const auto f = sample(m, [](glm::vec2 p) { return glm::vec2(p.x - kAt.x, -(p.y - kAt.y)); });
+    skeleton::SkeletonParams p;
+    p.scale = 1e30f;          // the smoothing passes are capped
+    p.weldTolerance = 0.0f;   // only exact duplicates weld
+    p.cancelSpeed = 1.0f;     // everything slow merges into the net index
+    const skeleton::Skeleton s = run(m, f, p);
+    EXPECT_EQ(s.indexSum, -1);
+    p = {};
+    p.scale = 1e-30f;
+    p.lineLength = 0.0f;
+    p.lineStrength = 0.0f;
+    EXPECT_EQ(run(m, f, p).criticalPoints.size(), 1u);
+}
