@@ -39,13 +39,17 @@ bool triangleZero(const SurfaceGraph& graph, const std::vector<glm::vec3>& f, co
     nt /= len;
     if (glm::dot(nt, graph.normals[t.x] + graph.normals[t.y] + graph.normals[t.z]) < 0.0f) nt = -nt;
     const glm::vec3 e1 = glm::normalize(p[1] - p[0]), e2 = glm::cross(nt, e1);
-    // An exactly zero vector is read as a tiny one along a fixed direction, so a zero on a
-    // vertex is counted in exactly one of its triangles.
-    const glm::vec3 tieBreak = glm::normalize(glm::vec3(1.0f, 0.7f, 0.3f));
+    // An (almost) zero vector is read as a tiny one along its vertex's own tangent frame axis,
+    // the same in every triangle of the vertex, so a zero on a vertex is counted in exactly
+    // one of its triangles.
     glm::vec2 v[3];
     for (int i = 0; i < 3; ++i) {
         glm::vec3 fi = f[t[i]];
-        if (glm::length(fi) <= tiny) fi = tiny * (tieBreak - glm::dot(tieBreak, nt) * nt + 0.1f * e1);
+        if (glm::length(fi) <= tiny) {
+            glm::vec3 u, w;
+            tangentFrame(graph.normals[t[i]], u, w);
+            fi = tiny * glm::normalize(u + 0.6180339887f * w);  // off the grid's and frame's own axes
+        }
         v[i] = {glm::dot(fi, e1), glm::dot(fi, e2)};
     }
     float turn = 0.0f;

@@ -306,3 +306,27 @@ TEST(Skeleton, ExtremeParametersAnswerWithoutOverflow) {
     p.lineStrength = 0.0f;
     EXPECT_EQ(run(m, f, p).criticalPoints.size(), 1u);
 }
+
+TEST(Skeleton, AZeroExactlyOnAVertexIsFoundOnce) {
+    // The 60 x 60 square has a vertex at the origin; nodes and a saddle on vertices of a sphere's
+    // equator ring (the gradient of (x^2 - y^2) / 2, tangential: zeros at +-x, +-y, +-z).
+    const core::SurfaceMesh m = square();
+    for (const Case& c : {Case{"source", [](glm::vec2 p) { return glm::vec2(p.x, 2.0f * p.y); }, PointType::Source, 1},
+                          Case{"saddle", [](glm::vec2 p) { return glm::vec2(p.x, -p.y); }, PointType::Saddle, -1}}) {
+        SCOPED_TRACE(c.name);
+        const skeleton::Skeleton s = run(m, sample(m, c.field));
+        ASSERT_EQ(s.criticalPoints.size(), 1u);
+        EXPECT_EQ(s.criticalPoints[0].type, c.type);
+        EXPECT_LT(glm::length(s.criticalPoints[0].position), 0.05f);
+    }
+    core::SurfaceMesh sphere = core::makeUvSphere(1.0f, 64, 32);  // a vertex ring on the equator
+    std::vector<glm::vec3> f;
+    for (size_t i = 0; i < sphere.vertexCount(); ++i) {
+        const glm::vec3 p = sphere.positions[i], n = sphere.normals[i];
+        const glm::vec3 g(p.x, -p.y, 0.0f);
+        f.push_back(g - glm::dot(g, n) * n);
+    }
+    const skeleton::Skeleton s = run(sphere, f);
+    EXPECT_EQ(s.indexSum, 2);
+    EXPECT_EQ(s.criticalPoints.size(), 6u);
+}
