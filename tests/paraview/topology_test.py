@@ -6,10 +6,13 @@
       gradient of (x^2 - y^2)/2 (two sources, two sinks, two saddles and their lines); the
       generated properties and their defaults; errors (no such array, a zero field) reported
       through ParaView and pvbatch running on.
-  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG
+      Then the FlowSurf representation's overlay (FlowSurfTopology on) over the saddle
+      field: its red and blue lines drawn untinted over ParaView's colouring, none when off.
+  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG [render]
       the saddle field on a sphere split over the ranks by RedistributeDataSet; the filter's
       whole output (fetched) into OUTDIR/TAG.json; a zero field and an array missing on
-      rank 1: the same error on every rank, no hang.
+      rank 1: the same error on every rank, no hang. With `render`: FlowSurfTopology on in
+      the representation (refused under MPI with a message), and ParaView renders on.
   python3 topology_test.py PLUGIN OUTDIR compare REF TAG...
       each TAG's result equals REF's: the same critical points (type, index, position within
       1e-6 of the extent) and the same number of lines of each kind.
@@ -119,7 +122,58 @@ def serial():
     print('ZERO_FIELD_SURVIVED', flush=True)
     field.Function = SADDLES
     assert len(result(topo)['critical_points']) == 6
+    overlay(field)
     print('PASSED', flush=True)
+
+
+def line_pixels(view, path):
+    """The view's pixels of the overlay's separation red and attachment blue."""
+    import numpy as np
+    from paraview.simple import Render, SaveScreenshot
+    from paraview.vtk.util.numpy_support import vtk_to_numpy
+    from paraview.vtk.vtkIOImage import vtkPNGReader
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=[300, 300])
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).astype(float)[:, :3] / 255
+    red = int(np.sum((a[:, 0] > 0.8) & (a[:, 1] < 0.25) & (a[:, 2] < 0.25)))  # (0.95, 0.12, 0.12)
+    blue = int(np.sum((a[:, 2] > 0.85) & (a[:, 0] < 0.3) & (a[:, 1] > 0.35) & (a[:, 1] < 0.65)))  # (0.15, 0.5, 1)
+    return red, blue
+
+
+def flowsurf_view(source):
+    from paraview.simple import CreateRenderView, Show, ColorBy
+    view = CreateRenderView()
+    view.ViewSize = [300, 300]
+    view.OrientationAxesVisibility = 0
+    view.UseFXAA = 0
+    rep = Show(source, view)
+    rep.SetRepresentationType('FlowSurf')
+    rep.FlowSurfVectors = ['POINTS', 'V']
+    rep.FlowSurfMethod = 'hybrid'
+    ColorBy(rep, ('POINTS', 'V', 'Magnitude'))  # the blend overlay multiplies ParaView's colour
+    view.CameraPosition = [2.5, 2.0, 3.0]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    return view, rep
+
+
+def overlay(field):
+    """FlowSurfTopology on: the lines in their own colours over ParaView's (blend overlay and
+    gray), none when off; the properties generated from the option table."""
+    view, rep = flowsurf_view(field)
+    assert rep.FlowSurfTopology == 'off' and rep.FlowSurfTopologyLineWidth == 2.5, rep.FlowSurfTopology
+    off = line_pixels(view, OUT + '/overlay_off.png')
+    rep.FlowSurfTopology = 'on'
+    on = line_pixels(view, OUT + '/overlay_on.png')
+    rep.FlowSurfOverlay = 'gray'
+    gray = line_pixels(view, OUT + '/overlay_gray.png')
+    print('overlay lines (red, blue pixels): off', off, 'on', on, 'gray', gray, flush=True)
+    # Two separation and two attachment lines 2.5 px wide across a 300 px view: hundreds of
+    # pixels each; none of either colour without the overlay.
+    assert off == (0, 0) and min(on) > 100 and min(gray) > 100, (off, on, gray)
 
 
 RANK_ONE_SCRIPT = '''
@@ -131,7 +185,7 @@ if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 1:
 '''
 
 
-def parallel(tag):
+def parallel(tag, render):
     from paraview.simple import LoadPlugin, Sphere, Calculator, RedistributeDataSet, ProgrammableFilter, \
         UpdatePipeline
     LoadPlugin(PLUGIN, ns=globals())
@@ -158,6 +212,16 @@ def parallel(tag):
     print('SURVIVED missing', flush=True)
     odd.Script = RANK_ONE_SCRIPT % 'pass'
     assert len(result(topo)['critical_points']) == len(r['critical_points'])
+    if render:
+        from paraview.simple import ExtractSurface
+        view, rep = flowsurf_view(ExtractSurface(Input=odd))
+        line_pixels(view, '%s/%s_off.png' % (OUT, tag))
+        print('FLOWSURF_STARTED', flush=True)
+        rep.FlowSurfTopology = 'on'
+        line_pixels(view, '%s/%s_on.png' % (OUT, tag))
+        rep.FlowSurfTopology = 'off'
+        line_pixels(view, '%s/%s_off.png' % (OUT, tag))
+        print('SURVIVED overlay', flush=True)
     print('DONE', tag, flush=True)
 
 
@@ -188,6 +252,6 @@ def compare(ref, tags):
 if MODE == 'serial':
     serial()
 elif MODE == 'parallel':
-    parallel(sys.argv[4])
+    parallel(sys.argv[4], len(sys.argv) > 5 and sys.argv[5] == 'render')
 else:
     compare(sys.argv[4], sys.argv[5:])
