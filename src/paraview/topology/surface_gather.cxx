@@ -14,7 +14,7 @@ bool parallel(vtkMultiProcessController* c)
   return c && c->GetNumberOfProcesses() > 1;
 }
 
-// Every process's `values` (components floats or ints each) on process 0, in process order.
+// Every process's `count` values on process 0, concatenated in process order (empty elsewhere).
 template <typename T>
 std::vector<T> gatherValues(vtkMultiProcessController* c, const T* values, vtkIdType count)
 {
