@@ -78,7 +78,7 @@ xrun "$OUT/shadererror.log" "${MPI[@]}" -np 1 pvbatch "$HERE/parallel_test.py" "
   -np 1 -x MESA_GL_VERSION_OVERRIDE=4.5 -x MESA_GLSL_VERSION_OVERRIDE=330 \
   pvbatch "$HERE/parallel_test.py" "$PLUGIN" "$OUT" glerror
 rc=$?
-errors=$(grep -c "program .* failed to \(link\|compile\).* (on process 1 of 2)" "$OUT/shadererror.log")
+errors=$(grep -c "\(program\|shader\) .* failed to \(link\|compile\).* (on process 1 of 2)" "$OUT/shadererror.log")
 echo "shadererror: exit $rc, the error reported $errors time(s)"
 [ $rc -eq 0 ] && [ "$errors" -ge 2 ] && grep -q "^SURVIVED" "$OUT/shadererror.log" ||
   { echo "shadererror: expected rank 1's shader error on both ranks and a render after it"; cat "$OUT/shadererror.log"; exit 1; }

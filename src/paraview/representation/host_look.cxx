@@ -171,6 +171,7 @@ session::RenderOptions frameLoopOptions(
   }
   o.field = vectors;
   o.size = size;
+  o.topology = false;  // drawn by the mapper over ParaView's colours (mapper_topology.h)
   return o;
 }
 

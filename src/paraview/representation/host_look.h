@@ -50,7 +50,7 @@ std::optional<HostLook> hostLook(vtkRenderer* ren, vtkActor* actor, vtkComposite
 // overlay F_s is ParaView's colouring, so the method's own colour map and lighting are off
 // and its image is beta F_a + (1 - beta); with a colour array (`dataColor`) the colour value
 // the composite maps through ParaView's table; the field is ParaView's array `vectors`, the
-// size its view's.
+// size its view's; the flow topology off (the mapper draws it, mapper_topology.h).
 session::RenderOptions frameLoopOptions(
   const session::RenderOptions& options, bool dataColor, const std::string& vectors, const core::Viewport& size);
 

@@ -7,6 +7,7 @@
 #include "gl_state_guard.h"
 #include "host_look.h"
 #include "mapper_composite.h"
+#include "mapper_topology.h"
 #include "polydata_to_mesh.h"
 #include "rank_stats.h"
 #include "vtk_process_group.h"
@@ -67,6 +68,7 @@ struct vtkFlowSurfMapper::Internals
   }
 
   fs::paraview::MapperComposite composite;
+  fs::paraview::MapperTopology topology;  // FlowSurfTopology on (serial ParaView)
   bool glChecked = false;
 
   // ParaView's look of the surface when the composite reproduces it (one surface pass per
@@ -79,6 +81,7 @@ struct vtkFlowSurfMapper::Internals
   {
     playback.reset();
     composite.release();
+    topology.release();
   }
 
   fs::session::RenderOptions playbackOptions(const fs::core::Viewport& size) const
@@ -356,6 +359,11 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
     cameraChanged = group->any(cameraChanged);
   }
   const bool warmup = updatePlayback({ w, h }, dataChanged, timeChanged);
+  {
+    fs::session::RenderOptions o = playbackOptions({ w, h });
+    o.topology = options.topology;  // the frame loop's options without it: drawn here
+    topology.update(steps, o, dataChanged, group != nullptr);
+  }
 
   // (3) advection frames: a still render of something new converges (the warm-up, then
   // frame 0); a new view time or camera advances one frame (with the camera-move remedy);
@@ -388,6 +396,9 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   const fs::methods::PixelRect piece = drawn
     ? fs::methods::projectedRect(drawn->pieceParts(), lastCamera.viewProjection(float(w) / float(h)), w, h)
     : fs::methods::PixelRect{};
+  topology.render(playback->view(0), lastCamera, w, h);
   composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
     options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
+  // (5) the flow topology over it (FlowSurfTopology on)
+  topology.composite(guard, x0, y0, w, h, playback->view(0));
 }

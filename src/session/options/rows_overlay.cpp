@@ -88,7 +88,7 @@ std::vector<OptionSpec> contrastRows() {
 
 // The flow topology: what is analysed and how it is drawn (doc/topology.md).
 std::vector<OptionSpec> topologyRows() {
-    constexpr FrontEnd all = CommandLine | Config | Panel | Renderer;
+    constexpr FrontEnd all = CommandLine | Config | Panel | Renderer | ParaView;
     return {
         onOff("topology", {G::Overlay, E::Rebuild, all},
               "Draw the flow topology over the texture: critical points as glyphs by type, separation (red) and "
