@@ -78,7 +78,7 @@ py::array readOnly(std::vector<T> values, std::vector<py::ssize_t> shape) {
     py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
     py::array_t<T> a(shape, owned->data(), free);
     a.attr("setflags")(py::arg("write") = false);
-    return std::move(a);
+    return a;  // moved: C++20 moves a local into its base class on return
 }
 
 // A Python step index as the library's; a negative one is refused as the library refuses

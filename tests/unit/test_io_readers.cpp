@@ -302,7 +302,7 @@ TEST(IoReaders, OpenFoamBoundaryPatchesAndTimeDirectories) {
     // when asked for (--foam-zero-time).
     ASSERT_EQ(ds.steps.size(), 1u);
     EXPECT_DOUBLE_EQ(ds.steps[0].time, 1.0);
-    auto withZero = io::openSeries(dir.file("cube.foam"), {.zeroTime = true});
+    auto withZero = io::openSeries(dir.file("cube.foam"), {.patches = {}, .foamCase = "auto", .zeroTime = true});
     ASSERT_EQ(withZero->count(), 2u);
     EXPECT_DOUBLE_EQ(withZero->time(0), 0.0);
     EXPECT_DOUBLE_EQ(withZero->time(1), 1.0);

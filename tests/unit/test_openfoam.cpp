@@ -103,7 +103,7 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
     auto steps = io::openSeries(dir.file("case.foam"));
     ASSERT_EQ(steps->count(), 1u);
     EXPECT_DOUBLE_EQ(steps->time(0), 0.5);
-    EXPECT_EQ(io::openSeries(dir.file("case.foam"), {.zeroTime = true})->count(), 2u);
+    EXPECT_EQ(io::openSeries(dir.file("case.foam"), {.patches = {}, .foamCase = "auto", .zeroTime = true})->count(), 2u);
     const core::SurfaceMesh m = steps->load(0);
     EXPECT_EQ(m.triangleCount(), 20u) << "both cells' five wall faces, not the faces between processors";
     EXPECT_FLOAT_EQ(m.bounds().lo.x, 0.0f);
@@ -128,7 +128,7 @@ TEST(OpenFoam, DecomposedCaseReadsEveryProcessorAndHidesProcessorPatches) {
                   text.substr(0, open) + "#includeEtc \"caseDicts/setConstraintTypes\"\n" + text.substr(open));
     }
     ::testing::internal::CaptureStderr();
-    auto tutorial = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    auto tutorial = io::openSeries(dir.file("case.foam"), {.patches = {}, .foamCase = "auto", .zeroTime = true});
     const std::string err = ::testing::internal::GetCapturedStderr();
     ASSERT_EQ(tutorial->count(), 1u);
     EXPECT_DOUBLE_EQ(tutorial->time(0), 0.5);
@@ -174,7 +174,7 @@ TEST(OpenFoam, MovingMeshPointsAreReadPerStep) {
     EXPECT_DOUBLE_EQ(solved->time(0), 1.0);
     EXPECT_FLOAT_EQ(solved->load(0).bounds().lo.z, 2.0f);
     EXPECT_FLOAT_EQ(solved->load(1).bounds().lo.z, 2.0f);
-    auto steps = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    auto steps = io::openSeries(dir.file("case.foam"), {.patches = {}, .foamCase = "auto", .zeroTime = true});
     ASSERT_EQ(steps->count(), 3u);
     const float expectedLoZ[3] = {0, 2, 2};
     for (size_t i = 0; i < 3; ++i) {
@@ -280,7 +280,7 @@ TEST(OpenFoam, TutorialCaseOpensAtItsSolvedTimesAndUnparsedTimesAreWarned) {
 
     // 0/ asked for: VTK cannot parse it, so it is left out by name; the solved times stay.
     ::testing::internal::CaptureStderr();
-    auto withZero = io::openSeries(dir.file("case.foam"), {.zeroTime = true});
+    auto withZero = io::openSeries(dir.file("case.foam"), {.patches = {}, .foamCase = "auto", .zeroTime = true});
     ASSERT_EQ(withZero->count(), 2u);
     EXPECT_DOUBLE_EQ(withZero->time(0), 1.0);
     EXPECT_NO_THROW(withZero->load(0));
