@@ -6,6 +6,7 @@ uniform int outlinePass;
 uniform float halfWidthPx;
 flat in vec2 aPx, bPx;
 flat in float depthA, depthB, kind;
+flat in int depthTest;
 out vec4 outColor;
 
 void main() {
@@ -13,6 +14,6 @@ void main() {
     float len2 = dot(ab, ab);
     float t = len2 > 0.0 ? clamp(dot(p - aPx, ab) / len2, 0.0, 1.0) : 0.0;
     float cover = clamp(halfWidthPx + 0.5 - length(p - (aPx + t * ab)), 0.0, 1.0);
-    if (cover <= 0.0 || hiddenBySurface(p, mix(depthA, depthB, t))) discard;
+    if (cover <= 0.0 || (depthTest == 1 && hiddenBySurface(p, mix(depthA, depthB, t)))) discard;
     outColor = outlinePass == 1 ? vec4(vec3(0.04), 0.8 * cover) : vec4(kindColour[int(kind + 0.5)], cover);
 }

@@ -7,6 +7,7 @@ uniform vec2 viewportPx;
 uniform float halfWidthPx;
 flat out vec2 aPx, bPx;
 flat out float depthA, depthB, kind;
+flat out int depthTest;  // 0: both ends in front of the surface, no per-pixel test
 
 void main() {
     vec4 a = viewProj * vec4(segment[2 * gl_InstanceID].xyz, 1.0);
@@ -17,6 +18,9 @@ void main() {
     bPx = (b.xy / b.w * 0.5 + 0.5) * viewportPx;
     depthA = a.z / a.w * 0.5 + 0.5;
     depthB = b.z / b.w * 0.5 + 0.5;
+    bool hiddenA = hiddenBySurface(aPx, depthA), hiddenB = hiddenBySurface(bPx, depthB);
+    if (hiddenA && hiddenB) { gl_Position = vec4(2.0, 2.0, 2.0, 1.0); return; }  // behind the surface
+    depthTest = hiddenA || hiddenB ? 1 : 0;
     vec2 along = bPx - aPx;
     along = length(along) > 1e-6 ? normalize(along) : vec2(1.0, 0.0);
     vec2 across = vec2(-along.y, along.x);

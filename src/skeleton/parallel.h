@@ -1,5 +1,5 @@
-// flowsurf — the analysis's loops over vertices and triangles on every core, and a radix
-// sort of edge keys (internal to src/skeleton). Each index is handled by one thread and
+// flowsurf — the analysis's loops over vertices and triangles on every core (internal to
+// src/skeleton). Each index is handled by one thread and
 // results land by index, so the output does not depend on the number of threads.
 #pragma once
 
@@ -34,23 +34,6 @@ void parallelFor(size_t n, Fn&& fn) {
     parallelChunks(n, [&fn](size_t b, size_t e, size_t) {
         for (size_t i = b; i < e; ++i) fn(i);
     });
-}
-
-// Sorts 64-bit keys by 16-bit digits (least significant first), skipping digits that are
-// zero in every key.
-inline void radixSort(std::vector<uint64_t>& keys) {
-    uint64_t any = 0;
-    for (uint64_t k : keys) any |= k;
-    std::vector<uint64_t> tmp(keys.size());
-    std::vector<size_t> count(65537);
-    for (int shift = 0; shift < 64; shift += 16) {
-        if (((any >> shift) & 0xffffu) == 0) continue;
-        std::fill(count.begin(), count.end(), 0);
-        for (uint64_t k : keys) ++count[((k >> shift) & 0xffffu) + 1];
-        for (size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-        for (uint64_t k : keys) tmp[count[(k >> shift) & 0xffffu]++] = k;
-        keys.swap(tmp);
-    }
 }
 
 }  // namespace flowsurf::skeleton::detail

@@ -38,6 +38,66 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
     return v;
 }
 
+// Each vertex's neighbours once, sorted, with how many triangles share that edge (1: a
+// boundary edge, above 2: non-manifold): counted per vertex rather than by sorting every
+// edge, so the memory is one entry per triangle corner and side (6 F), compacted in place.
+struct Adjacency {
+    std::vector<uint32_t> start, neighbours;
+    std::vector<uint8_t> sharing;  // per entry, capped at 255
+};
+
+Adjacency adjacencyOf(size_t nv, const std::vector<glm::uvec3>& triangles) {
+    Adjacency a;
+    a.start.assign(nv + 1, 0);
+    for (const glm::uvec3& t : triangles)
+        for (int k = 0; k < 3; ++k) a.start[t[k] + 1] += 2;
+    for (size_t v = 0; v < nv; ++v) a.start[v + 1] += a.start[v];
+    a.neighbours.resize(a.start[nv]);
+    {
+        std::vector<uint32_t> fill(a.start.begin(), a.start.end() - 1);
+        for (const glm::uvec3& t : triangles)
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t x = t[k], y = t[(k + 1) % 3];
+                a.neighbours[fill[x]++] = y;
+                a.neighbours[fill[y]++] = x;
+            }
+    }
+    // per vertex: sort, keep each neighbour once with its count (at the front of its range)
+    a.sharing.assign(a.neighbours.size(), 0);
+    std::vector<uint32_t> unique(nv, 0);
+    detail::parallelFor(nv, [&](size_t v) {
+        const auto b = a.neighbours.begin() + a.start[v], e = a.neighbours.begin() + a.start[v + 1];
+        std::sort(b, e);
+        uint32_t out = a.start[v];
+        for (uint32_t i = a.start[v]; i < a.start[v + 1];) {
+            uint32_t j = i;
+            while (j < a.start[v + 1] && a.neighbours[j] == a.neighbours[i]) ++j;
+            a.neighbours[out] = a.neighbours[i];
+            a.sharing[out] = uint8_t(std::min<uint32_t>(j - i, 255));
+            ++out;
+            i = j;
+        }
+        unique[v] = out - a.start[v];
+    });
+    // compact the ranges down
+    uint32_t at = 0;
+    for (size_t v = 0; v < nv; ++v) {
+        const uint32_t from = a.start[v];
+        for (uint32_t k = 0; k < unique[v]; ++k) {
+            a.neighbours[at + k] = a.neighbours[from + k];
+            a.sharing[at + k] = a.sharing[from + k];
+        }
+        a.start[v] = at;
+        at += unique[v];
+    }
+    a.start[nv] = at;
+    a.neighbours.resize(at);
+    a.neighbours.shrink_to_fit();
+    a.sharing.resize(at);
+    a.sharing.shrink_to_fit();
+    return a;
+}
+
 }  // namespace
 
 void tangentFrame(const glm::vec3& n, glm::vec3& u, glm::vec3& v) {
@@ -58,20 +118,10 @@ SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
     // (union-find, so chains merge deterministically).
     std::vector<uint8_t> onOpenEdge(n, 0);
     {
-        std::vector<uint64_t> given;
-        given.reserve(mesh.triangles.size() * 3);
-        for (const glm::uvec3& t : mesh.triangles)
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t a = t[k], b = t[(k + 1) % 3];
-                given.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
-            }
-        detail::radixSort(given);
-        for (size_t i = 0; i < given.size();) {
-            size_t j = i;
-            while (j < given.size() && given[j] == given[i]) ++j;
-            if (j - i == 1) onOpenEdge[given[i] >> 32] = onOpenEdge[given[i] & 0xffffffffu] = 1;
-            i = j;
-        }
+        const Adjacency given = adjacencyOf(n, mesh.triangles);
+        for (size_t v = 0; v < n; ++v)
+            for (uint32_t k = given.start[v]; k < given.start[v + 1]; ++k)
+                if (given.sharing[k] == 1) onOpenEdge[v] = 1;
     }
     const double cell = std::max(double(tolerance) * double(g.diagonal), 1e-30);
     std::unordered_map<CellKey, uint32_t, CellHash> firstInCell;
@@ -135,58 +185,38 @@ SurfaceGraph buildSurfaceGraph(const core::SurfaceMesh& mesh, float tolerance) {
         g.normals[v] = len > 1e-30f ? nn / len : glm::vec3(0, 0, 1);
     }
 
-    // (3) edges: each undirected edge once, counted by its triangles.
-    std::vector<uint64_t> edges;
-    edges.reserve(g.triangles.size() * 3);
-    for (const glm::uvec3& t : g.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[k], b = t[(k + 1) % 3];
-            edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
-        }
-    detail::radixSort(edges);
+    // (3) edges and neighbours (CSR): each undirected edge once, counted by its triangles;
+    // the median edge length from every k-th edge (a deterministic sample of a million).
+    Adjacency adj = adjacencyOf(nv, g.triangles);
+    g.neighbourStart = std::move(adj.start);
+    g.neighbours = std::move(adj.neighbours);
+    g.boundaryNeighbour.assign(g.neighbours.size(), 0);
+    g.onBoundary.assign(nv, 0);
+    std::vector<uint32_t> part(nv);
+    std::iota(part.begin(), part.end(), 0u);
+    const size_t stride = std::max<size_t>(1, g.neighbours.size() / 2000000);
     std::vector<float> lengths;
-    std::vector<uint32_t> degree(nv, 0);
-    std::vector<uint8_t> edgeOnBoundary;
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        const uint32_t a = uint32_t(edges[i] >> 32), b = uint32_t(edges[i] & 0xffffffffu);
-        ++g.edgeCount;
-        if (j - i == 1) ++g.boundaryEdges;
-        if (j - i > 2) ++g.nonManifoldEdges;
-        lengths.push_back(glm::length(g.positions[a] - g.positions[b]));
-        ++degree[a];
-        ++degree[b];
-        edges[g.edgeCount - 1] = edges[i];
-        edgeOnBoundary.push_back(j - i == 1);
-        i = j;
-    }
-    edges.resize(g.edgeCount);
+    for (uint32_t a = 0; a < nv; ++a)
+        for (uint32_t k = g.neighbourStart[a]; k < g.neighbourStart[a + 1]; ++k) {
+            const uint32_t b = g.neighbours[k];
+            const bool open = adj.sharing[k] == 1;
+            g.boundaryNeighbour[k] = open;
+            g.onBoundary[a] |= uint8_t(open);
+            if (b < a) continue;  // each edge once, from its lower end
+            ++g.edgeCount;
+            if (open) ++g.boundaryEdges;
+            if (adj.sharing[k] > 2) ++g.nonManifoldEdges;
+            if (k % stride == 0) lengths.push_back(glm::length(g.positions[a] - g.positions[b]));
+            const uint32_t ra = findRoot(part, a), rb = findRoot(part, b);
+            if (ra != rb) part[std::max(ra, rb)] = std::min(ra, rb);
+        }
     if (!lengths.empty()) {
         auto mid = lengths.begin() + long(lengths.size() / 2);
         std::nth_element(lengths.begin(), mid, lengths.end());
         g.medianEdge = *mid;
     }
 
-    // (4) neighbours (CSR) and the connected parts.
-    g.neighbourStart.assign(nv + 1, 0);
-    for (size_t v = 0; v < nv; ++v) g.neighbourStart[v + 1] = g.neighbourStart[v] + degree[v];
-    g.neighbours.resize(g.neighbourStart[nv]);
-    g.boundaryNeighbour.assign(g.neighbourStart[nv], 0);
-    g.onBoundary.assign(nv, 0);
-    std::vector<uint32_t> fill(g.neighbourStart.begin(), g.neighbourStart.end() - 1);
-    std::vector<uint32_t> part(nv);
-    std::iota(part.begin(), part.end(), 0u);
-    for (size_t i = 0; i < edges.size(); ++i) {
-        const uint32_t a = uint32_t(edges[i] >> 32), b = uint32_t(edges[i] & 0xffffffffu);
-        g.boundaryNeighbour[fill[a]] = g.boundaryNeighbour[fill[b]] = edgeOnBoundary[i];
-        g.onBoundary[a] |= edgeOnBoundary[i];
-        g.onBoundary[b] |= edgeOnBoundary[i];
-        g.neighbours[fill[a]++] = b;
-        g.neighbours[fill[b]++] = a;
-        const uint32_t ra = findRoot(part, a), rb = findRoot(part, b);
-        if (ra != rb) part[std::max(ra, rb)] = std::min(ra, rb);
-    }
+    // (4) the connected parts
     std::vector<uint8_t> used(nv, 0);
     for (const glm::uvec3& t : g.triangles) used[t.x] = used[t.y] = used[t.z] = 1;
     for (size_t v = 0; v < nv; ++v) {
