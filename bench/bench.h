@@ -39,7 +39,7 @@ struct BenchOptions {
     // Who rasterises the surface passes: each asked for; one that resolves (auto: by
     // renderer, triangles and pixels) to one already run for the row is not run again.
     std::vector<methods::SurfaceRaster> surfaceRasters{methods::SurfaceRaster::Auto};
-    // Contrast enhancement [issue 28]: each variant asked for; a row's param gains
+    // Contrast enhancement [doc/contrast.md]: each variant asked for; a row's param gains
     // "+texture" etc. for the ones that are not off (the contrast column: its stages).
     std::vector<methods::EnhanceContrast> enhanceContrast{methods::EnhanceContrast::Off};
     // Proof that the speed check fails (scripts/bench-check.sh): every frame of the method
@@ -50,7 +50,7 @@ struct BenchOptions {
     // add one row, method "calib", with the median: the machine's speed in this run.
     bool calibration = false;
     BenchCamera camera = BenchCamera::Fit;
-    // Ranks [issue 27], each count its rows. Above 1: that many threads of this program, each
+    // Ranks [docs/parallel.md], each count its rows. Above 1: that many threads of this program, each
     // with its own GL context and a slab of the sphere (equal triangle counts along x), as
     // one methods::ThreadGroup — the ParaView plugin's ranks with memory instead of MPI —
     // in each mode of `parallel`. A row's frame and stage times are the slowest rank's.

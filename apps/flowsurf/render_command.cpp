@@ -60,8 +60,8 @@ int renderStill(const RenderOptions& o, const QualityOutput& quality, Playback& 
     return rendered;
 }
 
-// A movie or PNG sequence: --frames frames, k = 0 .. frames - 1 [issue 28 item 5: 12 means
-// 12], started converged (the warm-up, see playback.h for the clock), each written as it
+// A movie or PNG sequence: --frames frames, k = 0 .. frames - 1 (12 means
+// 12), started converged (the warm-up, see playback.h for the clock), each written as it
 // is rendered. Returns the frames rendered, warm-up left out.
 int renderMovie(const RenderOptions& o, Playback& playback) {
     std::unique_ptr<io::VideoWriter> video;

@@ -274,7 +274,7 @@ def test_png_for_notebooks(tmp_path):
 
 def test_animation_frames_are_the_command_lines_movie_frames(tmp_path):
     # Same warm-up and noise clock as `render -o seq_%02d.png` (frame f at k = W + f); --frames 4
-    # writes 4 files, as n=4 gives 4 frames [issue 28 item 5].
+    # writes 4 files, as n=4 gives 4 frames [docs/cfd.md, colour ranges].
     subprocess.run([FLOWSURF, "render", "builtin:sphere", "--method", "ibfvs", "--size", "64x48", "--alpha", "0.1",
                     "--orbit", "1", "--frames", "4", "-q", "-o", str(tmp_path / "seq_%02d.png")], check=True)
     r = flowsurf.Renderer(method="ibfvs", size=(64, 48), alpha=0.1)
@@ -411,7 +411,7 @@ def test_quality_is_the_command_lines(tmp_path):
     assert q0["median"]["orientation_error_deg"] == pytest.approx(q["median"]["orientation_error_deg"])
 
 
-# --- dye [issue 20] ------------------------------------------------------------------
+# --- dye [doc/algorithms.md §10] ------------------------------------------------------------------
 
 def red_mass(img):
     """Dye seen in the image: red above green (a red dye on the gray overlay, unlit)."""

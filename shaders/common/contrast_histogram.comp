@@ -1,4 +1,4 @@
-// Contrast enhancement [issue 28]: the histogram of the flow texture over the surface's
+// Contrast enhancement [doc/contrast.md]: the histogram of the flow texture over the surface's
 // pixels (methods/common/contrast_stretch.h).
 layout(binding = CONTRAST_FLOW_UNIT) uniform sampler2D uFlow;    // F_a or I, channel r
 layout(binding = CONTRAST_DEPTH_UNIT) uniform sampler2D uDepth;  // window depth, 1 = background

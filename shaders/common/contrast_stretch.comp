@@ -1,4 +1,4 @@
-// Contrast enhancement [issue 28]: the flow texture stretched so that the range uRange
+// Contrast enhancement [doc/contrast.md]: the flow texture stretched so that the range uRange
 // (its smoothed robust percentiles) spans [0, 1], clamped; the background as it was.
 layout(local_size_x = PIXEL_GROUP, local_size_y = PIXEL_GROUP) in;
 layout(binding = CONTRAST_FLOW_UNIT) uniform sampler2D uFlow;    // F_a or I, channel r

@@ -1,4 +1,4 @@
-// Dye advection [issue 20], one invocation per band voxel x; the closest point method
+// Dye advection [doc/algorithms.md §10], one invocation per band voxel x; the closest point method
 // [Ruuth & Merriman 2008] with MacCormack [Selle et al. 2008]. Pass 0 (forward step):
 // u^(x) = u(cp(x) - v dt). Pass 1: u'(x) = u^(x) + (u(x) - u^(cp(x) + v dt)) / 2, clamped
 // to the extremes of u around cp(x) - v dt. Pass 3: the departure points of passes 0 and 1

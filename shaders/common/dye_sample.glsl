@@ -1,4 +1,4 @@
-// Dye [issue 20], shared by the band passes and the overlay: trilinear interpolation of
+// Dye [doc/algorithms.md §10], shared by the band passes and the overlay: trilinear interpolation of
 // the band values at an object-space point, weights renormalised over the corners that
 // lie in the band (a corner outside holds no dye, not zero dye).
 layout(binding = DYE_INDEX_UNIT) uniform isampler3D uDyeIndex;  // band voxel per grid cell, -1: none

@@ -1,5 +1,5 @@
-// Histogram of per-pixel values in [0, 1] over HISTOGRAM_BINS bins [issue 28, contrast
-// enhancement; methods/common/percentile_range.h]. Included last by a shader that defines
+// Histogram of per-pixel values in [0, 1] over HISTOGRAM_BINS bins [doc/contrast.md;
+// methods/common/percentile_range.h]. Included last by a shader that defines
 //   bool histogramValue(ivec2 px, out float value)   // false: the pixel is not counted
 // Each work group counts a HISTOGRAM_TILE^2-pixel block in shared memory, then adds its
 // non-zero bins to the global counts: one atomic per bin and block, not per pixel.

@@ -1,4 +1,4 @@
-// Contrast enhancement of the colour [issue 28]: the histogram of the HSL lightness of the
+// Contrast enhancement of the colour [doc/contrast.md]: the histogram of the HSL lightness of the
 // overlay's surface colour (before its stretch) over the surface's pixels.
 #include "common/overlay.glsl"
 

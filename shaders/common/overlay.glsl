@@ -20,7 +20,7 @@ uniform ivec2 uLegendOrigin;  // bottom-left pixel of the legend
 #endif
 uniform vec3 uBackground;
 #if WITH_COLOR_STRETCH
-uniform vec2 uLightRange;     // contrast enhancement [issue 28]: lightness at the stretch's ends
+uniform vec2 uLightRange;     // contrast enhancement [doc/contrast.md]: lightness at the stretch's ends
 // ... which become these: short of black and white, where a colour map's hue is lost.
 const vec2 kLightTarget = vec2(0.08, 0.92);
 #endif
@@ -84,7 +84,7 @@ vec3 surfaceColor(ivec2 px) {
 }
 
 #if WITH_DYE
-// Dye [issue 20] over the surface colour: sampled in object space at the visible surface
+// Dye [doc/algorithms.md §10] over the surface colour: sampled in object space at the visible surface
 // point of the pixel (depth unprojected), so only what the camera sees shows dye.
 vec3 withDye(vec3 color, ivec2 px, float depth) {
     vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;

@@ -1,4 +1,4 @@
-// flowsurf — colour and mask ranges from the data [issue 28]: an area-weighted summary of
+// flowsurf — colour and mask ranges from the data [docs/cfd.md, colour ranges]: an area-weighted summary of
 // a scalar's values (over one mesh, the pieces of a parallel render, or every step of a
 // series) and the two ranges made from it, the data range and the robust range.
 //

@@ -95,7 +95,7 @@ void AnimatedSurface::resolveRanges() {
     const bool maskGiven = common_.maskBy.empty() || common_.maskRangeAuto || common_.maskRange.x <= common_.maskRange.y;
     if (colorGiven && maskGiven) return;
     // One pass over the series, a step at a time (memory stays at one step and a bounded
-    // summary of the values), so a movie's colours do not pump [issue 28: once per data set].
+    // summary of the values), so a movie's colours do not pump [docs/cfd.md: once per data set].
     methods::RangeAccumulator ranges(common_);
     bool any = false;
     // A step that cannot be read is skipped here: the frame that needs it reports it, after

@@ -29,11 +29,9 @@ public:
     // The surface last uploaded (what the last frame drew); null before the first upload.
     const methods::SurfaceGpu* current() const { return surface_.get(); }
     // For methods that integrate through time (the hybrid's pathlines, [W §3]): the field
-    // around frame k's data time, over the particles' time window (--trace-dt per step,
-    // default the data time per frame; --filter-length steps). Null for steady data.
-    // Call after at(frame).
-    const methods::TimeLevels* levelsAt(int frame) { return levelsAtTime(mapping_.at(frame), mapping_.perFrame); }
-    // The same around data time t, with `perFrame` data time per animation frame.
+    // around data time t, over the particles' time window (--trace-dt per step, default the
+    // data time per frame, `perFrame`; --filter-length steps). Null for steady data. Call
+    // after atTime(t).
     const methods::TimeLevels* levelsAtTime(double t, double perFrame);
     // The mesh at data time t on the CPU (dye needs its triangles and vectors); uploads as
     // atTime(t) does. Steady data is read again on the first call and kept.
@@ -50,7 +48,6 @@ public:
     // `params` for a method drawing this data: without --title, the legend's title gains
     // the colour array's units where the file gives them ("|U| [m/s]", "p [m2/s2]").
     methods::MethodParams paramsFor(const methods::MethodParams& params) const;
-    size_t residentSteps() const { return stream_ ? stream_->resident() : 1; }
 
 private:
     // Throws FieldError when --color-by or --mask-by names an array `mesh` lacks (the first

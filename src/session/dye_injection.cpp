@@ -1,4 +1,4 @@
-// flowsurf — dye injection [issue 20] (dye_injection.h): the sources placed on the surface,
+// flowsurf — dye injection [doc/algorithms.md §10] (dye_injection.h): the sources placed on the surface,
 // the data time per dye step, and one step per frame (methods::DyeField).
 #include "session/dye_injection.h"
 

@@ -1,4 +1,4 @@
-// flowsurf — dye injection [issue 20], the part of session::Playback that releases ink: the
+// flowsurf — dye injection [doc/algorithms.md §10], the part of session::Playback that releases ink: the
 // options' sources (--dye, --dye-file) placed on the surface, the data time per dye step,
 // and one methods::DyeField step per frame. The sources are read at every step, so a source
 // that was not there before starts emitting at that step (dye changes apply live, effect

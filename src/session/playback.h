@@ -155,12 +155,11 @@ public:
     // next measurement; 0: none), for timers that leave it out.
     double qualityMsLastFrame() const { return quality_.msLastFrame(); }
 
-    // --- dye [issue 20] (DyeInjection) -----------------------------------------------------
+    // --- dye [doc/algorithms.md §10] (DyeInjection) -----------------------------------------------------
     // The dye steps with each animation frame and each live frame that advances the clock
     // (not the warm-up), with the options of that frame: dye changes apply live (effect
     // None). Null until a frame had a source.
     const methods::DyeField* dye() const { return dye_.field(); }
-    const DyeInjection& dyeInjection() const { return dye_; }
 
 private:
     // What a build makes from the steps and options, before the playback takes it.

@@ -264,7 +264,7 @@ TEST(Api, QualityOfTheLastFrame) {
     EXPECT_THROW(r.setQualityEvery(-1), flowsurf::ConfigError);
 }
 
-// Dye [issue 20] through the library: addDye is the "dye" option's list plus one; the ink
+// Dye [doc/algorithms.md §10] through the library: addDye is the "dye" option's list plus one; the ink
 // shows where released (the vortex turns it about the centre) and a bad colour throws.
 TEST(Api, AddDyeReleasesInkThatTheFlowCarries) {
     const Arrays a = vortexPlane();

@@ -130,7 +130,7 @@ if "$FLOWSURF" render builtin:sphere --size 96x64 --frames 3 -q -o "$WORK/s.png"
 else
     bad "render png + flow texture"
 fi
-# --frames N writes N frames [issue 28 item 5]: seq_000 .. seq_002, no seq_003.
+# --frames N writes N frames: seq_000 .. seq_002, no seq_003.
 if "$FLOWSURF" render builtin:sphere --size 64x64 --frames 3 -q -o "$WORK/seq_%03d.png" && [ -s "$WORK/seq_002.png" ] \
    && [ "$(ls "$WORK"/seq_*.png | wc -l)" -eq 3 ]; then
     ok "render png sequence: --frames 3 writes 3 files"
@@ -188,7 +188,7 @@ if command -v ffmpeg >/dev/null; then
     else
         bad "render mp4"
     fi
-    # --frames 12 writes 12 frames, not 13 [issue 28 item 5].
+    # --frames 12 writes 12 frames, not 13.
     if command -v ffprobe >/dev/null; then
         n=$("$FLOWSURF" render builtin:sphere --size 64x64 --frames 12 -q -o "$WORK/twelve.mp4" && \
             ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$WORK/twelve.mp4")

@@ -1,4 +1,4 @@
-// Robust colour ranges on rendered images [issue 28]: a sphere coloured by its height with
+// Robust colour ranges on rendered images [docs/cfd.md, colour ranges]: a sphere coloured by its height with
 // 0.1 % and 5 % outliers, and by a four-decade scalar. The measure of structure is the
 // spread of hues over the surface pixels (viridis runs from purple, hue ~285 deg, to
 // yellow, ~55 deg, monotonically; lighting and the texture change brightness, not hue).
@@ -116,7 +116,7 @@ TEST(ColorRange, FourDecadesOnALogScale) {
     EXPECT_FALSE(marks.below || marks.above);
 }
 
-// The legend never covers the surface [issue 28 item 3], at 420x315: the pixels it changes
+// The legend never covers the surface [docs/cfd.md, colour ranges], at 420x315: the pixels it changes
 // are background pixels only, and there are many of them. The sphere at the centre (the
 // usual place at the right edge is free), shifted right (the legend moves to the left
 // margin), and filling the height with room only at the sides (the legend shrinks).

@@ -1,4 +1,4 @@
-// Contrast enhancement [issue 28 item 2, doc/contrast.md]: what a user relies on when turning
+// Contrast enhancement [doc/contrast.md]: what a user relies on when turning
 // it on, for every method on a small analytic scene (the spinning sphere at 160^2): the
 // texture's contrast (std over the surface, the quality report's) at least doubles, its
 // streaks keep their orientation (median error at most 0.5 degrees worse) and the animation

@@ -1,4 +1,4 @@
-// Dye [issue 20] on the analytic sphere in solid-body rotation (builtin:sphere, v = w x p,
+// Dye [doc/algorithms.md §10] on the analytic sphere in solid-body rotation (builtin:sphere, v = w x p,
 // |w| = 1 about (0.3, 1, 0.2)): ink released on the visible side is found where the
 // rotation carries it, keeps its area, hides behind the sphere and comes back, draws a
 // streakline along the rotation circle, and never shows off the surface; for every method,

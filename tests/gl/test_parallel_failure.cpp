@@ -1,4 +1,4 @@
-// An error on one process inside a parallel frame [issue 27 item 7]: every process reports
+// An error on one process inside a parallel frame [docs/parallel.md]: every process reports
 // the same error naming that process, none is left waiting in a collective step, and the
 // next frames render (methods/common/agreeing_group.h).
 #include "core/builtin_scenes.h"

@@ -100,7 +100,7 @@ TEST_P(ParallelMerge, PiecesGiveTheOneProcessImage) {
 INSTANTIATE_TEST_SUITE_P(Methods, ParallelMerge, ::testing::Values("isa", "ibfvs", "hybrid"),
                          [](const auto& info) { return info.param; });
 
-// Contrast enhancement [issue 28] needs the whole image's percentiles: in the replicate
+// Contrast enhancement [doc/contrast.md] needs the whole image's percentiles: in the replicate
 // mode every process holds the merged image and stretches it as one process does (2
 // pieces, the same bounds as above); the tiles mode's colour stretch, which would need the
 // whole image's colours, refuses with a message naming the option and the way out (the
@@ -303,7 +303,7 @@ TEST_P(TiledParallel, PiecesBehindOthersDropTheirPixels) {
     EXPECT_LT(shown, 5 * covered(one) / 4) << "hidden pixels are dropped (all but those in partly covered cells)";
 }
 
-// The texture's contrast stretch in the tiles mode [issue 28]: the processes' tile
+// The texture's contrast stretch in the tiles mode [doc/contrast.md]: the processes' tile
 // histograms summed over the group give every process the one-process range, so the
 // composite is again exactly the one-process image (2 and 4 processes, one of them empty),
 // the camera still and then orbiting.

@@ -1,4 +1,4 @@
-// The dye options [issue 20]: repeatable --dye with its syntax, the dye file, refusals that
+// The dye options [doc/algorithms.md §10]: repeatable --dye with its syntax, the dye file, refusals that
 // name the option, and values that read back exactly (config files, event logs).
 #include "core/errors.h"
 #include "io/text_writer.h"

@@ -1,4 +1,4 @@
-// --frames N [issue 28 item 5]: a PNG is the image after N frames (frame N); a movie or PNG
+// --frames N [docs/cfd.md, colour ranges]: a PNG is the image after N frames (frame N); a movie or PNG
 // sequence is N frames, 0 .. N-1, and its last frame shows the end of the data-time range.
 #include "core/errors.h"
 #include "session/animated_surface.h"

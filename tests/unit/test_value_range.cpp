@@ -1,4 +1,4 @@
-// Robust colour and mask ranges [issue 28]: the rule on generated values (clean, 0.1 % and
+// Robust colour and mask ranges [docs/cfd.md, colour ranges]: the rule on generated values (clean, 0.1 % and
 // 5 % outliers, four decades), area weights, a series summed a step at a time, the option
 // rows, the log scale's refusals and the legend's ticks and end marks.
 #include "core/errors.h"

@@ -22,7 +22,7 @@ io::PngImage columns(const io::PngImage& im, int x0, int width) {
 }  // namespace
 
 // The real GLFW window under Xvfb: the same session gives the same image as headless,
-// and the panel sits beside the image, never over it [issue 28 item 4]: the window's
+// and the panel sits beside the image, never over it [doc/contrast.md, the viewer's framing]: the window's
 // right part is the image, exactly.
 TEST_F(Viewer, RealWindowUnderXvfb) {
     if (std::system("command -v xvfb-run > /dev/null") != 0) GTEST_SKIP() << "xvfb-run is not installed";
@@ -50,7 +50,7 @@ TEST_F(Viewer, RealWindowUnderXvfb) {
     EXPECT_LE(meanAbsDiff(columns(full, panel, w.width), w), 1.0 / 255.0);
 }
 
-// "rescale: visible" [issue 28]: zoomed in on the sphere near a pole of its rotation, the
+// "rescale: visible" [doc/contrast.md, the viewer's framing]: zoomed in on the sphere near a pole of its rotation, the
 // colour range becomes the speeds the view shows (0 .. 1 on the whole sphere), set and
 // recorded as MIN:MAX so that the log replays it without the view.
 TEST_F(Viewer, ColorRangeVisibleRescalesToTheShownValues) {
@@ -78,7 +78,7 @@ TEST_F(Viewer, ColorRangeVisibleRescalesToTheShownValues) {
     EXPECT_EQ(readJson(path("none.json"))["color-range"].get<std::string>(), "robust");
 }
 
-// Collapsing the panel gives its width back [issue 28 item 4]: the image then spans the
+// Collapsing the panel gives its width back [doc/contrast.md, the viewer's framing]: the image then spans the
 // window (the same window, one view as wide as the window), the camera fitted again to
 // it; shown again, the image is as wide as before.
 TEST_F(Viewer, CollapsedPanelGivesTheSpaceBack) {
@@ -149,7 +149,7 @@ TEST_F(Viewer, QualityMeasuredEveryNFramesWhenOn) {
     EXPECT_FALSE(readJson(path("off.json")).contains("quality"));
 }
 
-// Dye [issue 20]: a ctrl + click in the real window drops a source at the surface point
+// Dye [doc/algorithms.md §10]: a ctrl + click in the real window drops a source at the surface point
 // under the cursor (on the unit sphere), recorded as a `set dye` event; the replayed
 // session shows the ink on the surface only, and none before the event.
 TEST_F(Viewer, CtrlClickDropsDyeOnTheSurfaceAndReplays) {

@@ -47,7 +47,7 @@ public:
             context_ = std::make_unique<gl::HeadlessContext>(o.verbose);
             renderer_ = context_->renderer();
         } else {
-            // The views beside the panel: --size each, or what suits the screen [issue 28].
+            // The views beside the panel: --size each, or what suits the screen [doc/contrast.md, the viewer's framing].
             window_ = std::make_unique<Window>(o.size.width * n, o.size.height, "flowsurf view", !v.sizeGiven);
             renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
         }
@@ -111,7 +111,7 @@ private:
     }
 
     // `set color-range visible` (the panel's rescale button, or a log): the range of the
-    // colour values the view shows now, set and recorded as MIN:MAX [issue 28]. False
+    // colour values the view shows now, set and recorded as MIN:MAX [doc/contrast.md, the viewer's framing]. False
     // (the event dropped, the error shown) when the view shows no such range.
     bool resolveVisibleRange(Event& e) {
         if (e.type != EventType::Set || e.value != "visible") return true;

@@ -79,7 +79,7 @@ void Window::optionWidget(const OptionSpec& spec, const ViewerState& state, bool
         ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue);
         if (ImGui::IsItemDeactivatedAfterEdit()) emitSet(spec.name, text);
         if (!ImGui::IsItemActive()) edits_.erase(spec.name);
-        // Range options [issue 28]: one click rescales to the data's whole or robust range,
+        // Range options [doc/contrast.md, the viewer's framing]: one click rescales to the data's whole or robust range,
         // or (colour) to the values the view shows, set as MIN:MAX so that a log replays it.
         if (spec.rescale != RangeRescale::None) {
             ImGui::PushID(label);

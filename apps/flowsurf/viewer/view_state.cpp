@@ -55,7 +55,7 @@ void ViewerState::setWindowSize(int width, int height) {
     const core::Viewport before = window_;
     window_ = {std::max(width, 16), std::max(height, 16)};
     // A camera the viewer fitted (not one the user moved) fits the new area: the panel
-    // collapsed or shown again, the window resized [issue 28 item 4].
+    // collapsed or shown again, the window resized [doc/contrast.md, the viewer's framing].
     if (fitted_ && haveData_ && (window_.width != before.width || window_.height != before.height)) fit();
 }
 

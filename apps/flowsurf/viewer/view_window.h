@@ -24,7 +24,7 @@ struct FrameInfo {
 class Window {
 public:
     // The panel's width in pixels: it sits at the window's left, beside the views, so it
-    // never covers the data [issue 28 item 4]; collapsed or hidden, the views take it.
+    // never covers the data [doc/contrast.md, the viewer's framing]; collapsed or hidden, the views take it.
     static constexpr int kPanelWidth = 380;
     // Opens the window with a render area of width x height beside the panel, or, with
     // `fitScreen`, at a size that suits the screen (the primary monitor's work area, less
@@ -67,7 +67,7 @@ private:
     void emitSet(const std::string& name, const std::string& value);
     // The panel's Quality section (doc/algorithms.md §9): off until turned on.
     void qualitySection(const ViewerState& state, ViewPipeline& pipeline);
-    // Dye [issue 20]: the panel's list of sources, and a ctrl + click turned into a source
+    // Dye [doc/algorithms.md §10]: the panel's list of sources, and a ctrl + click turned into a source
     // at the surface point under the cursor (the view's depth read back and unprojected),
     // emitted as `set dye` so that the event log replays it without a read-back.
     void dyePanel(const ViewerState& state);

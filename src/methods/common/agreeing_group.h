@@ -1,4 +1,4 @@
-// flowsurf — errors inside a parallel frame without a hang [issue 27 item 7]. A frame makes
+// flowsurf — errors inside a parallel frame without a hang [docs/parallel.md]. A frame makes
 // many collective steps (screen_tiles.h, the dye's halo, IBFVS's outlines); a process that
 // throws between two of them (an allocation that fails mid-frame, a driver error) would
 // leave the others waiting in the next one. AgreeingGroup wraps a ProcessGroup: before

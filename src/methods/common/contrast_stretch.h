@@ -1,4 +1,4 @@
-// flowsurf — contrast enhancement of the flow texture [issue 28 item 2], the stage between
+// flowsurf — contrast enhancement of the flow texture [doc/contrast.md], the stage between
 // a method's flow texture and its overlay, as ParaView's Surface LIC's "enhance contrast":
 // the texture's intensity stretched so that its robust range over the surface (the
 // enhance-percentile-th and (100 - it)-th percentiles, smoothed over enhance-smoothing

@@ -1,4 +1,4 @@
-// flowsurf — dye on the surface [issue 20]: concentration kept in object space on the narrow
+// flowsurf — dye on the surface [doc/algorithms.md §10]: concentration kept in object space on the narrow
 // band of dye_band.h, advected on the GPU by the surface's tangential velocity and shown by
 // every method's overlay at the visible surface point of each pixel (so it survives camera
 // motion, zoom and occlusion). Method-independent: session::Playback owns one and steps it

@@ -1,4 +1,4 @@
-// flowsurf — the dye's band over the pieces of a parallel render [issue 27 item 5]. Under
+// flowsurf — the dye's band over the pieces of a parallel render [docs/parallel.md]. Under
 // MPI (ParaView's engine) each process holds a piece of the surface, and dye must cross the
 // pieces' seams. Each process builds the band of its own piece on the grid of the whole
 // surface's bounds (dye_band.h), and all exchange their candidates: at every cell the

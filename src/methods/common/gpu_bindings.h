@@ -89,7 +89,7 @@ inline constexpr BindingPoint kVisDeferredId = storageBinding("VIS_DEFERRED_ID_B
 inline constexpr BindingPoint kVisCovering = storageBinding("VIS_COVERING_BINDING", 7);       // triangles on a pixel centre
 // The occlusion step's cells (VisibilityBuffer::dropOccluded; it binds no indirect block).
 inline constexpr BindingPoint kVisOccluder = storageBinding("VIS_OCCLUDER_BINDING", 4);       // per cell: farthest depth (bits)
-// Contrast enhancement [issue 28] (common/contrast_*, percentile_range.*): the histogram
+// Contrast enhancement [doc/contrast.md] (common/contrast_*, percentile_range.*): the histogram
 // (an SSBO apart from the dye and visibility ones) and the stretch pass.
 inline constexpr BindingPoint kHistogram = storageBinding("HISTOGRAM_BINDING", 8);
 inline constexpr BindingPoint kContrastFlow = textureUnit("CONTRAST_FLOW_UNIT", 0);    // F_a or I, channel r

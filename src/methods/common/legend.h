@@ -20,7 +20,7 @@ std::vector<double> niceTicks(double lo, double hi, int count = 5);
 // many), else 1, 2, 5 x 10^k, else niceTicks.
 std::vector<double> logTicks(double lo, double hi, int count = 5);
 
-// What the bar shows [issue 28]: the values at its ends, the scale, and whether the data
+// What the bar shows [docs/cfd.md, colour ranges]: the values at its ends, the scale, and whether the data
 // lies beyond an end, where its values are clamped to the end's colour: an end triangle
 // in that colour then caps the bar, as CFD tools mark out-of-range colours.
 struct LegendScale {
@@ -45,7 +45,7 @@ RgbImage makeLegendImage(const CommonParams& params, glm::vec2 range, const std:
 // pixel coordinates): at the right edge, centred vertically.
 glm::ivec2 legendOrigin(const RgbImage& legend, int width, int height);
 
-// A place for a legend of `size` pixels that covers no surface pixel [issue 28 item 3]:
+// A place for a legend of `size` pixels that covers no surface pixel [docs/cfd.md, colour ranges]:
 // `depth` is the image's window depth (rows bottom to top, 1 = background). `keep` first
 // (a legend stays put while it is free), then the free place nearest the middle of the
 // side with the larger free margin (right or left), on a 4-pixel grid. Null when no place

@@ -15,7 +15,7 @@ namespace flowsurf::methods {
 
 namespace {
 // The variant for these parameters (SCHEME, WITH_* in overlay.glsl).
-// The lightness histogram of contrast enhancement [issue 28] measures the colour before
+// The lightness histogram of contrast enhancement [doc/contrast.md] measures the colour before
 // its stretch, without dye or legend: `lightness` makes that variant.
 gl::Program makeProgram(GlPath path, const CommonParams& params, bool withDye, bool lightness = false) {
     auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
@@ -46,7 +46,7 @@ Overlay::Overlay(const CommonParams& params)
 
 namespace {
 // The legend's sizes, as fractions of the image height it is laid out for: the first that
-// finds a free place is shown [issue 28 item 3].
+// finds a free place is shown [docs/cfd.md, colour ranges].
 constexpr float kLegendScales[] = {1.0f, 0.8f, 0.64f, 0.5f};
 
 gl::Texture2D legendTexture(const RgbImage& img) {
@@ -107,7 +107,7 @@ void Overlay::bindInputs(const gl::Program& prog, const gl::Texture2D& flow, con
                          const gl::Texture2D& shade, const gl::Texture2D& mask) const {
     prog.use();
     // Per variant, some of these are compiled out (location -1: GL ignores the call). A
-    // stretched texture [issue 28] has its range already: no display gain on top.
+    // stretched texture [doc/contrast.md] has its range already: no display gain on top.
     glUniform1f(prog.uniformIfActive("uBeta"), params_.beta);
     glUniform1f(prog.uniformIfActive("uContrast"), enhancesTexture(params_.enhanceContrast) ? 1.0f : params_.contrast);
     glUniform3fv(prog.uniformIfActive("uBackground"), 1, &params_.background.x);

@@ -1,6 +1,6 @@
 // flowsurf — overlay, [L] eq. 10, with texture clipping ([L] Fig. 10), the texture mask
 // (velocity or any scalar), the colour legend and contrast enhancement's lightness stretch
-// [issue 28]. Inputs: F_a or its stretch (R32F), depth, shade (RGBA16F: eye normal, colour
+// [doc/contrast.md]. Inputs: F_a or its stretch (R32F), depth, shade (RGBA16F: eye normal, colour
 // value), mask (R16F). Output: RGBA8. Applied after advection every frame and never fed
 // back. A full-screen fragment pass or a compute pass (CommonParams::glPath): the same image.
 #pragma once
@@ -29,7 +29,7 @@ public:
     void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
                const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
                const DyeView* dye = nullptr, const std::optional<PixelRect>& pixels = std::nullopt) const;
-    // Contrast enhancement of the colour [issue 28]: the histogram of the surface colour's
+    // Contrast enhancement of the colour [doc/contrast.md]: the histogram of the surface colour's
     // lightness with these inputs (apply's), whose smoothed percentiles the next apply
     // stretches to [0, 1]. Nothing unless CommonParams::enhanceContrast includes colour.
     // Cost: a pass as the overlay's without writing the image, a 2 KiB read-back.

@@ -63,7 +63,7 @@ enum class SurfaceRaster { Auto, Gl, Compute };
 // runs every stage on all of it (methods/common/process_group.h; the reference).
 enum class ParallelMode { Tiles, Replicate };
 
-// Where a colour or mask range comes from when none is given as MIN:MAX [issue 28].
+// Where a colour or mask range comes from when none is given as MIN:MAX [docs/cfd.md, colour ranges].
 // Robust: core::robustRange (Tukey's fences on area-weighted quartiles) over all time
 // steps; Data: the minimum and maximum over all time steps.
 enum class RangeMode { Robust, Data };
@@ -71,7 +71,7 @@ enum class RangeMode { Robust, Data };
 // How colour values map onto the colour map: linearly, or by their log10 (positive ranges).
 enum class ColorScale { Linear, Log };
 
-// Contrast enhancement [issue 28 item 2], as ParaView's Surface LIC offers it: which images
+// Contrast enhancement [doc/contrast.md], as ParaView's Surface LIC offers it: which images
 // are stretched between robust percentiles of the surface's pixels each frame
 // (methods/common/contrast_stretch.h). Texture: the flow texture's intensity (F_a or I)
 // before the overlay; Color: the lightness of the surface's colour after it; Both.
@@ -93,7 +93,7 @@ struct CommonParams {
     bool normalize = true;
     core::NoiseParams noise;     // scale s (px), period, profile, seed
     float contrast = 2.5f;       // display gain of F_a about the noise mean (overlay only; 1 when the texture is enhanced)
-    // Contrast enhancement [issue 28]: what is stretched, the percent of surface pixels
+    // Contrast enhancement [doc/contrast.md]: what is stretched, the percent of surface pixels
     // clamped at each end of a stretch (0..25; ParaView's factors 0 / 0.99 ~ 0 and 1), and
     // the frames over which the percentiles are smoothed (exponential, time constant
     // 1..1000 frames; 1: each frame's own), so that an animation does not pulse.

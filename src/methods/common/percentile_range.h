@@ -1,4 +1,4 @@
-// flowsurf — robust ranges of per-pixel values for contrast enhancement [issue 28 item 2]:
+// flowsurf — robust ranges of per-pixel values for contrast enhancement [doc/contrast.md]:
 // a histogram of values in [0, 1] built on the GPU (shaders/common/histogram.glsl: shared
 // memory per work group, then one atomic add per non-zero bin), read back small (kBins
 // counts, 2 KiB), its low and high percentiles, exponentially smoothed over frames so that

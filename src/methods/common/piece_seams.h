@@ -1,4 +1,4 @@
-// flowsurf — the seams of a surface split over processes [issue 27 item 5]. A piece's edge
+// flowsurf — the seams of a surface split over processes [docs/parallel.md]. A piece's edge
 // with one triangle is either a boundary of the surface or a seam of the partition (the
 // neighbouring triangle lies in another process's piece). The IBFVS edge mask [L §IV-E.2]
 // outlines boundaries and silhouettes: a seam is neither, but a silhouette may run along

@@ -383,7 +383,6 @@ void ScreenTiles::reportCost(ProcessGroup& group, float ms, float ownMs) {
     shares_ = tileShares(tileMs, own);
     imbalanced_ = 0;
     splitDue_ = true;
-    ++rebalances_;
 }
 
 void ScreenTiles::pull(ProcessGroup& group, const gl::Texture2D& texture, const std::vector<PixelRect>& madeWith,

@@ -119,7 +119,6 @@ public:
     using Clock = std::chrono::steady_clock;
     static float finishedMs(Clock::time_point start);
     bool splitDue() const { return splitDue_; }
-    int rebalances() const { return rebalances_; }  // how often the costs redid the split
 
     // This process's tile (where its image stages run) and the tile plus guard.
     const PixelRect& tile() const { return tiles_[size_t(rank_)]; }
@@ -161,7 +160,7 @@ private:
     // The last split's cell weights, the measured cost scale per cell, each process's share
     // of them (empty: even), and the balance.
     std::vector<float> weights_, costScale_, shares_;
-    int cellsX_ = 0, imbalanced_ = 0, rebalances_ = 0;
+    int cellsX_ = 0, imbalanced_ = 0;
     bool splitDue_ = false;
     TileTraffic traffic_;
 };

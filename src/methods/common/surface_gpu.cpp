@@ -166,7 +166,7 @@ glm::vec2 RangeAccumulator::colorRange() const {
     }
     const bool robust = robustColor();
     glm::vec2 r = robust ? core::robustRange(color_, log) : colorData_;
-    // Speed keeps its range from before [issue 28]: 0 .. its 98th percentile (robust, auto).
+    // Speed keeps its range from before [doc/contrast.md]: 0 .. its 98th percentile (robust, auto).
     if (p.colorBy.empty() && !log && p.colorRangeMode == RangeMode::Robust) r = glm::vec2(0.0f, speedP98_);
     if (log && !(r.x > 0.0f && r.x <= r.y))
         throw ConfigError("--color-scale log: " + array + " is not positive over " +
@@ -219,10 +219,6 @@ SurfaceStatistics wholeSurfaceStatistics(ProcessGroup& group, const core::Surfac
     const std::vector<float> counts = group.gather(parts);
     for (size_t i = 0; i + 1 < counts.size(); i += 2) st.triangles += (size_t(counts[i]) << 20) + size_t(counts[i + 1]);
     return st;
-}
-
-glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params) {
-    return summarize(statisticsSamples(mesh, fieldName, params), params).colorRange;
 }
 
 std::vector<float> SurfaceGpu::interleave(const core::SurfaceMesh& mesh, const std::string& fieldName,

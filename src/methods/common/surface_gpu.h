@@ -98,7 +98,6 @@ public:
     // on each side; boundary edges repeat the one opposite vertex). Needs withEdges.
     void drawEdgesAdjacency() const;
     bool hasEdges() const { return edgeCount_ + seamCount_ > 0; }
-    GLuint vertexArray() const { return vao_.id(); }
     // The interleaved vertices (surface_vertex in gpu_bindings.h: position, normal,
     // velocity, colour value and mask value, padded to whole RGBA32F texels) and the
     // triangle indices, for passes that pair the geometry with other per-vertex data.
@@ -163,9 +162,6 @@ private:
     std::vector<glm::vec3> positionSamples_;
     uint64_t generation_ = 0;
 };
-
-// The colour range CommonParams asks for on `mesh` alone (RangeAccumulator::colorRange).
-glm::vec2 dataColorRange(const core::SurfaceMesh& mesh, const std::string& fieldName, const CommonParams& params);
 
 // Picks the field to show: `requested` if given (FieldError if absent), else the mesh's
 // defaultField() (the first that is not zero everywhere).

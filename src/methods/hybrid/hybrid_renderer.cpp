@@ -69,7 +69,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     timer_.begin(stageName(Stage::ParticleTracing));
     traceParticles(in, unsteady, tiled, speedRef);
 
-    // (3b) contrast enhancement: I stretched between its robust percentiles [issue 28]
+    // (3b) contrast enhancement: I stretched between its robust percentiles [doc/contrast.md]
     if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
     shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());

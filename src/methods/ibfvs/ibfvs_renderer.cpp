@@ -93,7 +93,7 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
     // (3b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [issue 28]; the advection goes on from F_a itself
+    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
     if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(flow_.texture(current_), depth_);
     shown_ = &contrast_.stretch(flow_.texture(current_), depth_);

@@ -71,7 +71,7 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     advectTexture(in, plan, tiled);
 
     // (4b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [issue 28]; the advection goes on from F_a itself
+    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
     const SurfaceGBuffer& vel = velocityImage_[vi_];
     if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
     if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());

@@ -201,7 +201,7 @@ OptionSpec scalarSpec(std::string name, OptionRole role, std::string help, Ref r
     return s;
 }
 
-// A range option [issue 28]: robust | data | auto | MIN:MAX, kept as a given range (lo > hi
+// A range option [docs/cfd.md, colour ranges]: robust | data | auto | MIN:MAX, kept as a given range (lo > hi
 // when unset), the auto flag (each frame's data range) and the mode of the whole-data range;
 // the panel's rescale buttons.
 template <typename Range, typename Auto, typename Mode>

@@ -75,7 +75,7 @@ struct RenderOptions {
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
     bool foamZeroTime = false;          // --foam-zero-time: 0/ a step also when solved times exist
-    // Dye [issue 20]: sources (--dye, repeatable) and those of --dye-file, each emitting from
+    // Dye [doc/algorithms.md §10]: sources (--dye, repeatable) and those of --dye-file, each emitting from
     // its start frame for --dye-release frames (0: continuously) unless its stop frame says.
     std::vector<methods::DyeSource> dye;
     int dyeRelease = 0;
@@ -143,7 +143,7 @@ struct OptionRole {
 };
 
 // The rescale buttons the viewer's panel offers for a range option (robust | data | auto |
-// MIN:MAX) [issue 28].
+// MIN:MAX) [docs/cfd.md, colour ranges].
 enum class RangeRescale {
     None,         // not a range option
     Data,         // "robust" and "data": the data's bulk or whole range

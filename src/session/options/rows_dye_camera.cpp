@@ -1,4 +1,4 @@
-// flowsurf — the option table's Dye and Camera rows. Dye [issue 20]: changes apply live
+// flowsurf — the option table's Dye and Camera rows. Dye [doc/algorithms.md §10]: changes apply live
 // (session::Playback), effect None; the viewer's panel lists the sources with a widget of its
 // own. Camera: a change gives new cameras from the next frame while the textures and the
 // clock go on; the panel edits the view itself (eye, target, up, fov, ortho).
