@@ -1,7 +1,7 @@
 #include "vtkFlowSurfTopologyFilter.h"
 
 #include "polydata_to_mesh.h"
-#include "skeleton_polydata.h"
+#include "io/skeleton_polydata.h"
 #include "surface_gather.h"
 
 #include "core/errors.h"
@@ -225,7 +225,7 @@ int vtkFlowSurfTopologyFilter::RequestData(
   }
   if (root)
   {
-    output->ShallowCopy(paraview::skeletonPolyData(result));
+    output->ShallowCopy(io::skeletonPolyData(result));
   }
   return 1;
 }

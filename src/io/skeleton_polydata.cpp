@@ -1,4 +1,4 @@
-#include "skeleton_polydata.h"
+#include "io/skeleton_polydata.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -11,7 +11,7 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
-namespace flowsurf::paraview {
+namespace flowsurf::io {
 
 vtkSmartPointer<vtkPolyData> skeletonPolyData(const skeleton::Skeleton& s)
 {
@@ -82,4 +82,4 @@ vtkSmartPointer<vtkPolyData> skeletonPolyData(const skeleton::Skeleton& s)
   return poly;
 }
 
-}  // namespace flowsurf::paraview
+}  // namespace flowsurf::io
