@@ -64,8 +64,9 @@ Skeleton analyze(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& fi
     if (graph.triangles.empty()) throw FieldError(where + ": every triangle is degenerate: no flow topology to find");
     FieldOnGraph on;
     on.scale = params.scale > 0.0f ? params.scale : 3.0f * graph.medianEdge;
-    const std::vector<glm::vec3> raw = tangentialPart(graph, weldValues(graph, field));
-    if (!(percentile99(raw) > 0.0f) && std::all_of(raw.begin(), raw.end(), [](const glm::vec3& v) {
+    std::vector<glm::vec3> raw = tangentialPart(graph, weldValues(graph, field));
+    const float rawSpeed99 = percentile99(raw);
+    if (!(rawSpeed99 > 0.0f) && std::all_of(raw.begin(), raw.end(), [](const glm::vec3& v) {
             return v == glm::vec3(0.0f);
         }))
         throw FieldError(where + ": the field's tangential part is zero everywhere: no flow topology to find");
@@ -73,9 +74,9 @@ Skeleton analyze(const core::SurfaceMesh& mesh, const std::vector<glm::vec3>& fi
     // (1) smoothed over the scale: k umbrella passes reach about sqrt(k) edges
     const float ratio = graph.medianEdge > 0.0f ? on.scale / graph.medianEdge : 0.0f;
     const int passes = int(std::lround(std::min(double(ratio) * double(ratio), 400.0)));
-    on.smoothed = tangentialPart(graph, smoothField(graph, raw, passes));
+    on.smoothed = tangentialPart(graph, smoothField(graph, std::move(raw), passes));
     on.speed99 = percentile99(on.smoothed);
-    if (!(on.speed99 > 0.0f)) on.speed99 = percentile99(raw);
+    if (!(on.speed99 > 0.0f)) on.speed99 = rawSpeed99;
     on.jacobians = vertexJacobians(graph, on.smoothed);
 
     // (2) critical points, (3) separation and attachment lines

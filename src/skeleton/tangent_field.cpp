@@ -30,13 +30,12 @@ glm::mat2 frameChange(const glm::vec3& e1, const glm::vec3& e2, const glm::vec3&
 
 }  // namespace
 
-std::vector<glm::vec3> tangentialPart(const SurfaceGraph& graph, const std::vector<glm::vec3>& field) {
-    std::vector<glm::vec3> out(field.size());
+std::vector<glm::vec3> tangentialPart(const SurfaceGraph& graph, std::vector<glm::vec3> field) {
     for (size_t v = 0; v < field.size(); ++v) {
         const glm::vec3& n = graph.normals[v];
-        out[v] = field[v] - glm::dot(field[v], n) * n;
+        field[v] -= glm::dot(field[v], n) * n;
     }
-    return out;
+    return field;
 }
 
 std::vector<glm::vec3> smoothField(const SurfaceGraph& graph, std::vector<glm::vec3> field, int passes) {
@@ -83,9 +82,6 @@ glm::vec3 fromFrame(const SurfaceGraph& graph, uint32_t v, const glm::vec2& c) {
 std::vector<glm::mat2> vertexJacobians(const SurfaceGraph& graph, const std::vector<glm::vec3>& field) {
     const size_t nv = graph.vertexCount();
     std::vector<glm::mat2> sum(nv, glm::mat2(0.0f));
-    std::vector<float> weight(nv, 0.0f);
-    std::vector<glm::vec3> fu(nv), fv(nv);
-    for (size_t v = 0; v < nv; ++v) tangentFrame(graph.normals[v], fu[v], fv[v]);
     for (const glm::uvec3& t : graph.triangles) {
         const glm::vec3 p0 = graph.positions[t.x], p1 = graph.positions[t.y], p2 = graph.positions[t.z];
         glm::vec3 nt = glm::cross(p1 - p0, p2 - p0);
@@ -111,13 +107,15 @@ std::vector<glm::mat2> vertexJacobians(const SurfaceGraph& graph, const std::vec
         const float area = 0.5f * twiceArea;
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = t[k];
-            const glm::mat2 r = frameChange(e1, e2, fu[v], fv[v]);
+            glm::vec3 fu, fv;  // the vertex frame, made again rather than stored (24 bytes a vertex)
+            tangentFrame(graph.normals[v], fu, fv);
+            const glm::mat2 r = frameChange(e1, e2, fu, fv);
             sum[v] += area * (glm::transpose(r) * j * r);
-            weight[v] += area;
         }
     }
+    // the weights' sum: the adjacent triangles' area, three times the vertex's share
     for (size_t v = 0; v < nv; ++v)
-        if (weight[v] > 0.0f) sum[v] /= weight[v];
+        if (graph.vertexArea[v] > 0.0f) sum[v] /= 3.0f * graph.vertexArea[v];
     return sum;
 }
 
@@ -152,8 +150,8 @@ glm::mat2 meanJacobian(const SurfaceGraph& graph, const std::vector<glm::mat2>& 
 namespace {
 
 std::vector<float> perInputVertex(const SurfaceGraph& graph, const std::vector<float>& welded) {
-    std::vector<float> out(graph.weldOf.size());
-    for (size_t i = 0; i < out.size(); ++i) out[i] = welded[graph.weldOf[i]];
+    std::vector<float> out(graph.inputVertexCount());
+    for (size_t i = 0; i < out.size(); ++i) out[i] = welded[graph.weldedVertex(i)];
     return out;
 }
 

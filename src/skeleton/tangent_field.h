@@ -3,7 +3,8 @@
 // vertex's tangent plane (the area-weighted mean of the piecewise-linear field's constant
 // gradient on the adjacent triangles), and from it the surface divergence and the
 // divergence of the normalised field [Mazzi et al. 2021]. No GL.
-// Cost: O(F) per smoothing pass and for the Jacobians; 16 bytes per vertex.
+// Cost: O(F) per smoothing pass and for the Jacobians; memory: the field twice while it is
+// smoothed, then 20 bytes per vertex for the Jacobians.
 #pragma once
 
 #include "skeleton/surface_graph.h"
@@ -15,7 +16,7 @@
 namespace flowsurf::skeleton {
 
 // Each vertex's vector projected into its tangent plane.
-std::vector<glm::vec3> tangentialPart(const SurfaceGraph& graph, const std::vector<glm::vec3>& field);
+std::vector<glm::vec3> tangentialPart(const SurfaceGraph& graph, std::vector<glm::vec3> field);
 
 // `passes` umbrella-averaging passes: each vertex takes the mean of itself and its
 // neighbours, their vectors turned into its tangent plane with their length kept. k passes

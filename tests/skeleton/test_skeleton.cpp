@@ -185,6 +185,48 @@ TEST(Skeleton, PatchesWithDuplicatedSeamVerticesAreOneSurface) {
     EXPECT_EQ(s.criticalPoints[0].type, PointType::Saddle);
 }
 
+TEST(Skeleton, FlippedAndDegenerateTrianglesGiveTheSameSurface) {
+    // Every other triangle wound the other way, and two zero-area triangles appended: the
+    // same edges, boundary, Euler characteristic and saddle as the clean square.
+    const core::SurfaceMesh clean = square(40);
+    core::SurfaceMesh m = clean;
+    for (size_t i = 0; i < m.triangles.size(); i += 2) std::swap(m.triangles[i].y, m.triangles[i].z);
+    m.triangles.push_back({0, 0, 1});
+    m.triangles.push_back({0, 1, 2});  // three vertices on the bottom edge: a line, no area
+    const skeleton::SurfaceGraph a = skeleton::buildSurfaceGraph(clean), b = skeleton::buildSurfaceGraph(m);
+    EXPECT_EQ(b.triangles.size(), clean.triangles.size());
+    EXPECT_EQ(b.edgeCount, a.edgeCount);
+    EXPECT_EQ(b.boundaryEdges, a.boundaryEdges);
+    EXPECT_EQ(b.boundaryEdges, 4u * 40u);
+    EXPECT_EQ(b.nonManifoldEdges, 0u);
+    EXPECT_EQ(b.eulerCharacteristic(), 1);
+    EXPECT_EQ(b.neighbours, a.neighbours);
+    const auto f = sample(m, [](glm::vec2 p) { return glm::vec2(p.x - 0.11f, -(p.y + 0.07f)); });
+    const skeleton::Skeleton s = run(m, f);
+    ASSERT_EQ(s.criticalPoints.size(), 1u);
+    EXPECT_EQ(s.criticalPoints[0].type, PointType::Saddle);
+    EXPECT_NEAR(s.criticalPoints[0].position.x, 0.11f, 1e-3f);
+}
+
+TEST(Skeleton, AFanOfManyTrianglesAtOneVertexIsCountedOnce) {
+    // A disc of 3000 triangles around one centre vertex: 3000 neighbours there, one part.
+    core::SurfaceMesh m;
+    const int n = 3000;
+    m.positions.push_back({0, 0, 0});
+    m.normals.push_back({0, 0, 1});
+    for (int i = 0; i < n; ++i) {
+        const float a = 6.2831853f * float(i) / float(n);
+        m.positions.push_back({std::cos(a), std::sin(a), 0.0f});
+        m.normals.push_back({0, 0, 1});
+        m.triangles.push_back({0u, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+    }
+    const skeleton::SurfaceGraph g = skeleton::buildSurfaceGraph(m);
+    EXPECT_EQ(g.neighbourStart[1] - g.neighbourStart[0], uint32_t(n));
+    EXPECT_EQ(g.edgeCount, size_t(2 * n));
+    EXPECT_EQ(g.boundaryEdges, size_t(n));
+    EXPECT_EQ(g.eulerCharacteristic(), 1);
+}
+
 namespace {
 
 const skeleton::SkeletonLine* longest(const skeleton::Skeleton& s, skeleton::LineKind kind) {
