@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/camera.h"
-#include "methods/common/params.h"
+#include "params/params.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-// flowsurf — the host transfers that the tiled parallel mode (methods/common/screen_tiles.h)
+// flowsurf — the host transfers that the tiled parallel mode (parallel/screen_tiles.h)
 // adds to a frame, timed alone on this machine's GL driver: reading a per-pixel layer back
 // (glGetTextureSubImage, as distribute/returnValues/pull do) and uploading one
 // (glTextureSubImage2D, as the merge into a tile does). With the frame time of `flowsurf

@@ -6,7 +6,7 @@
 #include "gl/readback.h"
 #include "io/image_writer.h"
 #include "io/text_writer.h"
-#include "methods/common/text.h"
+#include "present/text.h"
 #include "progress.h"
 #include "session/playback.h"
 

@@ -15,7 +15,7 @@
 // ROWS + 1 rows of N: it takes the profiled values of the ROWS + 3 rows around them at 3
 // depths once per x, blurs across z, then y, and slides the x blur along the rows; the y-z
 // part of each hash is taken once per row.
-#include "common/noise.glsl"
+#include "core/noise.glsl"
 layout(local_size_x = GROUP, local_size_y = GROUP, local_size_z = 1) in;
 layout(binding = SOLID_NOISE_IMAGE_UNIT, r32ui) writeonly uniform uimage3D uPacked;  // the RGBA8 texture, as 32-bit words
 uniform uint uFrame;

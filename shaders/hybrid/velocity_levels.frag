@@ -1,5 +1,5 @@
 // w: the depth of the visible layer, as in the steady velocity image
-// (common/surface_gbuffer.frag, methods::layerDepthRow); 0 on the background.
+// (raster/surface_gbuffer.frag, methods::layerDepthRow); 0 on the background.
 in vec3 vVel;
 in float vLayerDepth;
 layout(location = LEVEL_VELOCITY_OUT) out vec4 outVel;

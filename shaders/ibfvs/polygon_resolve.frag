@@ -3,7 +3,7 @@
 // t = T(x_i - v_i dt) per vertex [L eq. 13] interpolated linearly in the window
 // (noperspective, [L §IV-J]), shade and mask perspective-correct, the visibility pass's depth.
 // ADVECT_IN_COMPUTE as in polygon_advection.frag. Background pixels keep the clear.
-#include "common/visibility.glsl"
+#include "raster/visibility.glsl"
 #include "ibfvs/mesh_projection.glsl"
 #include "ibfvs/polygon_advection.glsl"
 uniform mat4 uPrevViewProj;

@@ -6,8 +6,8 @@
 // frames). A grid cell touching an edge vertex counts as edge: interpolating the flag would
 // let half the upstream texture leak across at every edge cell. Then noise injection on
 // the surface only [L eq. 9], in the same pass.
-#include "common/resample.glsl"
-#include "common/noise_injection.glsl"
+#include "image_space/resample.glsl"
+#include "image_space/noise_injection.glsl"
 layout(binding = ISA_PREV_FLOW_UNIT) uniform sampler2D uPrevFlow;  // F_a(k-1), R32F, linear filtering
 layout(binding = ISA_MESH_UNIT) uniform sampler2D uMesh;           // (R+1)^2: texcoord xy, edge flag z; linear
 layout(binding = ISA_SURFACE_DEPTH_UNIT) uniform sampler2D uSurfaceDepth; // velocity image depth, 1 = background

@@ -3,7 +3,7 @@
 #include "api/surface_data.h"
 #include "io/series_reader.h"
 #include "core/errors.h"
-#include "methods/common/surface_gpu.h"
+#include "raster/surface_gpu.h"
 #include "session/options/options.h"
 #include "session/scene_setup.h"
 #include "session/topology_source.h"

@@ -1,6 +1,6 @@
 // flowsurf — deterministic noise G of §1 item 4: a grid of random values of spatial
 // scale s, each cycling in time with a random phase and a periodic profile w.
-// shaders/common/noise.glsl mirrors these functions bit for bit in the hash.
+// shaders/core/noise.glsl mirrors these functions bit for bit in the hash.
 #pragma once
 
 #include <cstdint>

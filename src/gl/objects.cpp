@@ -51,7 +51,7 @@ Buffer::Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags) : size_(byt
     glNamedBufferStorage(id, bytes, data, flags);
     // A store that could not be allocated leaves the buffer empty (GL_OUT_OF_MEMORY): said
     // here, not found later as wrong values (an error on one of several processes is then
-    // every process's, methods/common/agreeing_group.h).
+    // every process's, parallel/agreeing_group.h).
     GLint64 size = 0;
     glGetNamedBufferParameteri64v(id, GL_BUFFER_SIZE, &size);
     if (bytes > 0 && size != bytes) {

@@ -2,7 +2,7 @@
 // of common/ so the shared stages do not depend on the methods built on them.
 #pragma once
 
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 
 #include <memory>
 #include <string>

@@ -8,8 +8,8 @@
 #pragma once
 
 #include "core/camera.h"
-#include "methods/common/frame.h"
-#include "methods/common/surface_gbuffer.h"
+#include "methods/frame.h"
+#include "raster/surface_gbuffer.h"
 #include "quality/frame_metrics.h"
 
 #include <memory>

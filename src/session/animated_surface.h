@@ -4,9 +4,9 @@
 #pragma once
 
 #include "core/step_stream.h"
-#include "methods/common/process_group.h"
-#include "methods/common/surface_gpu.h"
-#include "methods/common/time_levels.h"
+#include "parallel/process_group.h"
+#include "raster/surface_gpu.h"
+#include "raster/time_levels.h"
 #include "session/options/options.h"
 #include "session/prepared_steps.h"
 

@@ -2,7 +2,7 @@
 // the data time per dye step, and one step per frame (methods::DyeField).
 #include "session/dye_injection.h"
 
-#include "methods/common/dye_band.h"
+#include "dye/dye_band.h"
 
 #include <algorithm>
 #include <cmath>
@@ -103,7 +103,7 @@ void DyeInjection::step(const RenderOptions& o, AnimatedSurface& surface, const 
     const core::SurfaceMesh& mesh = surface.meshAtTime(t);
     // The band: made at the first step, again when the geometry changes (the dye with it).
     // Split over processes (ParaView under MPI) each holds a piece and every one the whole
-    // band (methods/common/dye_shared.h): made again when any piece changed.
+    // band (dye/dye_shared.h): made again when any piece changed.
     if (field_ && !sameGeometryEverywhere(field_->sameGeometry(mesh))) {
         field_.reset();
         restart();

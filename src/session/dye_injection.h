@@ -6,7 +6,7 @@
 #pragma once
 
 #include "core/camera.h"
-#include "methods/common/dye.h"
+#include "dye/dye.h"
 #include "session/animated_surface.h"
 #include "session/options/options.h"
 

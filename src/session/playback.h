@@ -15,7 +15,7 @@
 
 #include "core/camera.h"
 #include "core/time_series.h"
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 #include "session/animated_surface.h"
 #include "session/dye_injection.h"
 #include "session/options/options.h"

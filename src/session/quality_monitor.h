@@ -5,7 +5,7 @@
 // Off (N = 0) by default: the probes read back every frame they look at.
 #pragma once
 
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 #include "quality/quality_probe.h"
 
 #include <memory>

@@ -4,7 +4,7 @@
 // series: the nearest step's topology, analysed when the animation first shows it.
 #pragma once
 
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 #include "methods/skeleton_layer/skeleton_layer.h"
 #include "session/topology_source.h"
 

@@ -4,7 +4,7 @@
 
 #include "core/camera.h"
 #include "core/mesh.h"
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 
 #include <cstdint>
 #include <vector>

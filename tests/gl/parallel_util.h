@@ -6,8 +6,8 @@
 #include "core/camera.h"
 #include "core/mesh.h"
 #include "gl/context.h"
-#include "methods/common/process_group.h"
-#include "methods/common/thread_group.h"
+#include "parallel/process_group.h"
+#include "parallel/thread_group.h"
 
 #include <gtest/gtest.h>
 

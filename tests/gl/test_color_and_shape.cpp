@@ -4,7 +4,7 @@
 #include "core/derived_fields.h"
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
-#include "methods/common/legend.h"
+#include "present/legend.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

@@ -4,7 +4,7 @@
 // yellow, ~55 deg, monotonically; lighting and the texture change brightness, not hue).
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
-#include "methods/common/legend.h"
+#include "present/legend.h"
 #include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>

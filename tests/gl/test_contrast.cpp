@@ -7,7 +7,7 @@
 #include "core/builtin_scenes.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
-#include "methods/common/percentile_range.h"
+#include "present/percentile_range.h"
 #include "methods/make_renderer.h"
 #include "quality/quality_probe.h"
 

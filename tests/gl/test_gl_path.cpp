@@ -3,7 +3,7 @@
 // in each colour scheme.
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
-#include "methods/common/gl_path.h"
+#include "gpu/gl_path.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "core/derived_fields.h"
 #include "core/step_stream.h"
 #include "gl_test_util.h"
-#include "methods/common/time_levels.h"
+#include "raster/time_levels.h"
 #include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>

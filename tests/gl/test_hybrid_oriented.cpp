@@ -3,7 +3,7 @@
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
 #include "gl_test_util.h"
-#include "methods/common/surface_gpu.h"
+#include "raster/surface_gpu.h"
 #include "methods/make_renderer.h"
 
 #include <gtest/gtest.h>

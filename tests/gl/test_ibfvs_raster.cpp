@@ -6,8 +6,8 @@
 #include "core/builtin_scenes.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
-#include "methods/common/frame.h"
-#include "methods/common/gpu_bindings.h"
+#include "methods/frame.h"
+#include "gpu/gpu_bindings.h"
 #include "methods/ibfvs/polygon_advection.h"
 #include "raster_tolerance.h"
 

@@ -1,11 +1,11 @@
 // An error on one process inside a parallel frame [docs/parallel.md]: every process reports
 // the same error naming that process, none is left waiting in a collective step, and the
-// next frames render (methods/common/agreeing_group.h).
+// next frames render (parallel/agreeing_group.h).
 #include "core/builtin_scenes.h"
 #include "core/camera.h"
 #include "gl/context.h"
-#include "methods/common/agreeing_group.h"
-#include "methods/common/surface_gpu.h"
+#include "parallel/agreeing_group.h"
+#include "raster/surface_gpu.h"
 #include "methods/make_renderer.h"
 #include "parallel_util.h"
 

@@ -1,4 +1,4 @@
-// Sort-last parallel rendering (methods/common/process_group.h) without MPI: the surface is
+// Sort-last parallel rendering (parallel/process_group.h) without MPI: the surface is
 // cut into pieces, each piece rendered by its own thread with its own GL context, and the
 // threads merge their buffers through an in-process ProcessGroup. The image of every
 // process must equal the one-process image of the whole surface — the property the
@@ -9,9 +9,9 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
-#include "methods/common/process_group.h"
-#include "methods/common/screen_split.h"
-#include "methods/common/screen_tiles.h"
+#include "parallel/process_group.h"
+#include "parallel/screen_split.h"
+#include "parallel/screen_tiles.h"
 #include "methods/make_renderer.h"
 #include "session/options/options.h"
 #include "session/playback.h"

@@ -2,7 +2,7 @@
 // benchmark's columns and every report read them from there), on steady and unsteady data
 // with every optional stage on.
 #include "core/builtin_scenes.h"
-#include "methods/common/stages.h"
+#include "methods/stages.h"
 #include "session/playback.h"
 
 #include <gtest/gtest.h>

@@ -103,7 +103,7 @@ def render(TAG, PARTITIONS, server=None):
     print('FLOWSURF_STARTED', flush=True)  # ParaView rendered; from here a hang is ours
     rep.SetRepresentationType('FlowSurf')
     # Dye released on the front: under tiles each rank advects its piece's part of the band,
-    # with a halo from the others (methods/common/dye_shared.h).
+    # with a halo from the others (dye/dye_shared.h).
     rep.FlowSurfDye = '0,-0.8,0.6:0.06:red;0.6,-0.8,0.1:0.06:yellow'
     rep.FlowSurfEdgeMask = 1  # IBFVS's outlines: every rank draws every piece's, seams none
     camera = view.GetActiveCamera()

@@ -1,7 +1,7 @@
-// The table of binding points and vertex attributes (methods/common/gpu_bindings.h): the
+// The table of binding points and vertex attributes (gpu/gpu_bindings.h): the
 // names the GLSL gets are distinct, and the surface vertex is packed as the buffer texture
 // of the visibility pass reads it.
-#include "methods/common/gpu_bindings.h"
+#include "gpu/gpu_bindings.h"
 
 #include <gtest/gtest.h>
 

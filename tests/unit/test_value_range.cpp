@@ -3,8 +3,8 @@
 // rows, the log scale's refusals and the legend's ticks and end marks.
 #include "core/errors.h"
 #include "core/value_range.h"
-#include "methods/common/legend.h"
-#include "methods/common/surface_gpu.h"
+#include "present/legend.h"
+#include "raster/surface_gpu.h"
 #include "session/options/options.h"
 
 #include <gtest/gtest.h>

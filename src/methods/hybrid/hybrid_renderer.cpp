@@ -1,8 +1,8 @@
 #include "methods/hybrid/hybrid_renderer.h"
 
 #include "core/errors.h"
-#include "methods/common/gl_path.h"
-#include "methods/common/stages.h"
+#include "gpu/gl_path.h"
+#include "methods/stages.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,13 +4,13 @@
 // camera moves and has no inflow at silhouettes.
 #pragma once
 
-#include "methods/common/contrast_stretch.h"
-#include "methods/common/frame.h"
-#include "methods/common/overlay.h"
-#include "methods/common/render_targets.h"
-#include "methods/common/screen_tiles.h"
+#include "present/contrast_stretch.h"
+#include "methods/frame.h"
+#include "present/overlay.h"
+#include "gpu/render_targets.h"
+#include "parallel/screen_tiles.h"
 #include "methods/hybrid/particle_tracing.h"
-#include "methods/common/surface_gbuffer.h"
+#include "raster/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
 

@@ -1,7 +1,7 @@
 #include "methods/hybrid/particle_tracing.h"
 
 #include "core/noise.h"
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 #include "methods/hybrid/solid_noise.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -37,7 +37,7 @@ const gl::Program& ParticleTracing::programFor(bool unsteady, bool lineField) {
         defines_ + (unsteady ? "#define UNSTEADY 1\n" : "") + "#define LINE_FIELD " + (lineField ? "1\n" : "0\n");
     if (compute_) p = program({{GL_COMPUTE_SHADER, "hybrid/particle_tracing.comp"}}, defines);
     else
-        p = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
+        p = program({{GL_VERTEX_SHADER, "gpu/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "hybrid/particle_tracing.frag"}},
                     defines);
     return p;
 }

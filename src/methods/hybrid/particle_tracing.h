@@ -8,10 +8,10 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/params.h"
-#include "methods/common/render_targets.h"
-#include "methods/common/screen_tiles.h"
-#include "methods/common/surface_gbuffer.h"
+#include "params/params.h"
+#include "gpu/render_targets.h"
+#include "parallel/screen_tiles.h"
+#include "raster/surface_gbuffer.h"
 
 #include <string>
 #include <vector>

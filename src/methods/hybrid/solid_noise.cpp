@@ -1,6 +1,6 @@
 #include "methods/hybrid/solid_noise.h"
 
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 namespace flowsurf::methods::hybrid {
 

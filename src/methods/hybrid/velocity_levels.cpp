@@ -1,6 +1,6 @@
 #include "methods/hybrid/velocity_levels.h"
 
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -7,10 +7,10 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/params.h"
-#include "methods/common/surface_gbuffer.h"
-#include "methods/common/surface_gpu.h"
-#include "methods/common/time_levels.h"
+#include "params/params.h"
+#include "raster/surface_gbuffer.h"
+#include "raster/surface_gpu.h"
+#include "raster/time_levels.h"
 
 namespace flowsurf::methods::hybrid {
 

@@ -1,7 +1,7 @@
 #include "methods/ibfvs/edge_mask.h"
 
 #include "core/errors.h"
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -15,8 +15,8 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/process_group.h"
-#include "methods/common/surface_gpu.h"
+#include "parallel/process_group.h"
+#include "raster/surface_gpu.h"
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
 #include "methods/ibfvs/ibfvs_renderer.h"
 
-#include "methods/common/gpu_bindings.h"
-#include "methods/common/stages.h"
+#include "gpu/gpu_bindings.h"
+#include "methods/stages.h"
 
 namespace flowsurf::methods::ibfvs {
 

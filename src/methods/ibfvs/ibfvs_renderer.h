@@ -2,13 +2,13 @@
 // doc/algorithms.md §4]: the orchestrator.
 #pragma once
 
-#include "methods/common/camera_motion.h"
-#include "methods/common/contrast_stretch.h"
-#include "methods/common/frame.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/overlay.h"
-#include "methods/common/render_targets.h"
-#include "methods/common/screen_tiles.h"
+#include "methods/image_space/camera_motion.h"
+#include "present/contrast_stretch.h"
+#include "methods/frame.h"
+#include "methods/image_space/noise_injection.h"
+#include "present/overlay.h"
+#include "gpu/render_targets.h"
+#include "parallel/screen_tiles.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
 

@@ -1,9 +1,9 @@
 #include "methods/ibfvs/polygon_advection.h"
 
-#include "methods/common/gl_path.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/resample.h"
-#include "methods/common/shader_interface.h"
+#include "gpu/gl_path.h"
+#include "methods/image_space/noise_injection.h"
+#include "methods/image_space/resample.h"
+#include "gpu/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -50,7 +50,7 @@ const gl::Program& PolygonAdvection::surfaceProgram(bool visibility, bool deferr
     if (p) return p;
     const std::string defines = defines_ + (deferred ? "#define ADVECT_IN_COMPUTE 1\n" : "");
     if (visibility)
-        p = program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
+        p = program({{GL_VERTEX_SHADER, "gpu/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_resolve.frag"}},
                     defines);
     else
         p = program({{GL_VERTEX_SHADER, "ibfvs/polygon_advection.vert"}, {GL_FRAGMENT_SHADER, "ibfvs/polygon_advection.frag"}},

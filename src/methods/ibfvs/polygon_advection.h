@@ -3,7 +3,7 @@
 // injection [L eq. 9] (shaders/ibfvs/polygon_advection.*): one draw of the surface mesh
 // into the next F_a (R32F), sampling the previous F_a; also writes shade (RGBA16F) and
 // depth. Cost grows with the triangles N, in the static and the dynamic case alike. F_a
-// is resampled bilinearly (as in [L]) or bicubically (shaders/common/resample.glsl).
+// is resampled bilinearly (as in [L]) or bicubically (shaders/image_space/resample.glsl).
 // Compute path (CommonParams::glPath): the draw stays a rasterisation of the surface (any
 // triangles, depth-tested) but only interpolates the texture coordinate (RG32F); a compute
 // pass then resamples and injects per pixel: the same image, the arithmetic off the
@@ -18,13 +18,13 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/gl_path.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/params.h"
-#include "methods/common/render_targets.h"
-#include "methods/common/screen_split.h"
-#include "methods/common/surface_gpu.h"
-#include "methods/common/visibility_buffer.h"
+#include "gpu/gl_path.h"
+#include "methods/image_space/noise_injection.h"
+#include "params/params.h"
+#include "gpu/render_targets.h"
+#include "parallel/screen_split.h"
+#include "raster/surface_gpu.h"
+#include "raster/visibility_buffer.h"
 
 #include <memory>
 #include <string>

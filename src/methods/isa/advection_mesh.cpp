@@ -1,6 +1,6 @@
 #include "methods/isa/advection_mesh.h"
 
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -9,7 +9,7 @@ namespace flowsurf::methods::isa {
 namespace {
 gl::Program makeProgram(GlPath path) {
     if (path == GlPath::Compute) return program({{GL_COMPUTE_SHADER, "isa/advection_mesh.comp"}});
-    return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/advection_mesh.frag"}});
+    return program({{GL_VERTEX_SHADER, "gpu/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/advection_mesh.frag"}});
 }
 }  // namespace
 

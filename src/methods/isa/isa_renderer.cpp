@@ -1,7 +1,7 @@
 #include "methods/isa/isa_renderer.h"
 
-#include "methods/common/gl_path.h"
-#include "methods/common/stages.h"
+#include "gpu/gl_path.h"
+#include "methods/stages.h"
 
 #include <algorithm>
 #include <cmath>

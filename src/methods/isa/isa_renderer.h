@@ -1,16 +1,16 @@
 // flowsurf — ISA, Image Space Advection [L §IV, doc/algorithms.md §3]: the orchestrator.
 #pragma once
 
-#include "methods/common/camera_motion.h"
-#include "methods/common/contrast_stretch.h"
-#include "methods/common/frame.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/overlay.h"
-#include "methods/common/render_targets.h"
+#include "methods/image_space/camera_motion.h"
+#include "present/contrast_stretch.h"
+#include "methods/frame.h"
+#include "methods/image_space/noise_injection.h"
+#include "present/overlay.h"
+#include "gpu/render_targets.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
-#include "methods/common/screen_tiles.h"
-#include "methods/common/surface_gbuffer.h"
+#include "parallel/screen_tiles.h"
+#include "raster/surface_gbuffer.h"
 
 #include <memory>
 #include <optional>

@@ -1,9 +1,9 @@
 #include "methods/isa/texture_advection.h"
 
-#include "methods/common/gl_path.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/resample.h"
-#include "methods/common/shader_interface.h"
+#include "gpu/gl_path.h"
+#include "methods/image_space/noise_injection.h"
+#include "methods/image_space/resample.h"
+#include "gpu/shader_interface.h"
 
 #include <vector>
 
@@ -16,7 +16,7 @@ gl::Program makeProgram(IsaWarp warp, GlPath path, EdgeFill fill, Resample resam
     if (warp == IsaWarp::Pixel && path == GlPath::Compute)
         return program({{GL_COMPUTE_SHADER, "isa/texture_advection.comp"}}, defines);
     if (warp == IsaWarp::Pixel)
-        return program({{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
+        return program({{GL_VERTEX_SHADER, "gpu/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
                        "#define PER_PIXEL 1\n" + defines);
     return program({{GL_VERTEX_SHADER, "isa/texture_advection.vert"}, {GL_FRAGMENT_SHADER, "isa/texture_advection.frag"}},
                    defines);

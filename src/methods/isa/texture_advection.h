@@ -5,16 +5,16 @@
 // with M = R^2 triangles); `Pixel` interpolates the same mesh per pixel with the
 // texture filter (cost grows with pixels only; equal up to bilinear-vs-triangle
 // interpolation inside a cell), the paper's "per-pixel advection" future work.
-// F_a itself is resampled bilinearly (as in [L]) or bicubically (common/resample.glsl).
+// F_a itself is resampled bilinearly (as in [L]) or bicubically (image_space/resample.glsl).
 // The pixel warp runs as a fragment or a compute pass (CommonParams::glPath, the same
 // image); the mesh warp is a rasterisation of the grid and stays one.
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/noise_injection.h"
-#include "methods/common/params.h"
-#include "methods/common/screen_tiles.h"
+#include "methods/image_space/noise_injection.h"
+#include "params/params.h"
+#include "parallel/screen_tiles.h"
 
 namespace flowsurf::methods::isa {
 

@@ -1,6 +1,6 @@
 #include "methods/skeleton_layer/skeleton_layer.h"
 
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 #include <vector>
 

@@ -5,7 +5,7 @@
 #ifndef gl_state_guard_h
 #define gl_state_guard_h
 
-#include "methods/common/gpu_bindings.h"
+#include "gpu/gpu_bindings.h"
 
 #include <epoxy/gl.h>
 

@@ -1,6 +1,6 @@
 #include "mapper_composite.h"
 
-#include "methods/common/shader_interface.h"
+#include "gpu/shader_interface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +28,7 @@ void MapperComposite::draw(const GlStateGuard& guard, int x0, int y0, int w, int
   if (!program)
   {
     program = methods::program(
-      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } },
+      { { GL_VERTEX_SHADER, "gpu/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/composite.frag" } },
       host ? "#define HOST_LOOK 1\n#define MAX_LIGHTS " + std::to_string(kMaxHostLights) + "\n" : std::string());
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, guard.drawFramebuffer());

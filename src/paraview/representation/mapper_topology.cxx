@@ -1,8 +1,8 @@
 #include "mapper_topology.h"
 
 #include "core/errors.h"
-#include "methods/common/gpu_bindings.h"
-#include "methods/common/shader_interface.h"
+#include "gpu/gpu_bindings.h"
+#include "gpu/shader_interface.h"
 
 #include <array>
 
@@ -99,7 +99,7 @@ void MapperTopology::composite(
   if (!program_)
   {
     program_ = methods::program(
-      { { GL_VERTEX_SHADER, "common/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/topology_overlay.frag" } });
+      { { GL_VERTEX_SHADER, "gpu/fullscreen.vert" }, { GL_FRAGMENT_SHADER, "paraview/topology_overlay.frag" } });
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, guard.drawFramebuffer());
   glViewport(x0, y0, w, h);

@@ -14,7 +14,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "methods/common/frame.h"
+#include "methods/frame.h"
 #include "methods/skeleton_layer/skeleton_layer.h"
 #include "session/options/options.h"
 #include "session/topology_source.h"

@@ -2,8 +2,8 @@
 
 #include "clock_ms.h"
 
-#include "methods/common/params.h"
-#include "methods/common/stages.h"
+#include "params/params.h"
+#include "methods/stages.h"
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>

@@ -14,7 +14,7 @@
 
 #include "core/errors.h"
 #include "gl/objects.h"
-#include "methods/common/agreeing_group.h"
+#include "parallel/agreeing_group.h"
 #include "session/options/options.h"
 #include "session/playback.h"
 

@@ -1,4 +1,4 @@
-// flowsurf — the library's ProcessGroup (methods/common/process_group.h) over the MPI
+// flowsurf — the library's ProcessGroup (parallel/process_group.h) over the MPI
 // communicator of ParaView's vtkMPIController (pvbatch / pvserver under mpiexec):
 // element-wise all-reductions (MIN, SUM), all-gathers and point-to-point messages, each
 // MPI's non-blocking call completed by a wait that, where the node has more processes than
@@ -6,7 +6,7 @@
 // core to the processes that share it).
 #pragma once
 
-#include "methods/common/process_group.h"
+#include "parallel/process_group.h"
 
 #include "vtkMPI.h"  // MPI_Comm
 

@@ -3,7 +3,7 @@
 // with start and stop frames).
 #pragma once
 
-#include "methods/common/dye_source.h"
+#include "params/dye_source.h"
 
 #include <optional>
 #include <string>

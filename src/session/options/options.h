@@ -8,8 +8,8 @@
 
 #include "core/camera.h"
 #include "core/errors.h"
-#include "methods/common/dye_source.h"
-#include "methods/common/params.h"
+#include "params/dye_source.h"
+#include "params/params.h"
 #include "skeleton/skeleton.h"
 
 #include <functional>
