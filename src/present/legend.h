@@ -33,11 +33,15 @@ LegendScale legendScale(const CommonParams& params, glm::vec2 range, glm::vec2 d
 // Where value v sits on the bar, 0 (bottom) .. 1 (top).
 double legendPosition(const LegendScale& scale, double v);
 
+// Its two shapes: the bar upright at a side, or lying along the top or bottom (where a wide
+// surface leaves room above or below it and none beside it).
+enum class LegendLayout { Vertical, Horizontal };
+
 // The legend of an image `imageHeight` pixels high; text is white or black, whichever reads
 // on `params.background`. Alpha 0 outside the bar, end triangles, ticks and text. Room for
 // the end triangles is kept whether they are drawn or not (the box does not jump).
 RgbImage makeLegendImage(const CommonParams& params, const LegendScale& scale, const std::string& title,
-                         int imageHeight);
+                         int imageHeight, LegendLayout layout = LegendLayout::Vertical);
 // The same for values `range` with params' scale and no end marks.
 RgbImage makeLegendImage(const CommonParams& params, glm::vec2 range, const std::string& title, int imageHeight);
 
@@ -48,9 +52,10 @@ glm::ivec2 legendOrigin(const RgbImage& legend, int width, int height);
 // A place for a legend of `size` pixels that covers no surface pixel [docs/cfd.md, colour ranges]:
 // `depth` is the image's window depth (rows bottom to top, 1 = background). `keep` first
 // (a legend stays put while it is free), then the free place nearest the middle of the
-// side with the larger free margin (right or left), on a 4-pixel grid. Null when no place
-// is free.
+// side with the larger free margin (right or left for a vertical legend, top or bottom for a
+// horizontal one), on a 4-pixel grid. Null when no place is free.
 std::optional<glm::ivec2> freeLegendOrigin(const std::vector<float>& depth, int width, int height, glm::ivec2 size,
-                                           std::optional<glm::ivec2> keep = std::nullopt);
+                                           std::optional<glm::ivec2> keep = std::nullopt,
+                                           LegendLayout layout = LegendLayout::Vertical);
 
 }  // namespace flowsurf::methods

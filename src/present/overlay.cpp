@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <optional>
 
@@ -45,9 +46,13 @@ Overlay::Overlay(const CommonParams& params)
 }
 
 namespace {
-// The legend's sizes, as fractions of the image height it is laid out for: the first that
-// finds a free place is shown [docs/cfd.md, colour ranges].
+// The legend's sizes, as fractions of the image height it is laid out for, upright at a side
+// and then lying along the top or bottom: the first that finds a free place is shown
+// [docs/cfd.md, colour ranges]; none is drawn over the surface.
 constexpr float kLegendScales[] = {1.0f, 0.8f, 0.64f, 0.5f};
+constexpr LegendLayout kLegendLayouts[] = {LegendLayout::Vertical, LegendLayout::Horizontal};
+constexpr size_t kLegendTries = std::size(kLegendScales) * std::size(kLegendLayouts);
+constexpr glm::ivec2 kNowhere{-(1 << 24)};  // an origin that puts every legend pixel outside the image
 
 gl::Texture2D legendTexture(const RgbImage& img) {
     // GL rows run bottom to top.
@@ -69,15 +74,16 @@ void Overlay::updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth
     if (legendSizes_.empty() || scale.range != legendScale_.range || scale.below != legendScale_.below ||
         scale.above != legendScale_.above || title != legendTitle_) {
         legendSizes_.clear();
-        legendSizes_.resize(std::size(kLegendScales));
+        legendSizes_.resize(kLegendTries);
         legendScale_ = scale;
         legendTitle_ = title;
     }
     auto sized = [&](size_t i) -> LegendSize& {
         LegendSize& l = legendSizes_[i];
         if (!l.texture.id()) {
-            l.imageHeight = std::max(1, int(std::lround(float(height) * kLegendScales[i])));
-            const RgbImage img = makeLegendImage(params_, legendScale_, legendTitle_, l.imageHeight);
+            l.imageHeight = std::max(1, int(std::lround(float(height) * kLegendScales[i % std::size(kLegendScales)])));
+            l.layout = kLegendLayouts[i / std::size(kLegendScales)];
+            const RgbImage img = makeLegendImage(params_, legendScale_, legendTitle_, l.imageHeight, l.layout);
             l.size = {img.width, img.height};
             l.texture = legendTexture(img);
         }
@@ -89,18 +95,24 @@ void Overlay::updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth
     for (size_t i = 0; i < legendSizes_.size(); ++i) {
         const bool placed = legendPlaced_ && i == legendShown_;
         const std::optional<glm::ivec2> keep = placed ? std::optional(legendOrigin_) : std::nullopt;
-        if (auto at = freeLegendOrigin(z, width, height, sized(i).size, keep)) {
+        const LegendSize& l = sized(i);
+        if (auto at = freeLegendOrigin(z, width, height, l.size, keep, l.layout)) {
             legendShown_ = i;
             legendOrigin_ = *at;
             legendPlaced_ = true;
             return;
         }
     }
+    // (3) nowhere free: no legend this frame, and the user told once
     legendPlaced_ = false;
-    // (3) nowhere free: the smallest at the usual place
-    legendShown_ = legendSizes_.size() - 1;
-    const glm::ivec2 s = sized(legendShown_).size;
-    legendOrigin_ = {std::max(0, width - s.x - 8), std::max(0, (height - s.y) / 2)};
+    legendOrigin_ = kNowhere;
+    if (!legendWarned_)
+        std::fprintf(stderr,
+                     "flowsurf: warning: the colour legend finds no place in the %dx%d image that leaves the "
+                     "surface uncovered, so it is left out where that happens; a larger --size or a camera "
+                     "that leaves some background makes room\n",
+                     width, height);
+    legendWarned_ = true;
 }
 
 void Overlay::bindInputs(const gl::Program& prog, const gl::Texture2D& flow, const gl::Texture2D& depth,

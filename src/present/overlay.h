@@ -56,6 +56,7 @@ private:
     // The legend at each size tried (full, then smaller), rasterised when first needed.
     struct LegendSize {
         int imageHeight = 0;  // the image height makeLegendImage sizes it for
+        LegendLayout layout = LegendLayout::Vertical;
         glm::ivec2 size{0};
         gl::Texture2D texture;
     };
@@ -63,6 +64,7 @@ private:
     mutable size_t legendShown_ = 0;    // index into legendSizes_
     mutable glm::ivec2 legendOrigin_{0};
     mutable bool legendPlaced_ = false;  // legendOrigin_ is a free place found earlier
+    mutable bool legendWarned_ = false;  // told that no place was free
     mutable LegendScale legendScale_;
     mutable std::string legendTitle_;
 };

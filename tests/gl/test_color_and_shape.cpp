@@ -58,15 +58,16 @@ TEST(ColorBy, GrayLevelFollowsTheScalar) {
     EXPECT_GE(c, 0.98);
 }
 
-// The legend changes only the pixels of its box, and many of them.
+// The legend changes only the pixels of its box at the usual place (free: the sphere leaves
+// room beside it), and many of them.
 TEST(Legend, DrawnInItsBoxOnly) {
     methods::MethodParams p;
     p.common.colorBy = "height";
     const core::Viewport vp{256, 192};
     const core::SurfaceMesh mesh = sphereWithHeight();
-    test::Rendered plain = render(mesh, "velocity", p, vp, test::orthoFront(2.2f), 3);
+    test::Rendered plain = render(mesh, "velocity", p, vp, test::orthoFront(3.6f), 3);
     p.common.legend = true;
-    test::Rendered legend = render(mesh, "velocity", p, vp, test::orthoFront(2.2f), 3);
+    test::Rendered legend = render(mesh, "velocity", p, vp, test::orthoFront(3.6f), 3);
     const methods::RgbImage img = methods::makeLegendImage(p.common, {-1.0f, 1.0f}, "height", vp.height);
     const glm::ivec2 o = methods::legendOrigin(img, vp.width, vp.height);  // GL: bottom-left
     size_t inside = 0, outside = 0;

@@ -119,14 +119,19 @@ TEST(ColorRange, FourDecadesOnALogScale) {
 // The legend never covers the surface [docs/cfd.md, colour ranges], at 420x315: the pixels it changes
 // are background pixels only, and there are many of them. The sphere at the centre (the
 // usual place at the right edge is free), shifted right (the legend moves to the left
-// margin), and filling the height with room only at the sides (the legend shrinks).
+// margin), filling the height with room only at the sides (the legend shrinks), wider than
+// the image with room only above and below (the legend lies along the bottom), and filling
+// the whole image (no legend at all).
 TEST(LegendPlacement, NeverCoversTheSurfaceAt420x315) {
-    const core::SurfaceMesh mesh = sphereWith(0.0, false);
     methods::MethodParams p = test::testParams();
     p.common.colorBy = std::string("s");  // not = "s": GCC 12 -O2 gives a false -Wrestrict
     const core::Viewport vp{420, 315};
-    struct View { const char* name; float shiftX, height; };
-    for (const View v : {View{"centred", 0.0f, 2.3f}, View{"shifted right", -0.9f, 2.3f}, View{"filling", -0.35f, 2.02f}}) {
+    struct View { const char* name; float shiftX, height, stretchX; bool room; };
+    for (const View v : {View{"centred", 0.0f, 2.3f, 1.0f, true}, View{"shifted right", -0.9f, 2.3f, 1.0f, true},
+                         View{"filling", -0.35f, 2.02f, 1.0f, true}, View{"wide", 0.0f, 3.2f, 2.2f, true},
+                         View{"filling all", 0.0f, 1.0f, 1.0f, false}}) {
+        core::SurfaceMesh mesh = sphereWith(0.0, false);
+        for (glm::vec3& q : mesh.positions) q.x *= v.stretchX;
         core::Camera cam = test::orthoFront(v.height);
         cam.eye.x = cam.target.x = v.shiftX;  // the sphere appears right of the centre
         auto render = [&](bool legend) {
@@ -157,6 +162,13 @@ TEST(LegendPlacement, NeverCoversTheSurfaceAt420x315) {
         std::printf("%s: surface x %d..%d; legend changed %zu background px (x %d..%d), %zu surface px\n", v.name,
                     sMin, sMax, off, minX, maxX, onSurface);
         EXPECT_EQ(onSurface, 0u) << v.name;
-        EXPECT_GT(off, 300u) << v.name;
+        if (v.room) {
+            EXPECT_GT(off, 300u) << v.name;
+        } else {
+            EXPECT_EQ(off, 0u) << v.name;
+        }
+        if (std::string(v.name) == "wide") {
+            EXPECT_GT(maxX - minX, 150) << "a horizontal legend";
+        }
     }
 }
