@@ -5,11 +5,11 @@
 #include "core/builtin_scenes.h"
 #include "core/time_series.h"
 #include "gl/context.h"
-#include "parallel/agreeing_group.h"
 #include "gpu/gl_path.h"
-#include "methods/stages.h"
-#include "parallel/thread_group.h"
 #include "methods/make_renderer.h"
+#include "methods/stages.h"
+#include "parallel/agreeing_group.h"
+#include "parallel/thread_group.h"
 #include "session/playback.h"
 
 #include <epoxy/gl.h>

@@ -1,8 +1,8 @@
 #include <flowsurf/surface.h>
 
 #include "api/surface_data.h"
-#include "io/series_reader.h"
 #include "core/errors.h"
+#include "io/series_reader.h"
 #include "raster/surface_gpu.h"
 #include "session/options/options.h"
 #include "session/scene_setup.h"

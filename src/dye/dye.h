@@ -11,23 +11,16 @@
 
 #include "core/camera.h"
 #include "core/mesh.h"
-#include "gl/objects.h"
 #include "dye/dye_band.h"
 #include "dye/dye_shared.h"
+#include "gl/objects.h"
+#include "gpu/shader_limits.h"
 
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace flowsurf::methods {
-
-// Work group of the band passes (DYE_GROUP; their binding points are in gpu_bindings.h).
-inline constexpr int kDyeGroup = 256;
-// Concentration (and premultiplied channel) below which a voxel's dye is cleared
-// (DYE_VISIBLE): a quarter of an 8-bit gray level, never shown. A brick whose voxels all
-// lie below it holds no dye: the step's flag (which bricks to advect next) and what the
-// processes of a divided band send each other (dye_shared.h) rest on that.
-inline constexpr float kDyeVisible = 1.0f / 1024.0f;
 
 // A source emitting this frame, on the surface.
 struct DyeEmitter {

@@ -3,7 +3,6 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
@@ -11,25 +10,6 @@
 #include <utility>
 
 namespace flowsurf::methods {
-
-namespace {
-
-// Renderer substring -> the faster path there, first match wins (doc/bench: fragment vs
-// compute per stage). Anything unlisted takes the fragment path, the one every GL 4.5
-// driver has run longest.
-constexpr std::array<std::pair<std::string_view, GlPath>, 2> kAutoRule{{
-    {"NVIDIA", GlPath::Compute},
-    {kLlvmpipe, GlPath::Fragment},
-}};
-
-}  // namespace
-
-GlPath glPathFor(GlPath requested, std::string_view renderer) {
-    if (requested != GlPath::Auto) return requested;
-    for (const auto& [name, path] : kAutoRule)
-        if (renderer.find(name) != std::string_view::npos) return path;
-    return GlPath::Fragment;
-}
 
 std::string_view currentRenderer() {
     const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -56,14 +36,6 @@ RendererInfo currentRendererInfo() {
     }
     info.cores = std::max(cores, 1);
     return info;
-}
-
-bool useComputeRaster(SurfaceRaster requested, const RendererInfo& renderer, size_t triangles, size_t pixels) {
-    if (requested != SurfaceRaster::Auto) return requested == SurfaceRaster::Compute;
-    for (const ComputeRasterRule& rule : kComputeRasterRule)
-        if (renderer.name.find(rule.renderer) != std::string::npos && (rule.maxCores == 0 || renderer.cores <= rule.maxCores))
-            return double(triangles) >= rule.trianglesPerPixel * double(pixels);
-    return false;
 }
 
 bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels) {

@@ -1,18 +1,13 @@
-// flowsurf — which GL stage runs the per-pixel passes (GlPath, params.h): the rule behind
-// `--gl-path auto`, in one place.
+// flowsurf — the rules of params/gl_path_rules.h (`--gl-path auto`, `--surface-raster
+// auto`) applied to the current GL context.
 #pragma once
 
-#include "params/params.h"
+#include "params/gl_path_rules.h"
 
-#include <string>
+#include <cstddef>
 #include <string_view>
 
 namespace flowsurf::methods {
-
-// `requested` unless it is Auto; for Auto, the path measured to be faster on this kind of
-// renderer (GL_RENDERER string): compute on NVIDIA's compute-centric parts, where graphics
-// runs on a small part of the chip; see the table in gl_path.cpp for the others.
-GlPath glPathFor(GlPath requested, std::string_view renderer);
 
 // The current GL context's GL_RENDERER ("" without one).
 std::string_view currentRenderer();
@@ -20,46 +15,10 @@ std::string_view currentRenderer();
 // The same for the current GL context's renderer.
 GlPath resolveGlPath(GlPath requested);
 
-// Mesa's software renderer, as its GL_RENDERER starts ("llvmpipe (LLVM 15.0.6, 256 bits)").
-inline constexpr std::string_view kLlvmpipe = "llvmpipe";
-
-// What the auto rules read about a GL context's renderer, taken once per renderer object.
-// The processes of a parallel group are taken to be alike (one renderer, the same
-// LP_NUM_THREADS: `mpiexec -x LP_NUM_THREADS`), so they decide alike.
-struct RendererInfo {
-    std::string name;  // GL_RENDERER
-    // The CPU cores a software renderer (llvmpipe) rasterises with: LP_NUM_THREADS when set
-    // (at most the machine's CPUs), else the machine's CPUs; 0: a GPU.
-    int cores = 0;
-};
+// What the auto rules read about the current GL context's renderer.
 RendererInfo currentRendererInfo();
 
-// Whether the surface passes rasterise with compute shaders (SurfaceRaster, params.h) for a
-// surface of `triangles` drawn into `pixels`: as requested, or for Auto by the first rule of
-// kComputeRasterRule whose renderer matches (and, for llvmpipe, whose cores do): compute from
-// its triangles per pixel on.
-// llvmpipe transforms, sets up and bins every triangle on one thread, while the visibility
-// buffer spreads the triangles over all cores but pays a resolve per pixel. Crossover (ISA,
-// dynamic frames, doc/bench/surface_raster_llvmpipe.txt), 2 cores: 0.30-0.45 triangles per
-// pixel at 512^2, 0.43-0.57 at 1024^2; 1 core (ParaView's ranks, LP_NUM_THREADS=1 each):
-// nothing to spread, GL faster up to 1.9 triangles per pixel for every method and at 2.9
-// for ISA and the hybrid (1024^2), compute from 3.8 (AMD EPYC). NVIDIA's H100 and
-// H200 run vertex and fragment work on a few graphics-capable units only, compute on all: at
-// 1M triangles the visibility buffer wins from 0.48 triangles per pixel (1080p: hybrid 2.4 ->
-// 1.4 ms, ISA 2.0 -> 1.0), GL at 0.12 (4K) (doc/bench/gpu_hopper.md). Other GPUs rasterise in
-// fixed-function hardware: GL.
-struct ComputeRasterRule {
-    std::string_view renderer;  // GL_RENDERER substring
-    int maxCores;               // the rule holds up to this many cores (RendererInfo::cores); 0: any
-    double trianglesPerPixel;   // compute from this many triangles per pixel
-};
-inline constexpr ComputeRasterRule kComputeRasterRule[] = {
-    {kLlvmpipe, 1, 3.0},
-    {kLlvmpipe, 0, 0.5},
-    {"H100", 0, 0.25},
-    {"H200", 0, 0.25},
-};
-bool useComputeRaster(SurfaceRaster requested, const RendererInfo& renderer, size_t triangles, size_t pixels);
-bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels);  // current context
+// useComputeRaster for the current context's renderer.
+bool useComputeRaster(SurfaceRaster requested, size_t triangles, size_t pixels);
 
 }  // namespace flowsurf::methods

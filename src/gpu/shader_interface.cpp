@@ -1,11 +1,8 @@
 #include "gpu/shader_interface.h"
 
 #include "core/noise.h"
-#include "dye/dye.h"
+#include "gpu/shader_limits.h"
 #include "params/params.h"
-#include "present/percentile_range.h"
-#include "raster/visibility_buffer.h"
-#include "raster/time_levels.h"
 
 #include <cctype>
 #include <cstdio>
@@ -32,7 +29,7 @@ std::string enumDefines(const char* prefix, const EnumNames<E, N>& names) {
 const std::string& shaderInterface() {
     static const std::string defines = [] {
         std::string s = "#define NOISE_MEAN " + std::to_string(core::kNoiseMean) + "\n";
-        s += define("MAX_LEVELS", TimeLevelSource::kMaxLevels);
+        s += define("MAX_LEVELS", kMaxTimeLevels);
         s += enumDefines("NOISE_PROFILE", kNoiseProfileNames);
         s += enumDefines("OVERLAY", kOverlayNames);
         s += enumDefines("KERNEL", kKernelNames);
@@ -42,8 +39,8 @@ const std::string& shaderInterface() {
         s += define("VIS_RASTER_GROUP", kVisRasterGroup);
         s += define("VIS_OCCLUDER_CELL", kVisOccluderCellPx);
         s += define("PIXEL_GROUP", kPixelGroup);
-        s += define("HISTOGRAM_BINS", PercentileRange::kBins);
-        s += define("HISTOGRAM_TILE", PercentileRange::kTilePx);
+        s += define("HISTOGRAM_BINS", kHistogramBins);
+        s += define("HISTOGRAM_TILE", kHistogramTilePx);
         s += define("DYE_GROUP", kDyeGroup);
         char visible[32];
         std::snprintf(visible, sizeof visible, "%.9e", double(kDyeVisible));

@@ -1,7 +1,7 @@
 // flowsurf — the typed interface between C++ and GLSL: every enum value, limit and binding
 // point a shader uses reaches it as a `#define` generated from the C++ definition (the
-// enum name tables of params.h, TimeLevelSource::kMaxLevels, core::kNoiseMean, the table
-// of gpu_bindings.h), so no number is copied by hand. Every program is built by
+// enum name tables of params.h, the sizes of shader_limits.h, core::kNoiseMean, the
+// table of gpu_bindings.h), so no number is copied by hand. Every program is built by
 // `program()`, which prepends these definitions to its own variant defines.
 #pragma once
 

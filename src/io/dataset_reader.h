@@ -12,7 +12,8 @@
 namespace flowsurf::io {
 
 struct ReadOptions {
-    // Keep at most this many time steps resident (0 = all). Streaming comes later.
+    // Read only the first this many time steps (0 = all); every step read stays in the
+    // Dataset. A long series is better opened with openInput, which loads steps on demand.
     size_t maxSteps = 0;
 };
 

@@ -1,6 +1,9 @@
 #include "methods/frame.h"
 
 #include "core/errors.h"
+#include "parallel/process_group.h"
+#include "parallel/screen_split.h"
+#include "raster/surface_gpu.h"
 
 #include <algorithm>
 #include <string>

@@ -4,12 +4,9 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "gl/stage_timer.h"
-#include "dye/dye.h"
+#include "parallel/pixel_rect.h"
+#include "parallel/tile_traffic.h"
 #include "params/params.h"
-#include "parallel/process_group.h"
-#include "parallel/screen_tiles.h"
-#include "raster/surface_gpu.h"
-#include "raster/time_levels.h"
 
 #include <cstdint>
 #include <memory>
@@ -17,6 +14,11 @@
 #include <string>
 
 namespace flowsurf::methods {
+
+class SurfaceGpu;
+struct TimeLevels;
+class ProcessGroup;
+struct DyeView;
 
 struct FrameInput {
     const SurfaceGpu* surface = nullptr;  // the surface at this frame's data time

@@ -1,19 +1,22 @@
 // flowsurf — sort-last parallel rendering: several processes each hold a piece of the
-// surface and render the same view. Before any image-space stage the per-pixel buffers of
-// all pieces are merged by depth — at every pixel the nearest fragment of any process wins
-// — so each process's image-space stages see the whole surface and its image equals the
-// one-process image, streaks running across the partition seams (the screen-space
-// compositing of Loring, Karimabadi & Bethel, "A Screen Space GPGPU Surface LIC Algorithm
-// for Distributed Memory Data Parallel Sort Last Rendering Infrastructures", LBNL 2014,
-// done here over the whole image on every process instead of tiles with guard pixels).
+// surface and render the same view, and together make the one-process image. Each process
+// draws its piece into its per-pixel buffers; before any image-space stage the buffers are
+// merged by depth (at every pixel the nearest fragment of any process wins), so the stages
+// see the whole surface and streaks run across the partition seams. Where the stages run
+// is CommonParams::parallel: `tiles` (screen_tiles.h: each process runs them on its own
+// screen tile plus a guard band, merged there only) or `replicate` (mergeByDepth below: every
+// process merges the whole image and runs every stage on all of it; the reference the tiles
+// are tested against). The screen-space compositing is that of Loring, Karimabadi & Bethel,
+// "A Screen Space GPGPU Surface LIC Algorithm for Distributed Memory Data Parallel Sort Last
+// Rendering Infrastructures", LBNL 2014.
 //
 // ProcessGroup is the message passing a front end provides (the ParaView plugin: ParaView's
-// vtkMultiProcessController over MPI). Every call is collective: all processes of the
-// group make the same calls in the same order with arrays of the same length.
+// vtkMultiProcessController over MPI; tests and `flowsurf bench --ranks`: thread_group.h).
+// Every call is collective: all processes of the group make the same calls in the same order
+// with arrays of the same length.
 //
-// Cost per merge: one readback and upload of the merged textures and three element-wise
-// reductions of W x H x (1 + 1 + channels) values; image-space stages are not divided
-// between processes (each runs them on the whole image).
+// Cost of a replicated merge: one readback and upload of the merged textures and three
+// element-wise reductions of W x H x (1 + 1 + channels) values.
 #pragma once
 
 #include "gl/objects.h"

@@ -36,6 +36,7 @@
 #include "gl/objects.h"
 #include "parallel/process_group.h"
 #include "parallel/screen_split.h"
+#include "parallel/tile_traffic.h"
 
 #include <algorithm>
 #include <chrono>
@@ -66,12 +67,6 @@ struct TileLayer {
     static TileLayer of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill = 0.0f,
                         bool ownBackground = false);
     static TileLayer ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z);
-};
-
-// What the tiles cost this process in the last frame (FLOWSURF_RANK_STATS).
-struct TileTraffic {
-    size_t bytesSent = 0, bytesReceived = 0;
-    size_t tilePixels = 0, coveredPixels = 0, guardPixels = 0;
 };
 
 class ScreenTiles {

@@ -82,7 +82,7 @@ struct CommonParams {
     float alpha = 0.08f;         // noise blend alpha, [L] 0.1..0.2 (streak length ~ stepPx / alpha)
     float beta = 0.55f;          // texture strength beta in eq. 10, 0..1
     // ISA/IBFVS: largest displacement per frame, pixels ([L] dt). 4 with swept noise
-    // (measured, doc/README); the paper's point-sampled noise needs stepPx <= noise scale.
+    // (doc/algorithms.md §2, swept noise); the paper's point-sampled noise needs stepPx <= noise scale.
     float stepPx = 4.0f;
     // Advection speed: vectors faster than this percentile of the surface's speeds are
     // clamped to it (CFD fields span decades; the max would freeze most of the
@@ -155,7 +155,7 @@ struct IsaParams {
     int gridRes = 256;           // R: advection mesh cells per side, 64..1024
     float edgeEpsilon = 0.01f;   // eps of eq. 14: depth range fraction per pixel
     bool edgeBlending = true;    // replace the advected texture at edge advection points
-    EdgeFill edgeFill = EdgeFill::Noise;  // with what ([L]: gray); measured in doc/README
+    EdgeFill edgeFill = EdgeFill::Noise;  // with what ([L]: gray); doc/algorithms.md §3
 };
 
 // IBFVS only, [L §IV-C.2..IV-F.2].

@@ -14,10 +14,10 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "params/params.h"
-#include "present/percentile_range.h"
 #include "parallel/process_group.h"
 #include "parallel/screen_split.h"
+#include "params/params.h"
+#include "present/percentile_range.h"
 
 #include <optional>
 

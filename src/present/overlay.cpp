@@ -1,10 +1,10 @@
 #include "present/overlay.h"
 
 #include "gl/readback.h"
-#include "present/colormap.h"
 #include "gpu/gl_path.h"
-#include "present/legend.h"
 #include "gpu/shader_interface.h"
+#include "present/colormap.h"
+#include "present/legend.h"
 
 #include <algorithm>
 #include <cmath>

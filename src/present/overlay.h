@@ -5,12 +5,12 @@
 // back. A full-screen fragment pass or a compute pass (CommonParams::glPath): the same image.
 #pragma once
 
-#include "gl/objects.h"
 #include "dye/dye.h"
-#include "present/legend.h"
+#include "gl/objects.h"
+#include "parallel/pixel_rect.h"
 #include "params/params.h"
+#include "present/legend.h"
 #include "present/percentile_range.h"
-#include "parallel/screen_tiles.h"
 #include "raster/surface_gpu.h"
 
 #include <optional>

@@ -1,7 +1,7 @@
 #include "present/percentile_range.h"
 
-#include "parallel/process_group.h"
 #include "gpu/shader_interface.h"
+#include "parallel/process_group.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "gpu/shader_limits.h"
 
 #include <glm/glm.hpp>
 
@@ -30,8 +31,8 @@ glm::vec2 smoothRange(const glm::vec2& previous, const glm::vec2& now, float fra
 
 class PercentileRange {
 public:
-    static constexpr int kBins = 512;     // over [0, 1]: a bin is 1/512 of the value range
-    static constexpr int kTilePx = 32;    // pixels per side of a histogram work group's block
+    static constexpr int kBins = kHistogramBins;     // over [0, 1]: a bin is 1/512 of the value range
+    static constexpr int kTilePx = kHistogramTilePx;  // pixels per side of a work group's block
 
     PercentileRange() = default;
     // `percent`: clamped at each end, 0..25; `smoothingFrames` >= 1.

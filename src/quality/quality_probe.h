@@ -9,8 +9,8 @@
 
 #include "core/camera.h"
 #include "methods/frame.h"
-#include "raster/surface_gbuffer.h"
 #include "quality/frame_metrics.h"
+#include "raster/surface_gbuffer.h"
 
 #include <memory>
 

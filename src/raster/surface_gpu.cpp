@@ -2,8 +2,8 @@
 
 #include "core/derived_fields.h"
 #include "core/errors.h"
-#include "parallel/screen_split.h"
 #include "gpu/shader_interface.h"
+#include "parallel/screen_split.h"
 
 #include <algorithm>
 #include <atomic>

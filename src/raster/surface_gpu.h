@@ -5,9 +5,9 @@
 #include "core/mesh.h"
 #include "core/value_range.h"
 #include "gl/objects.h"
-#include "params/params.h"
 #include "parallel/piece_seams.h"
 #include "parallel/process_group.h"
+#include "params/params.h"
 
 #include <span>
 #include <string>

@@ -10,6 +10,7 @@
 
 #include "core/step_stream.h"
 #include "gl/objects.h"
+#include "gpu/shader_limits.h"
 
 #include <map>
 #include <string>
@@ -39,7 +40,7 @@ struct TimeLevels {
 // Builds TimeLevels from a streamed series; owns the GPU copies of the steps' fields.
 class TimeLevelSource {
 public:
-    static constexpr int kMaxLevels = 9;
+    static constexpr int kMaxLevels = kMaxTimeLevels;
     // `stream` must outlive this; `field`: the vector field's name in every step.
     TimeLevelSource(core::StepStream& stream, std::string field);
     // The levels over [t0 - halfSteps tau, t0 + halfSteps tau], clamped to the data's time

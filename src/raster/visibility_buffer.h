@@ -15,6 +15,7 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "gpu/shader_limits.h"
 #include "parallel/process_group.h"
 #include "parallel/screen_split.h"
 #include "raster/surface_gpu.h"
@@ -23,12 +24,6 @@
 #include <glm/vec2.hpp>
 
 namespace flowsurf::methods {
-
-// visibility_raster.comp's work group, in triangles (VIS_RASTER_GROUP; the passes' binding
-// points are in gpu_bindings.h).
-inline constexpr int kVisRasterGroup = 64;
-// The occlusion step's screen cells (VisibilityBuffer::dropOccluded), in pixels a side.
-inline constexpr int kVisOccluderCellPx = 8;
 
 // Work groups for `groups` groups of one dimension when a dispatch may have at most `maxX`
 // along x (GL guarantees 65,535): (x, y) with x * y >= groups and x <= maxX, the fewest

@@ -1,6 +1,7 @@
 #include "gl_test_util.h"
 
 #include "../common/autocorrelation.h"
+#include "raster/surface_gpu.h"
 
 #include "gl/readback.h"
 #include "methods/make_renderer.h"

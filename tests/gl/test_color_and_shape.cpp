@@ -5,6 +5,7 @@
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
 #include "present/legend.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

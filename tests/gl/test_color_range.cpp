@@ -4,8 +4,9 @@
 // yellow, ~55 deg, monotonically; lighting and the texture change brightness, not hue).
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
-#include "present/legend.h"
 #include "methods/make_renderer.h"
+#include "present/legend.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 

@@ -7,9 +7,10 @@
 #include "core/builtin_scenes.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
-#include "present/percentile_range.h"
 #include "methods/make_renderer.h"
+#include "present/percentile_range.h"
 #include "quality/quality_probe.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 // streakline along the rotation circle, and never shows off the surface; for every method,
 // both GL paths and an orbiting camera.
 #include "core/builtin_scenes.h"
+#include "dye/dye.h"
 #include "gl/readback.h"
 #include "session/playback.h"
 

@@ -4,6 +4,7 @@
 #include "gl_test_util.h"
 #include "methods/hybrid/hybrid_renderer.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

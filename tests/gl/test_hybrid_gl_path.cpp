@@ -6,8 +6,9 @@
 #include "core/derived_fields.h"
 #include "core/step_stream.h"
 #include "gl_test_util.h"
-#include "raster/time_levels.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
+#include "raster/time_levels.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

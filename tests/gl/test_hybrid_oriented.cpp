@@ -3,8 +3,8 @@
 #include "core/builtin_scenes.h"
 #include "core/errors.h"
 #include "gl_test_util.h"
-#include "raster/surface_gpu.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,10 @@
 #include "core/builtin_scenes.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
-#include "methods/frame.h"
 #include "gpu/gpu_bindings.h"
+#include "methods/frame.h"
 #include "methods/ibfvs/polygon_advection.h"
+#include "raster/surface_gpu.h"
 #include "raster_tolerance.h"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 #include "gl/readback.h"
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 #include "core/builtin_scenes.h"
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

@@ -4,10 +4,11 @@
 #include "core/builtin_scenes.h"
 #include "core/camera.h"
 #include "gl/context.h"
-#include "parallel/agreeing_group.h"
-#include "raster/surface_gpu.h"
 #include "methods/make_renderer.h"
+#include "parallel/agreeing_group.h"
+#include "parallel/thread_group.h"
 #include "parallel_util.h"
+#include "raster/surface_gpu.h"
 
 #include <gtest/gtest.h>
 

@@ -9,13 +9,15 @@
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
+#include "methods/make_renderer.h"
 #include "parallel/process_group.h"
 #include "parallel/screen_split.h"
 #include "parallel/screen_tiles.h"
-#include "methods/make_renderer.h"
+#include "parallel/thread_group.h"
+#include "parallel_util.h"
+#include "raster/surface_gpu.h"
 #include "session/options/options.h"
 #include "session/playback.h"
-#include "parallel_util.h"
 
 #include <gtest/gtest.h>
 

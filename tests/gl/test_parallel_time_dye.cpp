@@ -5,6 +5,7 @@
 #include "core/time_series.h"
 #include "gl/readback.h"
 #include "gl_test_util.h"
+#include "parallel/process_group.h"
 #include "parallel_util.h"
 #include "session/options/options.h"
 #include "session/playback.h"

@@ -7,6 +7,7 @@
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
 #include "quality/quality_probe.h"
+#include "raster/surface_gpu.h"
 #include "session/playback.h"
 
 #include <gtest/gtest.h>

@@ -6,11 +6,12 @@
 #include "gl/readback.h"
 #include "gl_test_util.h"
 #include "gpu/gl_path.h"
+#include "methods/make_renderer.h"
+#include "parallel/process_group.h"
+#include "parallel_util.h"
 #include "raster/surface_gbuffer.h"
 #include "raster/surface_gpu.h"
 #include "raster/visibility_buffer.h"
-#include "methods/make_renderer.h"
-#include "parallel_util.h"
 #include "raster_tolerance.h"
 
 #include <gtest/gtest.h>

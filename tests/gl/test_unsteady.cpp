@@ -5,6 +5,8 @@
 #include "gl/readback.h"
 #include "gl_test_util.h"
 #include "methods/make_renderer.h"
+#include "raster/surface_gpu.h"
+#include "raster/time_levels.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

@@ -4,15 +4,15 @@
 // camera moves and has no inflow at silhouettes.
 #pragma once
 
-#include "present/contrast_stretch.h"
-#include "methods/frame.h"
-#include "present/overlay.h"
 #include "gpu/render_targets.h"
-#include "parallel/screen_tiles.h"
+#include "methods/frame.h"
 #include "methods/hybrid/particle_tracing.h"
-#include "raster/surface_gbuffer.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
+#include "parallel/screen_tiles.h"
+#include "present/contrast_stretch.h"
+#include "present/overlay.h"
+#include "raster/surface_gbuffer.h"
 
 #include <memory>
 

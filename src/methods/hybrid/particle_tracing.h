@@ -8,9 +8,9 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "params/params.h"
 #include "gpu/render_targets.h"
 #include "parallel/screen_tiles.h"
+#include "params/params.h"
 #include "raster/surface_gbuffer.h"
 
 #include <string>

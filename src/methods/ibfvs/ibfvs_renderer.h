@@ -2,15 +2,15 @@
 // doc/algorithms.md §4]: the orchestrator.
 #pragma once
 
-#include "methods/image_space/camera_motion.h"
-#include "present/contrast_stretch.h"
-#include "methods/frame.h"
-#include "methods/image_space/noise_injection.h"
-#include "present/overlay.h"
 #include "gpu/render_targets.h"
-#include "parallel/screen_tiles.h"
+#include "methods/frame.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
+#include "methods/image_space/camera_motion.h"
+#include "methods/image_space/noise_injection.h"
+#include "parallel/screen_tiles.h"
+#include "present/contrast_stretch.h"
+#include "present/overlay.h"
 
 #include <memory>
 #include <vector>

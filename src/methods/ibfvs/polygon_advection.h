@@ -19,10 +19,10 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "gpu/gl_path.h"
-#include "methods/image_space/noise_injection.h"
-#include "params/params.h"
 #include "gpu/render_targets.h"
+#include "methods/image_space/noise_injection.h"
 #include "parallel/screen_split.h"
+#include "params/params.h"
 #include "raster/surface_gpu.h"
 #include "raster/visibility_buffer.h"
 

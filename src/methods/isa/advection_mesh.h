@@ -7,8 +7,8 @@
 
 #include "core/camera.h"
 #include "gl/objects.h"
-#include "params/params.h"
 #include "parallel/screen_split.h"
+#include "params/params.h"
 
 #include <optional>
 

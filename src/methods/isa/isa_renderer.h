@@ -1,15 +1,15 @@
 // flowsurf — ISA, Image Space Advection [L §IV, doc/algorithms.md §3]: the orchestrator.
 #pragma once
 
-#include "methods/image_space/camera_motion.h"
-#include "present/contrast_stretch.h"
-#include "methods/frame.h"
-#include "methods/image_space/noise_injection.h"
-#include "present/overlay.h"
 #include "gpu/render_targets.h"
+#include "methods/frame.h"
+#include "methods/image_space/camera_motion.h"
+#include "methods/image_space/noise_injection.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
 #include "parallel/screen_tiles.h"
+#include "present/contrast_stretch.h"
+#include "present/overlay.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>

@@ -1,9 +1,9 @@
 #include "methods/isa/texture_advection.h"
 
 #include "gpu/gl_path.h"
+#include "gpu/shader_interface.h"
 #include "methods/image_space/noise_injection.h"
 #include "methods/image_space/resample.h"
-#include "gpu/shader_interface.h"
 
 #include <vector>
 

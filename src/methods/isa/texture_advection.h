@@ -13,8 +13,8 @@
 #include "core/camera.h"
 #include "gl/objects.h"
 #include "methods/image_space/noise_injection.h"
-#include "params/params.h"
 #include "parallel/screen_tiles.h"
+#include "params/params.h"
 
 namespace flowsurf::methods::isa {
 

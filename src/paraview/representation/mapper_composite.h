@@ -13,8 +13,8 @@
 #include "host_look.h"
 
 #include "gl/objects.h"
-#include "parallel/screen_split.h"
 #include "methods/frame.h"
+#include "parallel/screen_split.h"
 
 #include <glm/glm.hpp>
 

@@ -2,8 +2,10 @@
 
 #include "clock_ms.h"
 
-#include "params/params.h"
+#include "dye/dye.h"
 #include "methods/stages.h"
+#include "parallel/process_group.h"
+#include "params/params.h"
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>

@@ -7,6 +7,7 @@
 // tiles exchanged (methods::TileTraffic).
 #pragma once
 
+#include "parallel/process_group.h"
 #include "session/playback.h"
 #include "vtk_process_group.h"
 

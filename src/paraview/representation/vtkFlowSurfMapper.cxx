@@ -15,6 +15,8 @@
 #include "core/errors.h"
 #include "gl/objects.h"
 #include "parallel/agreeing_group.h"
+#include "parallel/process_group.h"
+#include "raster/surface_gpu.h"
 #include "session/options/options.h"
 #include "session/playback.h"
 

@@ -1,6 +1,7 @@
 #include "vtk_process_group.h"
 
 #include "clock_ms.h"
+#include "parallel/process_group.h"
 
 #include "core/errors.h"
 

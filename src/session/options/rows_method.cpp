@@ -2,7 +2,7 @@
 // each method's stages, where the GPU work runs). Each row declares its role: a change
 // rebuilds the renderers; every front end takes them, the viewer's panel as widgets made from
 // their kinds (the method as buttons of its own).
-#include "gpu/gl_path.h"
+#include "params/gl_path_rules.h"
 #include "session/options/option_rows.h"
 
 namespace flowsurf::session::rows {

@@ -1,0 +1,2 @@
+#pragma once
+#include "fixture_low/low.h"

@@ -1,0 +1,2 @@
+#pragma once
+#include "fixture_high/high.h"  // up: what the test must catch
