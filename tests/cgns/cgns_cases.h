@@ -1,0 +1,45 @@
+// Small CGNS cases written with Debian's libcgns, each with the surface flowsurf should
+// read from it written beside it as a VTK legacy file built from the same points and
+// formulas (no CGNS or VTK reader involved), so a test can compare the two readings.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace flowsurf::testing_cgns {
+
+enum class Backend { Hdf5, Adf };
+
+// A hexahedral box [0,2]x[0,1]x[0,1] (4x2x2 cells) as one unstructured zone, with
+// quadrilateral boundary sections and one BC per side: inlet (BCInflow), outlet (BCOutflow),
+// floor (BCWall), roof (FamilySpecified, family "Walls" whose BC is BCWallViscous) and the
+// two sides (BCSymmetryPlane). Solutions: Velocity and Pressure at the vertices,
+// Temperature at the cell centres. Expected surface (`expectedVtk`): floor + roof, with
+// Velocity, Pressure and Temperature (each wall face's cell's value, as cell data).
+void writeUnstructuredBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
+// The same box's mesh with three time steps (BaseIterativeData t = 0, 0.5, 1 and
+// ZoneIterativeData's FlowSolutionPointers): the velocity turns with time. `expectedVtk`:
+// a printf pattern ("%d": step) for the wall surface of each step.
+void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern = {});
+
+// Two bases of structured (curvilinear) zones, three zones in all, with a BCWall on each
+// zone's j = 1 face and a BCFarfield on its j = max face; Velocity at the vertices.
+// Expected surface: the three j = 1 faces.
+void writeStructuredBlocks(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
+// A volume without any BC: the expected surface is the box's whole boundary (6 sides).
+void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
+// Hostile variants of a file written by writeUnstructuredBox, damaged in place through
+// libcgns's node layer: `node` ("/Base/Fluid" the zone's sizes, "/Base/Fluid/floor/ElementRange"
+// a section's range, "/Base/Fluid/ZoneBC/floor/PointRange" a BC's) overwritten with the
+// two or three 32-bit `values`.
+void overwriteNode(const std::string& path, const std::string& node, const std::vector<int>& values);
+
+// The box with its coordinates a link to `target` (a file name, relative to the box's
+// folder, or absolute) at node `targetNode`: a missing file, a node that is not there, a
+// file outside the folder or the box itself.
+void writeLinkedBox(const std::string& path, Backend backend, const std::string& target, const std::string& targetNode);
+
+}  // namespace flowsurf::testing_cgns
