@@ -137,8 +137,18 @@ int writeBoxZone(int fn, int b, const Box& box, bool withBcs) {
         check(cg_section_write(fn, b, z, patch.name, CGNS_ENUMV(QUAD_4), first, last, 0, quads.data(), &s), patch.name);
         const cgsize_t range[2] = {first, last};
         int bc = 0;
-        check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(PointRange), 2, range, &bc), patch.name);
-        check(cg_boco_gridlocation_write(fn, b, z, bc, CGNS_ENUMV(FaceCenter)), patch.name);
+        if (patch.type == CGNS_ENUMV(BCOutflow)) {
+            // The outlet as the list of its vertices, as some mesh generators write BCs.
+            std::vector<cgsize_t> vertices;
+            for (int k = 0; k <= kNz; ++k)
+                for (int j = 0; j <= kNy; ++j) vertices.push_back(vid(kNx, j, k));
+            check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(PointList), cgsize_t(vertices.size()),
+                                vertices.data(), &bc),
+                  patch.name);
+        } else {
+            check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(PointRange), 2, range, &bc), patch.name);
+            check(cg_boco_gridlocation_write(fn, b, z, bc, CGNS_ENUMV(FaceCenter)), patch.name);
+        }
         if (patch.family) {
             if (!familyWritten) {
                 int f = 0, fbc = 0;
@@ -301,6 +311,7 @@ void writeStructuredBlocks(const std::string& path, Backend backend, const std::
         return Point{x, 0.2 * j + 0.05 * std::sin(kPi * x) * (1.0 - j / double(nj - 1)), 0.25 * k};
     };
     auto flow = [](const Point& p) { return Point{1.0 + p.y, 0.0, 0.5 * std::sin(kPi * p.x)}; };
+    auto density = [](int cell, double x0) { return 1.0 + 0.1 * cell + x0; };
     Surface expected;
     const int fn = openForWriting(path, backend);
     const struct {
@@ -329,7 +340,10 @@ void writeStructuredBlocks(const std::string& path, Backend backend, const std::
                   "cg_coord_write");
         check(cg_sol_write(fn, b, z, "FlowSolution", CGNS_ENUMV(Vertex), &s), "cg_sol_write");
         writeVector(fn, b, z, s, "Velocity", u);
-        (void)f;
+        std::vector<double> rho;
+        for (int c = 0; c < (ni - 1) * (nj - 1) * (nk - 1); ++c) rho.push_back(density(c, zone.x0));
+        check(cg_sol_write(fn, b, z, "CellCentred", CGNS_ENUMV(CellCenter), &s), "cg_sol_write CellCenter");
+        check(cg_field_write(fn, b, z, s, CGNS_ENUMV(RealDouble), "Density", rho.data(), &f), "Density");
         const cgsize_t wall[6] = {1, 1, 1, ni, 1, nk}, far[6] = {1, nj, 1, ni, nj, nk};
         check(cg_boco_write(fn, b, z, "wall", CGNS_ENUMV(BCWall), CGNS_ENUMV(PointRange), 2, wall, &bc), "wall");
         check(cg_boco_write(fn, b, z, "farfield", CGNS_ENUMV(BCFarfield), CGNS_ENUMV(PointRange), 2, far, &bc), "farfield");
@@ -341,9 +355,11 @@ void writeStructuredBlocks(const std::string& path, Backend backend, const std::
                 expected.pointVectors["Velocity"].push_back(flow(p));
             }
         for (int k = 0; k + 1 < nk; ++k)
-            for (int i = 0; i + 1 < ni; ++i)
+            for (int i = 0; i + 1 < ni; ++i) {
                 expected.quads.push_back({first + i + ni * k, first + i + 1 + ni * k, first + i + 1 + ni * (k + 1),
                                           first + i + ni * (k + 1)});
+                expected.cellScalars["Density"].push_back(density(i + (ni - 1) * (nj - 1) * k, zone.x0));  // cell (i, 1, k)
+            }
     }
     check(cg_close(fn), "cg_close");
     if (!expectedVtk.empty()) writeLegacy(expectedVtk, expected);

@@ -11,7 +11,8 @@ namespace flowsurf::testing_cgns {
 enum class Backend { Hdf5, Adf };
 
 // A hexahedral box [0,2]x[0,1]x[0,1] (4x2x2 cells) as one unstructured zone, with
-// quadrilateral boundary sections and one BC per side: inlet (BCInflow), outlet (BCOutflow),
+// quadrilateral boundary sections and one BC per side: inlet (BCInflow), outlet (BCOutflow,
+// given as the list of its vertices; the others as ranges of face elements),
 // floor (BCWall), roof (FamilySpecified, family "Walls" whose BC is BCWallViscous) and the
 // two sides (BCSymmetryPlane). Solutions: Velocity and Pressure at the vertices,
 // Temperature at the cell centres. Expected surface (`expectedVtk`): floor + roof, with
@@ -24,8 +25,8 @@ void writeUnstructuredBox(const std::string& path, Backend backend, const std::s
 void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern = {});
 
 // Two bases of structured (curvilinear) zones, three zones in all, with a BCWall on each
-// zone's j = 1 face and a BCFarfield on its j = max face; Velocity at the vertices.
-// Expected surface: the three j = 1 faces.
+// zone's j = 1 face and a BCFarfield on its j = max face; Velocity at the vertices, Density
+// at the cell centres. Expected surface: the three j = 1 faces (Density of the cells on them).
 void writeStructuredBlocks(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
 // A volume without any BC: the expected surface is the box's whole boundary (6 sides).

@@ -98,6 +98,7 @@ TEST(IoCgns, PatchesPickedByBcNameOrFamily) {
     EXPECT_EQ(firstStep(file, {.patches = "inlet"}).triangleCount(), 8u);        // 4 faces
     EXPECT_EQ(firstStep(file, {.patches = "Walls"}).triangleCount(), 16u);       // the family: roof
     EXPECT_EQ(firstStep(file, {.patches = "in.*|out.*"}).triangleCount(), 16u);  // both ends
+    EXPECT_EQ(firstStep(file, {.patches = "outlet"}).bounds().lo.x, 2.0f);       // a BC given by its vertices
     try {
         firstStep(file, {.patches = "wing"});
         FAIL() << "no ConfigError";
@@ -142,6 +143,7 @@ TEST(IoCgns, StructuredZonesInSeveralBases) {
     const core::SurfaceMesh m = firstStep(file);
     EXPECT_EQ(m.triangleCount(), 3u * 16u);  // three zones' j = 1 faces, 4 x 2 quadrilaterals each
     expectSameSurface(m, dir.file("blocks.expected.vtk"));
+    ASSERT_NE(m.findScalar("Density"), nullptr);  // cell-centred, from the cells on the wall
     const io::FileInfo info = io::inspectFile(file);
     EXPECT_EQ(info.patches.size(), 6u);
     ASSERT_NE(findPatch(info, "Block3/wall"), nullptr);  // the zone in the second base

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <regex>
 
 namespace flowsurf::io::detail {
@@ -140,9 +141,14 @@ protected:
             const bool cellArrays = volume->GetCellData()->GetNumberOfArrays() > 0;
             for (size_t i : selected_[z]) {
                 const CgnsPatch& patch = zone.patches[i];
-                // Where the wall's cells are known, the cell-centred solution reaches the wall.
-                const std::vector<vtkIdType> cells = cellArrays ? wallCells(volume, patch) : std::vector<vtkIdType>{};
-                add(patchSurface(volume, patch, cells, where), prefix + patch.name);
+                // The cell behind each wall face brings the cell-centred solution to the wall;
+                // found once, as CGNS moves coordinates over time but keeps the connectivity.
+                // (Where a quantity from the near-wall cell, the wall shear stress, would be
+                // computed: `volume`, `patch` and these cells.)
+                std::vector<vtkIdType>& cells = wallCells_[{z, i}];
+                if (cellArrays && cells.empty()) cells = wallCells(volume, patch);
+                static const std::vector<vtkIdType> kNoCells;
+                add(patchSurface(volume, patch, cellArrays ? cells : kNoCells, where), prefix + patch.name);
             }
         }
         step.ShallowCopy(out);
@@ -152,6 +158,7 @@ private:
     std::vector<CgnsZone> zones_;
     std::vector<std::vector<size_t>> selected_;
     bool patchesShown_ = false;
+    std::map<std::pair<size_t, size_t>, std::vector<vtkIdType>> wallCells_;  // (zone, patch) -> wallCells()
 };
 
 }  // namespace
