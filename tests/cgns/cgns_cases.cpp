@@ -111,6 +111,61 @@ Box makeBox() {
 
 double temperature(int cell) { return 300.0 + 2.0 * cell; }
 
+// `mixed`: the hexahedra and all boundary faces in two MIXED sections, floor as an element
+// list and roof as an ElementRange (the older names of face BCs), as polyhedral meshers write.
+int writeMixedBoxZone(int fn, int b, const Box& box) {
+    const cgsize_t cells = kNx * kNy * kNz;
+    cgsize_t size[3] = {cgsize_t(box.points.size()), cells, 0};
+    int z = 0, c = 0, s = 0;
+    check(cg_zone_write(fn, b, "Fluid", size, CGNS_ENUMV(Unstructured), &z), "cg_zone_write");
+    std::vector<double> xyz[3];
+    for (const Point& p : box.points) xyz[0].push_back(p.x), xyz[1].push_back(p.y), xyz[2].push_back(p.z);
+    for (int d = 0; d < 3; ++d)
+        check(cg_coord_write(fn, b, z, CGNS_ENUMV(RealDouble), d == 0 ? "CoordinateX" : d == 1 ? "CoordinateY" : "CoordinateZ",
+                             xyz[d].data(), &c),
+              "cg_coord_write");
+    std::vector<cgsize_t> conn, offsets{0};
+    for (cgsize_t e = 0; e < cells; ++e) {
+        conn.push_back(CGNS_ENUMV(HEXA_8));
+        conn.insert(conn.end(), box.hexa.begin() + 8 * e, box.hexa.begin() + 8 * (e + 1));
+        offsets.push_back(cgsize_t(conn.size()));
+    }
+    check(cg_poly_section_write(fn, b, z, "Cells", CGNS_ENUMV(MIXED), 1, cells, 0, conn.data(), offsets.data(), &s), "Cells");
+    conn.clear();
+    offsets = {0};
+    std::vector<std::vector<cgsize_t>> ids(box.patches.size());
+    cgsize_t next = cells + 1;
+    for (size_t p = 0; p < box.patches.size(); ++p)
+        for (const Face& f : box.patches[p].faces) {
+            conn.push_back(CGNS_ENUMV(QUAD_4));
+            conn.insert(conn.end(), f.v, f.v + 4);
+            offsets.push_back(cgsize_t(conn.size()));
+            ids[p].push_back(next++);
+        }
+    check(cg_poly_section_write(fn, b, z, "Boundary", CGNS_ENUMV(MIXED), cells + 1, next - 1, 0, conn.data(), offsets.data(), &s),
+          "Boundary");
+    int f = 0, fbc = 0;
+    check(cg_family_write(fn, b, "Walls", &f), "cg_family_write");
+    check(cg_fambc_write(fn, b, f, "FamBC", CGNS_ENUMV(BCWallViscous), &fbc), "cg_fambc_write");
+    for (size_t p = 0; p < box.patches.size(); ++p) {
+        const Patch& patch = box.patches[p];
+        const std::string name = patch.name;
+        const cgsize_t range[2] = {ids[p].front(), ids[p].back()};
+        int bc = 0;
+        if (name == "floor")
+            check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(ElementList), cgsize_t(ids[p].size()),
+                                ids[p].data(), &bc),
+                  patch.name);
+        else
+            check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(ElementRange), 2, range, &bc), patch.name);
+        if (patch.family) {
+            check(cg_goto(fn, b, "Zone_t", z, "ZoneBC_t", 1, "BC_t", bc, "end"), "cg_goto BC");
+            check(cg_famname_write(patch.family), "cg_famname_write");
+        }
+    }
+    return z;
+}
+
 // The box's zone: coordinates, the hexahedra and (`withBcs`) one face section and BC per patch.
 int writeBoxZone(int fn, int b, const Box& box, bool withBcs) {
     const cgsize_t cells = kNx * kNy * kNz;
@@ -257,6 +312,17 @@ void writeUnstructuredBox(const std::string& path, Backend backend, const std::s
     const int fn = openForWriting(path, backend);
     const int b = writeBase(fn, "Base");
     const int z = writeBoxZone(fn, b, box, true);
+    writeVertexSolution(fn, b, z, box, "FlowSolution", 0.0);
+    writeCellSolution(fn, b, z);
+    check(cg_close(fn), "cg_close");
+    if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {"floor", "roof"}, 0.0, true));
+}
+
+void writeMixedBox(const std::string& path, Backend backend, const std::string& expectedVtk) {
+    const Box box = makeBox();
+    const int fn = openForWriting(path, backend);
+    const int b = writeBase(fn, "Base");
+    const int z = writeMixedBoxZone(fn, b, box);
     writeVertexSolution(fn, b, z, box, "FlowSolution", 0.0);
     writeCellSolution(fn, b, z);
     check(cg_close(fn), "cg_close");

@@ -19,6 +19,10 @@ enum class Backend { Hdf5, Adf };
 // Velocity, Pressure and Temperature (each wall face's cell's value, as cell data).
 void writeUnstructuredBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
+// The same box and solutions with its cells and boundary faces in two MIXED sections, the
+// floor BC as an ElementList and the others as ElementRanges. Expected surface: as above.
+void writeMixedBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
 // The same box's mesh with three time steps (BaseIterativeData t = 0, 0.5, 1 and
 // ZoneIterativeData's FlowSolutionPointers): the velocity turns with time. `expectedVtk`:
 // a printf pattern ("%d": step) for the wall surface of each step.

@@ -91,6 +91,14 @@ TEST(IoCgns, UnstructuredVolumeGivesItsWallsAsTheVtkSurface) {
     }
 }
 
+// The layout of polyhedral meshers: MIXED sections, BCs as element lists and ranges.
+TEST(IoCgns, MixedSectionsAndElementListsGiveTheSameWalls) {
+    ScratchDir dir;
+    const std::string file = dir.file("mixed.cgns");
+    cases::writeMixedBox(file, cases::Backend::Hdf5, dir.file("mixed.expected.vtk"));
+    expectSameSurface(firstStep(file), dir.file("mixed.expected.vtk"));
+}
+
 TEST(IoCgns, PatchesPickedByBcNameOrFamily) {
     ScratchDir dir;
     const std::string file = dir.file("box.cgns");
