@@ -329,6 +329,29 @@ void writeMixedBox(const std::string& path, Backend backend, const std::string& 
     if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {"floor", "roof"}, 0.0, true));
 }
 
+void writeSurfaceZone(const std::string& path, Backend backend, const std::string& expectedVtk) {
+    const Box box = makeBox();
+    const int fn = openForWriting(path, backend);
+    int b = 0, z = 0, c = 0, s = 0;
+    check(cg_base_write(fn, "Surface", 2, 3, &b), "cg_base_write");
+    // The floor's faces over all of the box's points: a surface zone may carry unused points.
+    const Patch& floor = box.patches[2];
+    cgsize_t size[3] = {cgsize_t(box.points.size()), cgsize_t(floor.faces.size()), 0};
+    check(cg_zone_write(fn, b, "Floor", size, CGNS_ENUMV(Unstructured), &z), "cg_zone_write");
+    std::vector<double> xyz[3];
+    for (const Point& p : box.points) xyz[0].push_back(p.x), xyz[1].push_back(p.y), xyz[2].push_back(p.z);
+    for (int d = 0; d < 3; ++d)
+        check(cg_coord_write(fn, b, z, CGNS_ENUMV(RealDouble), d == 0 ? "CoordinateX" : d == 1 ? "CoordinateY" : "CoordinateZ",
+                             xyz[d].data(), &c),
+              "cg_coord_write");
+    std::vector<cgsize_t> quads;
+    for (const Face& f : floor.faces) quads.insert(quads.end(), f.v, f.v + 4);
+    check(cg_section_write(fn, b, z, "Quads", CGNS_ENUMV(QUAD_4), 1, size[1], 0, quads.data(), &s), "cg_section_write");
+    writeVertexSolution(fn, b, z, box, "FlowSolution", 0.0);
+    check(cg_close(fn), "cg_close");
+    if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {"floor"}, 0.0, false));
+}
+
 void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::string& expectedVtk) {
     const Box box = makeBox();
     const int fn = openForWriting(path, backend);

@@ -33,6 +33,10 @@ void writeUnstructuredSeries(const std::string& path, Backend backend, const std
 // at the cell centres. Expected surface: the three j = 1 faces (Density of the cells on them).
 void writeStructuredBlocks(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
+// A surface zone (a base of cell dimension 2): the box's floor as quadrilaterals over all the
+// box's points, Velocity and Pressure at the vertices. Expected surface: the floor.
+void writeSurfaceZone(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
 // A volume without any BC: the expected surface is the box's whole boundary (6 sides).
 void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 

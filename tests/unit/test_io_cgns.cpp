@@ -167,6 +167,13 @@ TEST(IoCgns, VolumeWithoutWallsGivesItsBoundarySurface) {
     EXPECT_NE(io::inspectFile(file).format.find("boundary surface"), std::string::npos);
 }
 
+TEST(IoCgns, SurfaceZoneIsShownWhole) {
+    ScratchDir dir;
+    const std::string file = dir.file("surface.cgns");
+    cases::writeSurfaceZone(file, cases::Backend::Adf, dir.file("surface.expected.vtk"));
+    expectSameSurface(firstStep(file), dir.file("surface.expected.vtk"));
+}
+
 TEST(IoCgns, IterativeDataIsATimeSeriesStreamedStepByStep) {
     ScratchDir dir;
     const std::string file = dir.file("series.cgns");
