@@ -166,6 +166,73 @@ int writeMixedBoxZone(int fn, int b, const Box& box) {
     return z;
 }
 
+// The box as polyhedra: every face once in an NGON_n section (the patches' faces first, so
+// each BC is one element range), the cells as NFACE_n lists of signed face ids (negative:
+// the face seen from its second cell), as Fluent's and STAR-CCM+'s exports are laid out.
+int writePolyhedralBoxZone(int fn, int b, const Box& box) {
+    const cgsize_t cells = kNx * kNy * kNz;
+    cgsize_t size[3] = {cgsize_t(box.points.size()), cells, 0};
+    int z = 0, c = 0, s = 0;
+    check(cg_zone_write(fn, b, "Fluid", size, CGNS_ENUMV(Unstructured), &z), "cg_zone_write");
+    std::vector<double> xyz[3];
+    for (const Point& p : box.points) xyz[0].push_back(p.x), xyz[1].push_back(p.y), xyz[2].push_back(p.z);
+    for (int d = 0; d < 3; ++d)
+        check(cg_coord_write(fn, b, z, CGNS_ENUMV(RealDouble), d == 0 ? "CoordinateX" : d == 1 ? "CoordinateY" : "CoordinateZ",
+                             xyz[d].data(), &c),
+              "cg_coord_write");
+    std::vector<cgsize_t> faces, faceOffsets{0};
+    std::map<std::vector<cgsize_t>, cgsize_t> faceId;  // sorted corners -> 1-based face element id
+    auto addFace = [&](const cgsize_t* v) {
+        std::vector<cgsize_t> key(v, v + 4);
+        std::sort(key.begin(), key.end());
+        auto [it, added] = faceId.try_emplace(key, cgsize_t(faceId.size()) + 1);
+        if (added) {
+            faces.insert(faces.end(), v, v + 4);
+            faceOffsets.push_back(cgsize_t(faces.size()));
+        }
+        return std::pair{it->second, added};
+    };
+    std::vector<std::pair<cgsize_t, cgsize_t>> ranges;
+    for (const Patch& patch : box.patches) {
+        const cgsize_t first = cgsize_t(faceId.size()) + 1;
+        for (const Face& f : patch.faces) addFace(f.v);
+        ranges.emplace_back(first, cgsize_t(faceId.size()));
+    }
+    static const int kHexFaces[6][4] = {{0, 3, 2, 1}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {4, 5, 6, 7}};
+    std::vector<cgsize_t> cellFaces, cellOffsets{0};
+    for (cgsize_t e = 0; e < cells; ++e) {
+        for (const auto& hf : kHexFaces) {
+            const cgsize_t v[4] = {box.hexa[size_t(8 * e + hf[0])], box.hexa[size_t(8 * e + hf[1])],
+                                   box.hexa[size_t(8 * e + hf[2])], box.hexa[size_t(8 * e + hf[3])]};
+            const auto [id, added] = addFace(v);
+            cellFaces.push_back(added ? id : -id);
+        }
+        cellOffsets.push_back(cgsize_t(cellFaces.size()));
+    }
+    const cgsize_t nfaces = cgsize_t(faceId.size());
+    check(cg_poly_section_write(fn, b, z, "Faces", CGNS_ENUMV(NGON_n), 1, nfaces, 0, faces.data(), faceOffsets.data(), &s),
+          "Faces");
+    // Face ids in NFACE_n are the faces' element numbers; the cells come after them.
+    check(cg_poly_section_write(fn, b, z, "Cells", CGNS_ENUMV(NFACE_n), nfaces + 1, nfaces + cells, 0, cellFaces.data(),
+                                cellOffsets.data(), &s),
+          "Cells");
+    int f = 0, fbc = 0;
+    check(cg_family_write(fn, b, "Walls", &f), "cg_family_write");
+    check(cg_fambc_write(fn, b, f, "FamBC", CGNS_ENUMV(BCWallViscous), &fbc), "cg_fambc_write");
+    for (size_t p = 0; p < box.patches.size(); ++p) {
+        const Patch& patch = box.patches[p];
+        const cgsize_t range[2] = {ranges[p].first, ranges[p].second};
+        int bc = 0;
+        check(cg_boco_write(fn, b, z, patch.name, patch.type, CGNS_ENUMV(PointRange), 2, range, &bc), patch.name);
+        check(cg_boco_gridlocation_write(fn, b, z, bc, CGNS_ENUMV(FaceCenter)), patch.name);
+        if (patch.family) {
+            check(cg_goto(fn, b, "Zone_t", z, "ZoneBC_t", 1, "BC_t", bc, "end"), "cg_goto BC");
+            check(cg_famname_write(patch.family), "cg_famname_write");
+        }
+    }
+    return z;
+}
+
 // The box's zone: coordinates, the hexahedra and (`withBcs`) one face section and BC per patch.
 int writeBoxZone(int fn, int b, const Box& box, bool withBcs) {
     const cgsize_t cells = kNx * kNy * kNz;
@@ -350,6 +417,17 @@ void writeSurfaceZone(const std::string& path, Backend backend, const std::strin
     writeVertexSolution(fn, b, z, box, "FlowSolution", 0.0);
     check(cg_close(fn), "cg_close");
     if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {"floor"}, 0.0, false));
+}
+
+void writePolyhedralBox(const std::string& path, Backend backend, const std::string& expectedVtk) {
+    const Box box = makeBox();
+    const int fn = openForWriting(path, backend);
+    const int b = writeBase(fn, "Base");
+    const int z = writePolyhedralBoxZone(fn, b, box);
+    writeVertexSolution(fn, b, z, box, "FlowSolution", 0.0);
+    writeCellSolution(fn, b, z);
+    check(cg_close(fn), "cg_close");
+    if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {"floor", "roof"}, 0.0, true));
 }
 
 void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::string& expectedVtk) {

@@ -23,6 +23,10 @@ void writeUnstructuredBox(const std::string& path, Backend backend, const std::s
 // floor BC as an ElementList and the others as ElementRanges. Expected surface: as above.
 void writeMixedBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
+// The same box and solutions as polyhedra: all faces in an NGON_n section, the cells as
+// NFACE_n, each BC a range of NGON_n faces. Expected surface: as above.
+void writePolyhedralBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
+
 // The same box's mesh with three time steps (BaseIterativeData t = 0, 0.5, 1 and
 // ZoneIterativeData's FlowSolutionPointers): the velocity turns with time. `expectedVtk`:
 // a printf pattern ("%d": step) for the wall surface of each step.

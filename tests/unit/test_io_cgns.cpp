@@ -91,12 +91,16 @@ TEST(IoCgns, UnstructuredVolumeGivesItsWallsAsTheVtkSurface) {
     }
 }
 
-// The layout of polyhedral meshers: MIXED sections, BCs as element lists and ranges.
-TEST(IoCgns, MixedSectionsAndElementListsGiveTheSameWalls) {
+// The layouts of other meshers: MIXED sections with BCs as element lists and ranges, and
+// polyhedra (NGON_n faces, NFACE_n cells) with BCs as ranges of faces.
+TEST(IoCgns, MixedSectionsAndPolyhedraGiveTheSameWalls) {
     ScratchDir dir;
     const std::string file = dir.file("mixed.cgns");
     cases::writeMixedBox(file, cases::Backend::Hdf5, dir.file("mixed.expected.vtk"));
     expectSameSurface(firstStep(file), dir.file("mixed.expected.vtk"));
+    const std::string poly = dir.file("polyhedra.cgns");  // NGON_n faces, NFACE_n cells
+    cases::writePolyhedralBox(poly, cases::Backend::Adf);
+    expectSameSurface(firstStep(poly), dir.file("mixed.expected.vtk"));
 }
 
 TEST(IoCgns, PatchesPickedByBcNameOrFamily) {

@@ -128,7 +128,10 @@ protected:
         for (size_t z = 0; z < zones_.size(); ++z) {
             const CgnsZone& zone = zones_[z];
             vtkDataSet* volume = zoneData(root, zone);
-            if (!volume) continue;  // a zone VTK's reader does not load (no coordinates)
+            if (!volume) {
+                warnOnce(path() + ": zone " + zone.base + "/" + zone.name + ": VTK's CGNS reader gave no data for it; left out");
+                continue;
+            }
             const std::string prefix = zones_.size() > 1 ? zone.name + "/" : "";
             if (zone.cellDim < 3 || !patchesShown_) {
                 add(volume, zones_.size() > 1 ? zone.name : "zone " + zone.name);
