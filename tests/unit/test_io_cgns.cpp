@@ -10,6 +10,7 @@
 #include "io/series_reader.h"
 
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <tuple>
 
@@ -191,6 +192,22 @@ TEST(IoCgns, IterativeDataIsATimeSeriesStreamedStepByStep) {
         std::snprintf(expected, sizeof expected, "series_%zu.vtk", i);
         expectSameSurface(steps->load(i), dir.file(expected));
     }
+}
+
+// FlowSolutionPointers naming a solution the zone lacks: read, and said (VTK's reader would
+// show another solution for that step without a word).
+TEST(IoCgns, SolutionPointerToNothingIsWarned) {
+    ScratchDir dir;
+    const std::string file = dir.file("pointers.cgns");
+    cases::writeUnstructuredSeries(file, cases::Backend::Hdf5);
+    std::vector<int> names(24, 0x20202020);  // 3 names of 32 blanks
+    std::memcpy(names.data() + 8, "Gone", 4);  // the second step's
+    cases::overwriteNode(file, "/Base/Fluid/ZoneIterativeData/FlowSolutionPointers", names);
+    ::testing::internal::CaptureStderr();
+    auto steps = io::openSeries(file);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(steps->count(), 3u);
+    EXPECT_NE(err.find("FlowSolutionPointers names 'Gone' for time step 2"), std::string::npos) << err;
 }
 
 TEST(IoCgns, FileSeriesReadsTheSamePatchesOfEveryFile) {

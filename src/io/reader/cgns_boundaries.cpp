@@ -298,6 +298,47 @@ CgnsPatch readPatch(const CgnsFile& f, int b, int z, int bc, const CgnsZone& zon
     return patch;
 }
 
+// ZoneIterativeData's FlowSolutionPointers name each time step's FlowSolution_t; one that
+// names no solution of the zone (a damaged or hand-edited file) is said, since VTK's reader
+// then shows another solution for that step without a word. "Null" marks a step without one.
+void checkSolutionPointers(const CgnsFile& f, int b, int z, const CgnsZone& zone, const Limits& limits) {
+    char name[33] = {};
+    if (cg_ziter_read(f.fn(), b, z, name) != CG_OK) return;
+    const std::string at = "zone " + zone.base + "/" + zone.name;
+    std::set<std::string> solutions;
+    int nsols = 0;
+    f.check(cg_nsols(f.fn(), b, z, &nsols), at);
+    for (int s = 1; s <= nsols; ++s) {
+        char sol[33] = {};
+        CGNS_ENUMT(GridLocation_t) location;
+        f.check(cg_sol_info(f.fn(), b, z, s, sol, &location), at);
+        solutions.insert(trimmed(sol));
+    }
+    f.check(cg_goto(f.fn(), b, "Zone_t", z, "ZoneIterativeData_t", 1, "end"), at);
+    int narrays = 0;
+    f.check(cg_narrays(&narrays), at + ", ZoneIterativeData");
+    for (int a = 1; a <= narrays; ++a) {
+        char array[33] = {};
+        CGNS_ENUMT(DataType_t) type;
+        int dims = 0;
+        cgsize_t sizes[12] = {};
+        f.check(cg_array_info(a, array, &type, &dims, sizes), at + ", ZoneIterativeData");
+        if (trimmed(array) != "FlowSolutionPointers") continue;
+        if (type != CGNS_ENUMV(Character) || dims != 2 || sizes[0] < 1)
+            f.fail(at, "FlowSolutionPointers is not a list of names");
+        limits.check(f, at + ", FlowSolutionPointers", "characters", (long long)sizes[0] * sizes[1], 1);
+        std::vector<char> text(size_t(sizes[0]) * size_t(sizes[1]));
+        f.check(cg_array_read(a, text.data()), at + ", FlowSolutionPointers");
+        for (cgsize_t step = 0; step < sizes[1]; ++step) {
+            const std::string pointer = trimmed(std::string(text.data() + step * sizes[0], size_t(sizes[0])).c_str());
+            if (pointer != "Null" && !pointer.empty() && !solutions.count(pointer))
+                warnOnce(f.path() + ": " + at + ": FlowSolutionPointers names '" + pointer + "' for time step " +
+                         std::to_string(step + 1) + ", which the zone does not have; VTK's reader shows another "
+                         "solution for that step");
+        }
+    }
+}
+
 }  // namespace
 
 bool isWallType(const std::string& type) { return type.rfind("BCWall", 0) == 0; }
@@ -365,6 +406,7 @@ std::vector<CgnsZone> readCgnsZones(const std::string& path) {
                              "draw (structured: a point range over one face of the block; unstructured: face elements, " +
                              "or vertices that bound faces of a section); left out");
             }
+            checkSolutionPointers(f, b, z, zone, limits);
             zones.push_back(std::move(zone));
         }
     }
