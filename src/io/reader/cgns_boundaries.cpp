@@ -1,5 +1,5 @@
 // Sections: the file · sizes a file can hold · face sections (unstructured) · faces of a
-// BC (unstructured, structured) · readCgnsZones.
+// BC (unstructured, structured) · readCgnsZones (and the time steps' solution pointers).
 #include "io/reader/cgns_boundaries.h"
 
 #include "core/errors.h"
