@@ -41,6 +41,7 @@ void writeVector(int fn, int b, int z, int s, const char* name, const std::vecto
 // --- the box's mesh and fields ---------------------------------------------------------
 constexpr int kNx = 4, kNy = 2, kNz = 2;
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kLift = 0.5;  // a moving series' lift per unit time (z)
 
 struct Point {
     double x, y, z;
@@ -440,7 +441,7 @@ void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::str
     if (!expectedVtk.empty()) writeLegacy(expectedVtk, boxSurface(box, {}, 0.0, false));
 }
 
-void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern) {
+void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern, bool moving) {
     const Box box = makeBox();
     const double times[3] = {0.0, 0.5, 1.0};
     const int fn = openForWriting(path, backend);
@@ -459,10 +460,30 @@ void writeUnstructuredSeries(const std::string& path, Backend backend, const std
     check(cg_goto(fn, b, "BaseIterativeData_t", 1, "end"), "cg_goto BaseIterativeData");
     const cgsize_t steps = 3;
     check(cg_array_write("TimeValues", CGNS_ENUMV(RealDouble), 1, &steps, times), "TimeValues");
+    // A moving mesh: each step's coordinates in a GridCoordinates_t of its own, the box
+    // lifted by kLift * t (the first step keeps the zone's GridCoordinates).
+    char grids[3][32];
+    for (int t = 0; t < 3 && moving; ++t) {
+        std::memset(grids[t], ' ', 32);
+        const std::string name = t == 0 ? "GridCoordinates" : "Grid" + std::to_string(t);
+        std::memcpy(grids[t], name.data(), name.size());
+        if (t == 0) continue;
+        int g = 0;
+        check(cg_grid_write(fn, b, z, name.c_str(), &g), "cg_grid_write");
+        check(cg_goto(fn, b, "Zone_t", z, "GridCoordinates_t", g, "end"), "cg_goto grid");
+        std::vector<double> xyz[3];
+        for (const Point& p : box.points) xyz[0].push_back(p.x), xyz[1].push_back(p.y), xyz[2].push_back(p.z + kLift * times[t]);
+        const cgsize_t n = cgsize_t(box.points.size());
+        for (int d = 0; d < 3; ++d)
+            check(cg_array_write(d == 0 ? "CoordinateX" : d == 1 ? "CoordinateY" : "CoordinateZ", CGNS_ENUMV(RealDouble), 1, &n,
+                                 xyz[d].data()),
+                  "moving coordinates");
+    }
     check(cg_ziter_write(fn, b, z, "ZoneIterativeData"), "cg_ziter_write");
     check(cg_goto(fn, b, "Zone_t", z, "ZoneIterativeData_t", 1, "end"), "cg_goto ZoneIterativeData");
     const cgsize_t dims[2] = {32, 3};
     check(cg_array_write("FlowSolutionPointers", CGNS_ENUMV(Character), 2, dims, pointers), "FlowSolutionPointers");
+    if (moving) check(cg_array_write("GridCoordinatesPointers", CGNS_ENUMV(Character), 2, dims, grids), "GridCoordinatesPointers");
     check(cg_close(fn), "cg_close");
     for (int t = 0; t < 3 && !expectedVtkPattern.empty(); ++t) {
         char file[4096];

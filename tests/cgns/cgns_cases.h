@@ -28,9 +28,11 @@ void writeMixedBox(const std::string& path, Backend backend, const std::string& 
 void writePolyhedralBox(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
 // The same box's mesh with three time steps (BaseIterativeData t = 0, 0.5, 1 and
-// ZoneIterativeData's FlowSolutionPointers): the velocity turns with time. `expectedVtk`:
-// a printf pattern ("%d": step) for the wall surface of each step.
-void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern = {});
+// ZoneIterativeData's FlowSolutionPointers): the velocity turns with time. `moving`: the
+// mesh rises by 0.5 t along z (GridCoordinatesPointers to one GridCoordinates_t per step).
+// `expectedVtk`: a printf pattern ("%d": step) for the wall surface of each step, unmoved.
+void writeUnstructuredSeries(const std::string& path, Backend backend, const std::string& expectedVtkPattern = {},
+                             bool moving = false);
 
 // Two bases of structured (curvilinear) zones, three zones in all, with a BCWall on each
 // zone's j = 1 face and a BCFarfield on its j = max face; Velocity at the vertices, Density

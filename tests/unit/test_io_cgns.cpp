@@ -194,6 +194,18 @@ TEST(IoCgns, IterativeDataIsATimeSeriesStreamedStepByStep) {
     }
 }
 
+// A moving mesh (GridCoordinatesPointers): the walls move with their coordinates.
+TEST(IoCgns, MovingMeshMovesTheWalls) {
+    ScratchDir dir;
+    const std::string file = dir.file("moving.cgns");
+    cases::writeUnstructuredSeries(file, cases::Backend::Adf, {}, true);
+    auto steps = io::openSeries(file);
+    ASSERT_EQ(steps->count(), 3u);
+    EXPECT_FLOAT_EQ(steps->load(0).bounds().lo.z, 0.0f);
+    EXPECT_FLOAT_EQ(steps->load(2).bounds().lo.z, 0.5f);  // lifted by 0.5 t at t = 1
+    EXPECT_FLOAT_EQ(steps->load(1).bounds().hi.z, 1.25f);
+}
+
 // FlowSolutionPointers naming a solution the zone lacks: read, and said (VTK's reader would
 // show another solution for that step without a word).
 TEST(IoCgns, SolutionPointerToNothingIsWarned) {
