@@ -1,6 +1,6 @@
 // The reader process's request path: each input, written as a file of the format its
 // first byte picks (an EnSight geometry file with its case file, legacy .vtk, .vtp, .vtu,
-// Exodus II, STL, PLY, OBJ, .pvd), is read through one ReaderProcess, in the sandboxed
+// Exodus II, STL, PLY, OBJ, .pvd, CGNS), is read through one ReaderProcess, in the sandboxed
 // child (fuzz_reader_child: flowsurf-reader built with ASan + UBSan). Whatever the child
 // does (an error, a crash, a loop or allocation stopped by its limits), the caller gets a
 // surface or a flowsurf::Error naming the file, never a sandbox refusal (reading needs
@@ -22,7 +22,7 @@
 
 namespace {
 
-const char* const kExtensions[] = {".geo", ".vtk", ".vtp", ".vtu", ".e", ".stl", ".ply", ".obj", ".pvd"};
+const char* const kExtensions[] = {".geo", ".vtk", ".vtp", ".vtu", ".e", ".stl", ".ply", ".obj", ".pvd", ".cgns"};
 
 void writeFile(const std::string& path, const uint8_t* data, size_t size) {
     if (FILE* f = std::fopen(path.c_str(), "wb")) {

@@ -61,7 +61,7 @@ seed("fuzz_obj", "bad.obj", "v 0 0\nf 1 2 9\n")
 # kExtensions), the rest is the file. EnSight Gold geometry (the case file names it):
 # ASCII with and without ids, nsided and nfaced blocks, a structured block, C binary in
 # both byte orders.
-EXT = {e: i for i, e in enumerate([".geo", ".vtk", ".vtp", ".vtu", ".e", ".stl", ".ply", ".obj", ".pvd"])}
+EXT = {e: i for i, e in enumerate([".geo", ".vtk", ".vtp", ".vtu", ".e", ".stl", ".ply", ".obj", ".pvd", ".cgns"])}
 
 
 def reader_seed(name, data):
@@ -154,6 +154,15 @@ at 90 screenshot out/a.png
 at 91 resize 640 480
 at 92 quit
 """)
+
+# CGNS (HDF5 and ADF, binary): the files fuzz/cgns/ holds, written with Debian's libcgns by
+# `flowsurf_make_cgns_cases fuzz/cgns --fuzz-seeds` (tests/cgns): valid cases and hostile
+# variants (cut short, a zone, section or BC range of two billion).
+cgns_dir = os.path.join(os.path.dirname(os.path.abspath(__file__)), "cgns")
+for name in sorted(os.listdir(cgns_dir)):
+    if name.endswith(".cgns"):
+        with open(os.path.join(cgns_dir, name), "rb") as f:
+            reader_seed(name, f.read())
 
 # Option values: first byte picks the parser (see fuzz_options.cpp).
 for i, text in enumerate(["640x480", "1, 0, 0.5", "#1c1c21", "0.25", "isa", "on", "12", "1e9", "nan"]):

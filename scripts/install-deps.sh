@@ -5,6 +5,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config              # toolchain
   libvtk9-dev                                   # readers for CFD formats (VTK 9)
+  libcgns-dev                                   # CGNS boundary conditions (VTK's reader does not expose them)
   libseccomp-dev                                # the reader process's system-call filter
   libepoxy-dev libegl-dev libgl-dev             # OpenGL 4.5 function loading, EGL headless
   libegl-mesa0 libgl1-mesa-dri                  # Mesa llvmpipe: GL without a GPU

@@ -57,12 +57,12 @@ int runInfo(const std::string& path, const io::SourceOptions& source) {
         return 0;
     }
     if (io::isSeriesPattern(path)) {
-        std::unique_ptr<core::StepProvider> steps = io::openSeries(path);
+        std::unique_ptr<core::StepProvider> steps = io::openSeries(path, source);
         std::printf("Series       %s\nTime steps   %zu:", path.c_str(), steps->count());
         for (size_t i = 0; i < steps->count(); ++i) std::printf(" %g", steps->time(i));
         std::printf("\nFirst step   %s\n\n", steps->label(0).c_str());
         const std::string first = steps->label(0).substr(0, steps->label(0).find(" (step"));
-        const io::FileInfo info = io::inspectFile(first);
+        const io::FileInfo info = io::inspectFile(first, source);
         std::fputs(io::formatFileInfo(info).c_str(), stdout);
         printDerived(vectorArrays(info));
         return 0;

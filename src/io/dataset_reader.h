@@ -1,7 +1,7 @@
 // flowsurf — reading surfaces with vector fields through VTK 9.
 // Formats: .vtp .vtu .vtk (surface extracted, triangulated, cell data -> point data),
-// .ply .obj .stl (geometry only), OpenFOAM (.foam: boundary patches), Exodus (.e .ex2),
-// EnSight (.case), and a ParaView .pvd collection.
+// .ply .obj .stl (geometry only), OpenFOAM (.foam: boundary patches), CGNS (.cgns: the wall
+// patches of volumes), Exodus (.e .ex2), EnSight (.case), and a ParaView .pvd collection.
 #pragma once
 
 #include "core/mesh.h"
@@ -17,9 +17,10 @@ struct ReadOptions {
     size_t maxSteps = 0;
 };
 
-// How a file made of parts is read (today: OpenFOAM cases).
+// How a file made of parts is read (OpenFOAM cases, CGNS files).
 struct SourceOptions {
-    std::string patches;            // boundary patches to read: a regular expression on the name (empty: all)
+    std::string patches;            // boundary patches to read: a regular expression on the name (CGNS: or the
+                                    // family); empty: OpenFOAM all, CGNS the walls
     std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
     bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
 };
@@ -45,6 +46,14 @@ struct PartInfo {
     size_t faces = 0;
     std::vector<std::string> arrays;
 };
+// A boundary condition of a CGNS volume zone, read or not: what --patches chooses from.
+struct PatchInfo {
+    std::string name;    // the BC's name ("ZONE/BC" when the file has several zones)
+    std::string type;    // its BC type ("BCWall"), its family's when the BC is FamilySpecified
+    std::string family;  // empty when none
+    size_t faces = 0;
+    bool read = false;   // part of the surface read: a wall by default, else --patches' choice
+};
 struct FileInfo {
     std::string path;
     std::string format;            // e.g. "VTK XML PolyData"
@@ -53,6 +62,7 @@ struct FileInfo {
     std::vector<PartInfo> parts;   // more than one only for composite data (patches, blocks)
     std::vector<double> times;     // empty or one entry for a single step
     core::Bounds bounds;
+    std::vector<PatchInfo> patches;  // every boundary condition, where the format has them (CGNS)
 };
 FileInfo inspectFile(const std::string& path, const SourceOptions& options = {});
 std::string formatFileInfo(const FileInfo& info);

@@ -69,7 +69,7 @@ std::string formatFileInfo(const FileInfo& info) {
         // Which array is on which part: an OpenFOAM field may be missing on some patches.
         size_t nameWidth = 4;
         for (const auto& p : info.parts) nameWidth = std::max(nameWidth, p.name.size());
-        s << "Parts        " << info.parts.size() << " (OpenFOAM: boundary patches), faces and arrays of each\n";
+        s << "Parts        " << info.parts.size() << " (boundary patches, blocks or zones), faces and arrays of each\n";
         for (const auto& p : info.parts) {
             s << "  " << std::left << std::setw(int(nameWidth) + 2) << p.name << std::right << std::setw(8) << p.faces
               << " faces  ";
@@ -77,6 +77,22 @@ std::string formatFileInfo(const FileInfo& info) {
             for (const auto& a : p.arrays) s << " " << a;
             s << "\n";
         }
+    }
+    if (!info.patches.empty()) {
+        // All of a CGNS file's boundary conditions, with what --patches matches (name, family).
+        size_t nameWidth = 4, typeWidth = 4, familyWidth = 1;
+        for (const auto& p : info.patches) {
+            nameWidth = std::max(nameWidth, p.name.size());
+            typeWidth = std::max(typeWidth, p.type.size());
+            familyWidth = std::max(familyWidth, p.family.size());
+        }
+        s << "Boundaries   " << info.patches.size()
+          << " (BC name, type, family; 'read': in the surface, --patches NAME|FAMILY picks others)\n";
+        for (const auto& p : info.patches)
+            s << "  " << std::left << std::setw(int(nameWidth) + 2) << p.name << std::setw(int(typeWidth) + 2) << p.type
+              << std::setw(int(familyWidth) + 2) << (p.family.empty() ? "-" : p.family) << std::right << std::setw(8) << p.faces
+              << " faces"
+              << (p.read ? "  read" : "") << "\n";
     }
     s << "Vector fields";
     if (vectors.empty()) s << " none (no array with 3 components)";

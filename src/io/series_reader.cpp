@@ -31,16 +31,17 @@ private:
     detail::ReaderProcess::SourceInfo info_;
 };
 
-// Numbered files, one step each, read by one reader process.
+// Numbered files, one step each, read by one reader process with the same options (a
+// CGNS or OpenFOAM series: the same patches of every file).
 class PatternSteps final : public core::StepProvider {
 public:
-    PatternSteps(std::vector<std::string> files, std::vector<double> times)
-        : files_(std::move(files)), times_(std::move(times)) {}
+    PatternSteps(std::vector<std::string> files, std::vector<double> times, const SourceOptions& options)
+        : files_(std::move(files)), times_(std::move(times)), options_(options) {}
     size_t count() const override { return files_.size(); }
     double time(size_t i) const override { return times_[i]; }
     core::SurfaceMesh load(size_t i) override {
-        core::Dataset d = reader_.readDataset(files_[i], 1);  // errors name the file
-        return std::move(d.steps.front().mesh);
+        reader_.open(files_[i], options_);  // errors name the file
+        return reader_.readStep(0, label(i));
     }
     std::string label(size_t i) const override {
         std::ostringstream s;
@@ -51,6 +52,7 @@ public:
 private:
     std::vector<std::string> files_;
     std::vector<double> times_;
+    SourceOptions options_;
     detail::ReaderProcess reader_;
 };
 
@@ -105,7 +107,7 @@ std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const S
         if (times[i] == times[i - 1])
             throw FormatError(input + ": " + files[i - 1] + " and " + files[i] + " have the same time " +
                               std::to_string(times[i]));
-    return std::make_unique<PatternSteps>(std::move(files), std::move(times));
+    return std::make_unique<PatternSteps>(std::move(files), std::move(times), options);
 }
 
 std::unique_ptr<core::StepProvider> openInput(const std::string& input, const SourceOptions& options) {

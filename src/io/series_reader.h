@@ -18,7 +18,7 @@ bool isSeriesPattern(const std::string& input);
 // Opens the metadata (file list or time values) now; steps load on demand. A series
 // file's time is the number in its name where the pattern varies (else its index).
 // Throws IoError (no file matches, unreadable) or FormatError.
-// `options`: OpenFOAM's boundary patches and case layout (single files only).
+// `options`: the boundary patches (OpenFOAM, CGNS; every file of a series) and OpenFOAM's case layout.
 std::unique_ptr<core::StepProvider> openSeries(const std::string& input, const SourceOptions& options = {});
 // Any input of the command line as steps loaded on demand: builtin:NAME (made in memory),
 // a file or a file series (openSeries).

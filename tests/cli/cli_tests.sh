@@ -2,7 +2,8 @@
 # Command-line tests: the documented commands work, bad input gets a one-line message
 # naming the file and the problem, a distinct non-zero exit code, and no partial output.
 set -u
-FLOWSURF=${1:?usage: cli_tests.sh path/to/flowsurf}
+FLOWSURF=${1:?usage: cli_tests.sh path/to/flowsurf [path/to/flowsurf_make_cgns_cases]}
+MAKE_CGNS=${2:-}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 pass=0
@@ -296,6 +297,43 @@ if "$FLOWSURF" render builtin:tori --method isa --topology on --size 96x72 --fra
     ok "render --topology on, --color-by normalized-divergence"
 else
     bad "render --topology on, --color-by normalized-divergence"
+fi
+
+# --- CGNS: the walls of generated cases, the same image as the same surface as a VTK file ---
+if [ -n "$MAKE_CGNS" ]; then
+    mkdir -p "$WORK/cgns"
+    "$MAKE_CGNS" "$WORK/cgns"
+    for c in box blocks nobc; do
+        args=(--field Velocity --view iso --size 160x120 --frames 4 -q)
+        [ "$c" = box ] && args+=(--color-by Temperature --legend)
+        if "$FLOWSURF" render "$WORK/cgns/$c.cgns" "${args[@]}" -o "$WORK/cgns/$c.png" &&
+           "$FLOWSURF" render "$WORK/cgns/$c.expected.vtk" "${args[@]}" -o "$WORK/cgns/$c.vtk.png" &&
+           cmp -s "$WORK/cgns/$c.png" "$WORK/cgns/$c.vtk.png"; then
+            ok "cgns $c: the same image as its VTK surface"
+        else
+            bad "cgns $c: the same image as its VTK surface"
+        fi
+    done
+    if "$FLOWSURF" render "$WORK/cgns/series.cgns" --field Velocity --size 96x72 --frames 3 -q -o "$WORK/cgns/s_%02d.png" &&
+       "$FLOWSURF" render "$WORK/cgns/series.expected_%d.vtk" --field Velocity --size 96x72 --frames 3 -q -o "$WORK/cgns/v_%02d.png" &&
+       cmp -s "$WORK/cgns/s_02.png" "$WORK/cgns/v_02.png"; then
+        ok "cgns series: the same frames as its VTK series"
+    else
+        bad "cgns series: the same frames as its VTK series"
+    fi
+    info=$("$FLOWSURF" info "$WORK/cgns/box_adf.cgns")
+    if grep -q "CGNS (ADF" <<<"$info" && grep -qE "roof +BCWallViscous +Walls +8 faces  read" <<<"$info" &&
+       grep -qE "inlet +BCInflow +- +4 faces$" <<<"$info"; then
+        ok "cgns info: every BC with its type and family"
+    else
+        bad "cgns info: every BC with its type and family ($info)"
+    fi
+    expect_fail "cgns --patches matching nothing" 2 "box.cgns: --patches 'wing' matches no .*inlet \(BCInflow\)" "$WORK/cg1.png" \
+        -- render "$WORK/cgns/box.cgns" --patches wing -o "$WORK/cg1.png" -q
+    head -c 5000 "$WORK/cgns/box.cgns" > "$WORK/cgns/cut.cgns"
+    expect_fail "cgns truncated"      4 "cut.cgns"             "$WORK/cg2.png" -- render "$WORK/cgns/cut.cgns" -o "$WORK/cg2.png" -q
+    printf 'not cgns' > "$WORK/cgns/text.cgns"
+    expect_fail "cgns not cgns"       4 "text.cgns: not a CGNS file" "$WORK/cg3.png" -- render "$WORK/cgns/text.cgns" -o "$WORK/cg3.png" -q
 fi
 
 echo "$pass passed, $fail failed"

@@ -1,6 +1,7 @@
 // Hostile files, each the reason one of the former format pre-parsers existed (EnSight
 // counts beyond the file, XML compression headers, Exodus connectivity and missing
-// variables): fed to the reader process as they are, each is refused within 5 s with a
+// variables), and CGNS files cut short, with counts beyond the file or links leading
+// nowhere: fed to the reader process as they are, each is refused within 5 s with a
 // typed error naming the file, whatever VTK's reader does with it (an error, a crash, a
 // runaway allocation or loop stopped by the child's limits). Old-layout legacy cell lists
 // are still checked before VTK (checks.h says why) and refused the same way.
@@ -9,6 +10,7 @@
 #include "core/errors.h"
 #include "io/dataset_reader.h"
 
+#include "cgns_cases.h"
 #include "test_io_common.h"
 
 #include <vtkAppendFilter.h>
@@ -193,5 +195,50 @@ TEST(IoHostileFiles, ExodusConnectivityAndMissingVariables) {
         const std::string path = dir.file(std::string("no_") + variable + ".e");
         writeText(path, hostile);
         expectRefusedQuickly(path);
+    }
+}
+
+// --- CGNS: truncated files, counts beyond the file, links that lead nowhere ----------------
+// Written with libcgns (tests/cgns/cgns_cases.h), then damaged: HDF5 and ADF cut short,
+// a zone claiming 2^31 - 1 vertices, a section or BC ranging over two billion elements,
+// and coordinates linked to a missing file, a missing node, a file outside the folder the
+// reader may read and the file itself.
+TEST(IoHostileFiles, CgnsTruncatedCountBombsAndWrongLinks) {
+    namespace cases = flowsurf::testing_cgns;
+    ScratchDir dir;
+    for (auto backend : {cases::Backend::Hdf5, cases::Backend::Adf}) {
+        const std::string tag = backend == cases::Backend::Hdf5 ? "hdf5" : "adf";
+        const std::string good = dir.file("good_" + tag + ".cgns");
+        cases::writeUnstructuredBox(good, backend);
+        const std::string bytes = readBytes(good);
+        for (size_t keep : {bytes.size() / 2, bytes.size() * 3 / 4, size_t(600)}) {  // ADF's last block may be unused
+            const std::string path = dir.file("cut_" + std::to_string(keep) + "_" + tag + ".cgns");
+            writeText(path, bytes.substr(0, keep));
+            expectRefusedQuickly(path);
+        }
+        const struct {
+            const char* name;
+            const char* node;
+            std::vector<int> values;
+        } bombs[] = {{"zone", "/Base/Fluid", {0x7fffffff, 16, 0}},
+                     {"section", "/Base/Fluid/floor/ElementRange", {25, 2000000000}},
+                     {"bc", "/Base/Fluid/ZoneBC/floor/PointRange", {25, 2000000000}}};
+        for (const auto& bomb : bombs) {
+            const std::string path = dir.file(std::string("bomb_") + bomb.name + "_" + tag + ".cgns");
+            writeText(path, bytes);
+            cases::overwriteNode(path, bomb.node, bomb.values);
+            expectRefusedQuickly(path);
+        }
+        const std::string self = dir.file("self_" + tag + ".cgns");
+        const struct {
+            std::string file, target, node;
+        } links[] = {{dir.file("missing_file_" + tag + ".cgns"), "nosuch.cgns", "/Base/Fluid/GridCoordinates"},
+                     {dir.file("missing_node_" + tag + ".cgns"), "good_" + tag + ".cgns", "/Base/Fluid/NoSuchNode"},
+                     {dir.file("outside_" + tag + ".cgns"), "/etc/passwd", "/Base/Fluid/GridCoordinates"},
+                     {self, "self_" + tag + ".cgns", "/Base/Fluid/GridCoordinates"}};
+        for (const auto& link : links) {
+            cases::writeLinkedBox(link.file, backend, link.target, link.node);
+            expectRefusedQuickly(link.file);
+        }
     }
 }

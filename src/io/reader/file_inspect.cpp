@@ -59,6 +59,7 @@ FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) 
     info.path = path;
     info.format = source->format();
     info.times = source->times();
+    info.patches = source->patches();
 
     vtkSmartPointer<vtkDataObject> raw = source->readStep(0);
     forEachNamedLeaf(raw, [&](vtkDataSet* ds, const std::string& name) {

@@ -180,6 +180,13 @@ void record(Io& io, Info& info) {
     });
     io.field(info.times);
     io.field(info.bounds);
+    io.list(info.patches, [&](auto& p) {
+        io.field(p.name);
+        io.field(p.type);
+        io.field(p.family);
+        io.field(p.faces);
+        io.field(p.read);
+    });
 }
 
 }  // namespace flowsurf::io::wire

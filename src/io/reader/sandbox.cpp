@@ -161,8 +161,10 @@ void landlock(const std::string& root) {
 }
 
 // --- the system-call filter --------------------------------------------------------------
-// What VTK, its libraries (HDF5, NetCDF, TBB, expat, zlib), glibc and libstdc++ use to read
-// files, allocate, run threads and answer over the socket. Opens are allowed read-only,
+// What VTK, its libraries (HDF5, NetCDF, TBB, expat, zlib), libcgns, glibc and libstdc++ use
+// to read files, allocate, run threads and answer over the socket. CGNS needs nothing more:
+// libcgns and VTK's copy of it open HDF5 files read-only (HDF5's file lock is flock) and
+// ADF files with fopen "rb", and follow links by opening the linked file the same way. Opens are allowed read-only,
 // clone for threads only; everything else stops the process (SIGSYS, onSigsys).
 const char* const kAllowed[] = {
     // files already allowed to be open, and their metadata

@@ -281,6 +281,7 @@ const Format kFormats[] = {
     {".ex2", "Exodus II", openExodus},
     {".exo", "Exodus II", openExodus},
     {".case", "EnSight case", openVtk<vtkGenericEnSightReader>},
+    {".cgns", "CGNS", openCgns},
     {".pvd", "ParaView data collection (.pvd)", openPvd},
 };
 

@@ -34,6 +34,8 @@ public:
     size_t stepCount() const { return times_.empty() ? 1 : times_.size(); }
     // The reader's output for step `index` (may be composite). Throws FormatError.
     virtual vtkSmartPointer<vtkDataObject> readStep(size_t index) = 0;
+    // Every boundary condition the file declares, read or not (CGNS); empty for others.
+    virtual std::vector<PatchInfo> patches() const { return {}; }
 
 protected:
     std::string path_, format_;
@@ -67,6 +69,12 @@ void readInformation(vtkAlgorithm* reader, const std::string& path, const std::s
 // with the layout read. Throws as openSource, ConfigError for --patches or --foam-case.
 std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& format, VtkMessageTrap& trap,
                                          const SourceOptions& options);
+
+// CGNS files (cgns_source.cpp): the wall patches of volume zones (--patches: those whose BC
+// or family name matches), else the volume's boundary. Throws as openSource, ConfigError for
+// --patches.
+std::unique_ptr<StepSource> openCgns(const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                                     const SourceOptions& options);
 
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,

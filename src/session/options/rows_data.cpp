@@ -64,7 +64,8 @@ std::vector<OptionSpec> readRows() {
                    "OpenFOAM's wallShearStress, the stress on the fluid, which points against the near-wall flow",
                    {"auto", "on", "off"}, FS_REF(reverseField)),
         text("patches", {G::Data, E::Reload, CommandLine | Config | Read},
-             "OpenFOAM: read the boundary patches whose names match this regular expression (default: all)",
+             "OpenFOAM, CGNS: read the boundary patches whose names (CGNS: BC or family names) match this "
+             "regular expression (default: OpenFOAM all, CGNS the walls)",
              FS_REF(patches)),
         textChoice("foam-case", {G::Data, E::Reload, CommandLine | Config | Read},
                    "OpenFOAM: read the reconstructed case or the processor* directories of a decomposed one (auto: "
