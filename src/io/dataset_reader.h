@@ -21,6 +21,10 @@ struct SourceOptions {
     std::string patches;            // boundary patches to read: a regular expression on the name (empty: all)
     std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
     bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
+    // The derived wall field `skin-friction` (--field skin-friction), computed where the volume is read
+    // (io/reader/skin_friction.h): OpenFOAM's internal mesh is read for it, a volume file's boundary is its wall.
+    bool skinFriction = false;
+    double viscosity = 0.0;         // kinematic, m²/s, for skin-friction; 0: the case's own, else a relative magnitude
 };
 
 // Reads every time step of `path` into a Dataset. Each step's mesh holds all point
@@ -52,6 +56,10 @@ struct FileInfo {
     std::vector<PartInfo> parts;   // more than one only for composite data (patches, blocks)
     std::vector<double> times;     // empty or one entry for a single step
     core::Bounds bounds;
+    // How --field skin-friction is derived here ("from U in the cells next to ..."), "not
+    // available: why" for a volume without velocity or an OpenFOAM case lacking what it needs;
+    // empty for surface files.
+    std::string skinFriction;
 };
 FileInfo inspectFile(const std::string& path, const SourceOptions& options = {});
 std::string formatFileInfo(const FileInfo& info);

@@ -135,6 +135,8 @@ void record(Io& io, R& r) {
         io.field(r.options.patches);
         io.field(r.options.foamCase);
         io.field(r.options.zeroTime);
+        io.field(r.options.skinFriction);
+        io.field(r.options.viscosity);
     }
     if (r.op == Op::Step) io.field(r.step);
 }
@@ -180,6 +182,7 @@ void record(Io& io, Info& info) {
     });
     io.field(info.times);
     io.field(info.bounds);
+    io.field(info.skinFriction);
 }
 
 }  // namespace flowsurf::io::wire
