@@ -58,20 +58,22 @@ std::string vec(const glm::dvec3& v) {
     return s.str();
 }
 
-// An kNx × kNy × 1 block of hexahedra in OpenFOAM's layout: internal faces first (upper
-// triangular: by owner, then neighbour), then the patches lower (y = 0), upper (y = H) and
-// sides (the x and z faces), each face's normal out of its owner cell.
-void writeCouetteCase(const fs::path& dir, const std::string& transport) {
+// Columns [i0, i0 + n) of a kNx × kNy × 1 block of hexahedra in OpenFOAM's layout below
+// `dir`: internal faces first (upper triangular: by owner, then neighbour), then the patches
+// lower (y = 0) and upper (y = H), walls, sides (the domain's x ends and the z faces), and
+// where the columns end inside the domain a processor patch (decomposePar's layout); each
+// face's normal out of its owner cell. U holds the flow at the cell centres and the walls'
+// velocity as their patch values.
+void writeCouetteBlock(const fs::path& dir, int i0, int n) {
     const fs::path mesh = dir / "constant/polyMesh";
     fs::create_directories(mesh);
-    fs::create_directories(dir / "system");
     fs::create_directories(dir / "1");
-    auto p = [](int i, int j, int k) { return i + (kNx + 1) * (j + (kNy + 1) * k); };
-    auto cell = [](int i, int j) { return i + kNx * j; };
-    std::string points = std::to_string((kNx + 1) * (kNy + 1) * 2) + "\n(\n";
+    auto p = [i0, n](int i, int j, int k) { return (i - i0) + (n + 1) * (j + (kNy + 1) * k); };
+    auto cell = [i0, n](int i, int j) { return (i - i0) + n * j; };
+    std::string points = std::to_string((n + 1) * (kNy + 1) * 2) + "\n(\n";
     for (int k = 0; k < 2; ++k)
         for (int j = 0; j <= kNy; ++j)
-            for (int i = 0; i <= kNx; ++i) points += vec({kL * i / kNx, kH * j / kNy, kDz * k}) + "\n";
+            for (int i = i0; i <= i0 + n; ++i) points += vec({kL * i / kNx, kH * j / kNy, kDz * k}) + "\n";
     std::vector<std::string> faces;
     std::vector<int> owner, neighbour;
     auto quad = [&](int a, int b, int c, int d, int own) {
@@ -79,22 +81,30 @@ void writeCouetteCase(const fs::path& dir, const std::string& transport) {
                         std::to_string(d) + ")");
         owner.push_back(own);
     };
+    auto xFace = [&](int x, int j, int own) { quad(p(x, j, 0), p(x, j + 1, 0), p(x, j + 1, 1), p(x, j, 1), own); };
+    auto xFaceBack = [&](int x, int j, int own) { quad(p(x, j, 0), p(x, j, 1), p(x, j + 1, 1), p(x, j + 1, 0), own); };
+    auto yFace = [&](int i, int y, int own) { quad(p(i, y, 0), p(i, y, 1), p(i + 1, y, 1), p(i + 1, y, 0), own); };
     for (int j = 0; j < kNy; ++j)
-        for (int i = 0; i < kNx; ++i) {
-            if (i + 1 < kNx) quad(p(i + 1, j, 0), p(i + 1, j + 1, 0), p(i + 1, j + 1, 1), p(i + 1, j, 1), cell(i, j)), neighbour.push_back(cell(i + 1, j));
-            if (j + 1 < kNy) quad(p(i, j + 1, 0), p(i, j + 1, 1), p(i + 1, j + 1, 1), p(i + 1, j + 1, 0), cell(i, j)), neighbour.push_back(cell(i, j + 1));
+        for (int i = i0; i < i0 + n; ++i) {
+            if (i + 1 < i0 + n) xFace(i + 1, j, cell(i, j)), neighbour.push_back(cell(i + 1, j));
+            if (j + 1 < kNy) yFace(i, j + 1, cell(i, j)), neighbour.push_back(cell(i, j + 1));
         }
     const size_t internal = faces.size();
-    for (int i = 0; i < kNx; ++i) quad(p(i, 0, 0), p(i + 1, 0, 0), p(i + 1, 0, 1), p(i, 0, 1), cell(i, 0));
-    for (int i = 0; i < kNx; ++i) quad(p(i, kNy, 0), p(i, kNy, 1), p(i + 1, kNy, 1), p(i + 1, kNy, 0), cell(i, kNy - 1));
+    for (int i = i0; i < i0 + n; ++i) quad(p(i, 0, 0), p(i + 1, 0, 0), p(i + 1, 0, 1), p(i, 0, 1), cell(i, 0));
+    for (int i = i0; i < i0 + n; ++i) yFace(i, kNy, cell(i, kNy - 1));
     const size_t sides = faces.size();
     for (int j = 0; j < kNy; ++j) {
-        quad(p(0, j, 0), p(0, j, 1), p(0, j + 1, 1), p(0, j + 1, 0), cell(0, j));
-        quad(p(kNx, j, 0), p(kNx, j + 1, 0), p(kNx, j + 1, 1), p(kNx, j, 1), cell(kNx - 1, j));
-        for (int i = 0; i < kNx; ++i) {
+        if (i0 == 0) xFaceBack(0, j, cell(0, j));
+        if (i0 + n == kNx) xFace(kNx, j, cell(kNx - 1, j));
+        for (int i = i0; i < i0 + n; ++i) {
             quad(p(i, j, 0), p(i, j + 1, 0), p(i + 1, j + 1, 0), p(i + 1, j, 0), cell(i, j));
             quad(p(i, j, 1), p(i + 1, j, 1), p(i + 1, j + 1, 1), p(i, j + 1, 1), cell(i, j));
         }
+    }
+    const size_t processor = faces.size();
+    for (int j = 0; j < kNy; ++j) {
+        if (i0 > 0) xFaceBack(i0, j, cell(i0, j));
+        if (i0 + n < kNx) xFace(i0 + n, j, cell(i0 + n - 1, j));
     }
     auto list = [](const auto& items) {
         std::string s = std::to_string(items.size()) + "\n(\n";
@@ -109,21 +119,44 @@ void writeCouetteCase(const fs::path& dir, const std::string& transport) {
     writeText((mesh / "faces").string(), header("faceList", "faces") + list(faces));
     writeText((mesh / "owner").string(), header("labelList", "owner") + list(owner));
     writeText((mesh / "neighbour").string(), header("labelList", "neighbour") + list(neighbour));
-    auto patch = [](const std::string& name, const std::string& type, size_t n, size_t start) {
-        return name + "\n{\n type " + type + ";\n nFaces " + std::to_string(n) + ";\n startFace " + std::to_string(start) + ";\n}\n";
+    auto patch = [](const std::string& name, const std::string& type, size_t count, size_t start,
+                    const std::string& extra = "") {
+        return name + "\n{\n type " + type + ";\n nFaces " + std::to_string(count) + ";\n startFace " +
+               std::to_string(start) + ";\n" + extra + "}\n";
     };
-    writeText((mesh / "boundary").string(),
-              header("polyBoundaryMesh", "boundary") + "3\n(\n" + patch("lower", "wall", size_t(kNx), internal) +
-                  patch("upper", "wall", size_t(kNx), internal + kNx) + patch("sides", "patch", faces.size() - sides, sides) + ")\n");
-    // U at the cell centres, the walls' velocity as their patch values.
-    std::string cells = std::to_string(kNx * kNy) + "\n(\n";
+    const bool decomposed = processor < faces.size();
+    const int me = i0 == 0 ? 0 : 1;
+    const std::string proc = "procBoundary" + std::to_string(me) + "to" + std::to_string(1 - me);
+    std::string boundary = patch("lower", "wall", size_t(n), internal) + patch("upper", "wall", size_t(n), internal + n) +
+                           patch("sides", "patch", processor - sides, sides);
+    if (decomposed)
+        boundary += patch(proc, "processor", faces.size() - processor, processor,
+                          " inGroups 1(processor);\n matchTolerance 0.0001;\n transform unknown;\n myProcNo " +
+                              std::to_string(me) + ";\n neighbProcNo " + std::to_string(1 - me) + ";\n");
+    writeText((mesh / "boundary").string(), header("polyBoundaryMesh", "boundary") + (decomposed ? "4" : "3") +
+                                                "\n(\n" + boundary + ")\n");
+    std::string cells = std::to_string(n * kNy) + "\n(\n";
     for (int j = 0; j < kNy; ++j)
-        for (int i = 0; i < kNx; ++i) cells += vec(flowAt(kH * (j + 0.5) / kNy)) + "\n";
+        for (int i = i0; i < i0 + n; ++i) cells += vec(flowAt(kH * (j + 0.5) / kNy)) + "\n";
     writeText((dir / "1/U").string(),
-              header("volVectorField", "U") + "dimensions [0 1 -1 0 0 0 0];\ninternalField nonuniform List<vector>\n" + cells +
-                  ")\n;\nboundaryField\n{\n lower\n {\n type movingWallVelocity;\n value uniform " + vec(wallVelocity(0)) +
-                  ";\n }\n upper\n {\n type movingWallVelocity;\n value uniform " + vec(wallVelocity(kH)) +
-                  ";\n }\n sides\n {\n type zeroGradient;\n value uniform (0 0 0);\n }\n}\n");
+              header("volVectorField", "U") + "dimensions [0 1 -1 0 0 0 0];\ninternalField nonuniform List<vector>\n" +
+                  cells + ")\n;\nboundaryField\n{\n lower\n {\n type movingWallVelocity;\n value uniform " +
+                  vec(wallVelocity(0)) + ";\n }\n upper\n {\n type movingWallVelocity;\n value uniform " +
+                  vec(wallVelocity(kH)) + ";\n }\n sides\n {\n type zeroGradient;\n value uniform (0 0 0);\n }\n" +
+                  (decomposed ? " " + proc + "\n {\n type processor;\n value uniform (0 0 0);\n }\n" : "") + "}\n");
+}
+
+// The whole block as a reconstructed case, or (`decomposed`) split in two processor
+// directories with nothing in the case folder but constant/transportProperties and system/.
+void writeCouetteCase(const fs::path& dir, const std::string& transport, bool decomposed = false) {
+    if (decomposed) {
+        writeCouetteBlock(dir / "processor0", 0, kNx / 2);
+        writeCouetteBlock(dir / "processor1", kNx / 2, kNx - kNx / 2);
+    } else {
+        writeCouetteBlock(dir, 0, kNx);
+    }
+    fs::create_directories(dir / "constant");
+    fs::create_directories(dir / "system");
     if (!transport.empty())
         writeText((dir / "constant/transportProperties").string(), header("dictionary", "transportProperties") + transport);
     writeText((dir / "system/controlDict").string(),
@@ -177,6 +210,18 @@ TEST(SkinFriction, CouetteFlowOpenFoamCaseGivesNuTimesShearAlongTheFlowOnMovingW
         }
     // The stored velocity is still there, as stored.
     EXPECT_NE(m.findField("U"), nullptr);
+}
+
+// decomposePar's layout: the wall faces of each processor's piece find their cells in that
+// piece (the appended pieces hold a copy of the points on the processor boundary each).
+TEST(SkinFriction, DecomposedCaseGivesTheSameStress) {
+    ScratchDir dir;
+    writeCouetteCase(dir.path(), "nu 0.002;\n", true);
+    const core::SurfaceMesh m = readSkinFriction(dir.file("case.foam"));
+    expectCouetteStress(m, 0.002, "decomposed in two");
+    size_t onWalls = 0;
+    for (size_t i = 0; i < m.positions.size(); ++i) onWalls += m.positions[i].y < 1e-6f;
+    EXPECT_GE(onWalls, size_t(2 * (kNx + 2)));  // both pieces' lower wall (with the copies at x = L/2)
 }
 
 TEST(SkinFriction, ViscosityOptionWinsAndWithoutAnyTheMagnitudeIsTheRelativeGradient) {
@@ -442,4 +487,36 @@ TEST(SkinFriction, AgreesWithOpenFoamsWallShearStressOnALaminarLidDrivenCavity) 
     EXPECT_LT(a.medianAngleDeg, 1.0);
     EXPECT_GT(a.within10, 0.95);
     EXPECT_NEAR(a.medianRatio, 1.0, 0.02);
+}
+
+// A cell flattened onto its wall face (its centre on the face's plane) has no wall distance
+// to divide by: refused with the file and the face named, not a division by zero.
+TEST(SkinFriction, ZeroWallDistanceIsAnErrorNamingTheFace) {
+    ScratchDir dir;
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto u = vtkSmartPointer<vtkDoubleArray>::New();
+    u->SetName("U");
+    u->SetNumberOfComponents(3);
+    for (int k = 0; k < 2; ++k)  // the top four points on the bottom four
+        for (auto [x, z] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+            points->InsertNextPoint(x, 0.0, z);
+            u->InsertNextTuple3(1.0, 0.0, 0.0);
+        }
+    grid->SetPoints(points);
+    const vtkIdType ids[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+    grid->GetPointData()->AddArray(u);
+    const std::string path = dir.file("flat.vtu");
+    auto w = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    w->SetInputData(grid);
+    w->SetFileName(path.c_str());
+    w->Write();
+    try {
+        readSkinFriction(path);
+        ADD_FAILURE() << "no exception";
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("flat.vtu"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("zero distance"), std::string::npos) << e.what();
+    }
 }

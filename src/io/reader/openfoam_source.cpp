@@ -331,6 +331,7 @@ FoamWalls foamWalls(vtkOpenFOAMReader* r, const std::string& path, const fs::pat
     walls.options.velocity = "U";
     walls.options.wallVelocity = "U";          // the patch's own value: a moving wall's velocity, zero at rest
     walls.options.turbulentViscosity = "nut";  // wall functions' ν_t on the wall face
+    walls.options.warn = warnOnce;
     std::string from = "--viscosity";
     walls.options.viscosity = options.viscosity > 0 ? options.viscosity : readCaseViscosity(caseDir(path), from);
     std::ostringstream nu;

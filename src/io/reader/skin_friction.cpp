@@ -3,7 +3,6 @@
 #include "io/reader/skin_friction.h"
 
 #include "core/errors.h"
-#include "io/reader/vtk_messages.h"
 
 #include <vtkCellType.h>
 #include <vtkCellData.h>
@@ -290,11 +289,12 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
         wall->GetCellData()->AddArray(tau);
         totalFaces += size_t(wall->GetNumberOfCells());
         matchedFaces += size_t(wall->GetNumberOfCells()) - unmatched;
-        if (unmatched > 0 && unmatched < size_t(wall->GetNumberOfCells()))
-            warnOnce(what + ": " + std::to_string(unmatched) + " of the " + std::to_string(wall->GetNumberOfCells()) +
+        if (!options.warn || unmatched == 0) continue;
+        if (unmatched < size_t(wall->GetNumberOfCells()))
+            options.warn(what + ": " + std::to_string(unmatched) + " of the " + std::to_string(wall->GetNumberOfCells()) +
                      " faces of " + wallNames[w] + " are a face of no volume cell; zero there");
-        else if (unmatched > 0)
-            warnOnce(what + ": no face of " + wallNames[w] + " is a face of a volume cell; zero there");
+        else
+            options.warn(what + ": no face of " + wallNames[w] + " is a face of a volume cell; zero there");
     }
     if (totalFaces > 0 && matchedFaces == 0)
         throw FormatError(what + ": none of the " + std::to_string(totalFaces) +

@@ -17,6 +17,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct SkinFrictionOptions {
     std::string wallVelocity;        // the walls' own per-face velocity (cell data; OpenFOAM's patch U); empty or
                                      // absent on a wall: the volume's point velocity on the face, else at rest
     std::string turbulentViscosity;  // the walls' per-face ν_t added to ν (OpenFOAM's nut); empty or absent: none
+    // Where warnings go (the reader: warnOnce; null: dropped). Nothing else here is flowsurf's
+    // but its error types, so a VTK filter elsewhere (ParaView's) can compile this file too.
+    std::function<void(const std::string&)> warn;
 };
 
 // The units label of the derived array: "m2/s2" (VTK's notation of OpenFOAM's units: kinematic stress, as OpenFOAM's

@@ -64,6 +64,7 @@ private:
 std::unique_ptr<StepSource> withSkinFriction(std::unique_ptr<StepSource> inner, const SourceOptions& options) {
     SkinFrictionOptions sf;
     sf.viscosity = options.viscosity;
+    sf.warn = warnOnce;
     std::ostringstream nu;
     nu << options.viscosity;
     const std::string format = inner->format() + " (skin-friction on the boundary surface: " +
