@@ -222,6 +222,8 @@ TEST(SkinFriction, DecomposedCaseGivesTheSameStress) {
     size_t onWalls = 0;
     for (size_t i = 0; i < m.positions.size(); ++i) onWalls += m.positions[i].y < 1e-6f;
     EXPECT_GE(onWalls, size_t(2 * (kNx + 2)));  // both pieces' lower wall (with the copies at x = L/2)
+    const std::string note = io::inspectFile(dir.file("case.foam")).skinFriction;
+    EXPECT_EQ(note.rfind("from U", 0), 0u) << note;
 }
 
 TEST(SkinFriction, ViscosityOptionWinsAndWithoutAnyTheMagnitudeIsTheRelativeGradient) {

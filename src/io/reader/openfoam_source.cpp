@@ -347,16 +347,31 @@ FoamWalls foamWalls(vtkOpenFOAMReader* r, const std::string& path, const fs::pat
 }  // namespace
 
 // --- openOpenFoam -------------------------------------------------------------------------
+namespace {
+
+vtkSmartPointer<vtkOpenFOAMReader> newReader(bool decomposed) {
+    if (!decomposed) return vtkSmartPointer<vtkOpenFOAMReader>::New();
+    // One reader per processor directory, appended patch by patch; VTK's parallel
+    // reader wants a controller even in one process.
+    auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
+    p->SetController(vtkSmartPointer<vtkDummyController>::New());
+    p->SetCaseType(vtkPOpenFOAMReader::DECOMPOSED_CASE);
+    return p;
+}
+
+}  // namespace
+
 std::string foamSkinFrictionNote(const std::string& path, const SourceOptions& options) {
     VtkMessageTrap trap;
     SourceOptions with = options;
     with.skinFriction = true;
     try {
-        auto r = vtkSmartPointer<vtkOpenFOAMReader>::New();
+        const bool decomposed = readsDecomposed(path, options.foamCase);
+        vtkSmartPointer<vtkOpenFOAMReader> r = newReader(decomposed);
         r->SetFileName(path.c_str());
         trap.watch(r);
         readInformation(r, path, "OpenFOAM case", trap);
-        const FoamWalls walls = foamWalls(r, path, caseDir(path), with, false);
+        const FoamWalls walls = foamWalls(r, path, decomposed ? processorDirs(caseDir(path)).front() : caseDir(path), with, false);
         std::string names;
         for (const auto& [name, type] : walls.types)
             if (isWallType(type)) names += (names.empty() ? "" : ", ") + name;
@@ -369,20 +384,11 @@ std::string foamSkinFrictionNote(const std::string& path, const SourceOptions& o
 
 std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& caseFormat, VtkMessageTrap& trap,
                                          const SourceOptions& options) {
-    vtkSmartPointer<vtkOpenFOAMReader> r;
     std::string format = caseFormat;
     const bool readsDecomposedLayout = readsDecomposed(path, options.foamCase);
-    if (readsDecomposedLayout) {
-        // One reader per processor directory, appended patch by patch; VTK's parallel
-        // reader wants a controller even in one process.
-        auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
-        p->SetController(vtkSmartPointer<vtkDummyController>::New());
-        p->SetCaseType(vtkPOpenFOAMReader::DECOMPOSED_CASE);
+    vtkSmartPointer<vtkOpenFOAMReader> r = newReader(readsDecomposedLayout);
+    if (readsDecomposedLayout)
         format += " (decomposed, " + std::to_string(processorDirs(caseDir(path)).size()) + " processor directories)";
-        r = p;
-    } else {
-        r = vtkSmartPointer<vtkOpenFOAMReader>::New();
-    }
     r->SetFileName(path.c_str());
     // The initial conditions in 0/ are no result: skipped, as ParaView does, when a solver
     // wrote later times; a case with only 0/ (a mesh, a moving-mesh set-up) is that step.
