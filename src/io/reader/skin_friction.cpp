@@ -179,6 +179,59 @@ struct WallArrays {
     vtkDataArray* turbulentViscosity = nullptr;
 };
 
+// Lists reused from face to face.
+struct Scratch {
+    vtkSmartPointer<vtkIdList> cells = vtkSmartPointer<vtkIdList>::New();
+    vtkSmartPointer<vtkIdList> cellPoints = vtkSmartPointer<vtkIdList>::New();
+    vtkSmartPointer<vtkIdList> facePoints = vtkSmartPointer<vtkIdList>::New();
+};
+
+// τ on wall face f of `wall` with owner cell c (the header's formula); zero for a degenerate
+// face. Throws FormatError (`where` names the face) when c's centre lies on the face's plane.
+Vec faceStress(vtkDataSet* volume, vtkPolyData* wall, vtkIdType f, vtkIdType c,
+               const std::vector<const std::vector<vtkIdType>*>& faceMatches, const WallArrays& arrays, double nu,
+               Scratch& scratch, const std::string& where) {
+    vtkIdList* cellPoints = scratch.cellPoints;
+    vtkIdList* facePoints = scratch.facePoints;
+    Vec xf, normal;
+    faceFrame(wall, f, xf, normal);
+    if (dot(normal, normal) == 0) return {0, 0, 0};  // a degenerate face, dropped with the surface's checks
+    volume->GetCellPoints(c, cellPoints);
+    const Vec xc = meanOver(volume, cellPoints, nullptr);
+    double d = dot(normal, sub(xc, xf));
+    if (d < 0) {
+        for (double& v : normal) v = -v;
+        d = -d;
+    }
+    // A centre on the face's plane (a cell flat against its wall face) has no gradient to give;
+    // relative to the centre's offset, so that a tiny cell is not taken for a flat one.
+    const Vec diagonal = sub(xc, xf);
+    if (!(d > 1e-9 * std::sqrt(dot(diagonal, diagonal))) || !(d > 0))
+        throw FormatError(where + " lies at zero distance from the centre of its volume cell " + std::to_string(c));
+    // (1) the velocity next to the wall and the wall's own
+    Vec uc{0, 0, 0}, uw{0, 0, 0};
+    if (arrays.cellVelocity) arrays.cellVelocity->GetTuple(c, uc.data());
+    else uc = meanOver(volume, cellPoints, arrays.pointVelocity);
+    if (arrays.wallVelocity) {
+        arrays.wallVelocity->GetTuple(f, uw.data());
+    } else if (arrays.pointVelocity) {
+        facePoints->Reset();
+        for (const auto* m : faceMatches)
+            for (vtkIdType id : *m)
+                if (cellPoints->IsId(id) >= 0) {
+                    facePoints->InsertNextId(id);
+                    break;
+                }
+        uw = meanOver(volume, facePoints, arrays.pointVelocity);
+    }
+    // (2) its tangential part over the wall distance, (3) times the viscosity
+    const Vec du = sub(uc, uw);
+    const double normalPart = dot(du, normal);
+    const double nuEff = nu + (arrays.turbulentViscosity ? arrays.turbulentViscosity->GetComponent(f, 0) : 0.0);
+    return {nuEff * (du[0] - normalPart * normal[0]) / d, nuEff * (du[1] - normalPart * normal[1]) / d,
+            nuEff * (du[2] - normalPart * normal[2]) / d};
+}
+
 }  // namespace
 
 std::string skinFrictionUnits(double viscosity) {
@@ -217,9 +270,7 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
     if (!hasVolumeCells(volume)) throw FormatError(what + ": the data set has no volume cells next to the walls");
 
     const PointMatches matches = matchPoints(volume, walls);
-    auto cells = vtkSmartPointer<vtkIdList>::New();
-    auto cellPoints = vtkSmartPointer<vtkIdList>::New();
-    auto facePoints = vtkSmartPointer<vtkIdList>::New();
+    Scratch scratch;
     const double nu = options.viscosity > 0 ? options.viscosity : 1.0;
     size_t matchedFaces = 0, totalFaces = 0;
     for (size_t w = 0; w < walls.size(); ++w) {
@@ -236,6 +287,7 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
         tau->Fill(0.0);
         size_t unmatched = 0;
         std::vector<const std::vector<vtkIdType>*> faceMatches;
+        auto where = [&](vtkIdType f) { return what + ": face " + std::to_string(f) + " of " + wallNames[w]; };
         for (vtkIdType f = 0; f < wall->GetNumberOfCells(); ++f) {
             vtkIdType n;
             const vtkIdType* ids;
@@ -243,47 +295,13 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
             if (n < 3) continue;  // lines and vertices bound no cell
             faceMatches.clear();
             for (vtkIdType k = 0; k < n; ++k) faceMatches.push_back(&matches.at(keyOf(wall->GetPoints(), ids[k])));
-            const vtkIdType c = ownerCell(volume, faceMatches, cells, cellPoints);
+            const vtkIdType c = ownerCell(volume, faceMatches, scratch.cells, scratch.cellPoints);
             if (c < 0) {
                 ++unmatched;
                 continue;
             }
-            Vec xf, normal;
-            faceFrame(wall, f, xf, normal);
-            if (dot(normal, normal) == 0) continue;  // a degenerate face, dropped with the surface's checks
-            volume->GetCellPoints(c, cellPoints);
-            const Vec xc = meanOver(volume, cellPoints, nullptr);
-            double d = dot(normal, sub(xc, xf));
-            if (d < 0) {
-                for (double& v : normal) v = -v;
-                d = -d;
-            }
-            // Relative to the face's size: a cell flat against its wall face has no gradient.
-            const Vec diagonal = sub(xc, xf);
-            if (!(d > 1e-9 * std::sqrt(dot(diagonal, diagonal))) || !(d > 0))
-                throw FormatError(what + ": face " + std::to_string(f) + " of " + wallNames[w] +
-                                  " lies at zero distance from the centre of its volume cell " + std::to_string(c));
-            // (1) the velocity next to the wall and the wall's own
-            Vec uc{0, 0, 0}, uw{0, 0, 0};
-            if (arrays.cellVelocity) arrays.cellVelocity->GetTuple(c, uc.data());
-            else uc = meanOver(volume, cellPoints, arrays.pointVelocity);
-            if (arrays.wallVelocity) {
-                arrays.wallVelocity->GetTuple(f, uw.data());
-            } else if (arrays.pointVelocity) {
-                facePoints->Reset();
-                for (const auto* m : faceMatches)
-                    for (vtkIdType id : *m)
-                        if (cellPoints->IsId(id) >= 0) {
-                            facePoints->InsertNextId(id);
-                            break;
-                        }
-                uw = meanOver(volume, facePoints, arrays.pointVelocity);
-            }
-            // (2) its tangential part over the wall distance, (3) times the viscosity
-            const Vec du = sub(uc, uw);
-            const double normalPart = dot(du, normal);
-            const double nuEff = nu + (arrays.turbulentViscosity ? arrays.turbulentViscosity->GetComponent(f, 0) : 0.0);
-            for (int a = 0; a < 3; ++a) tau->SetComponent(f, a, nuEff * (du[a] - normalPart * normal[a]) / d);
+            const Vec t = faceStress(volume, wall, f, c, faceMatches, arrays, nu, scratch, where(f));
+            for (int a = 0; a < 3; ++a) tau->SetComponent(f, a, t[a]);
         }
         tau->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(options.viscosity).c_str());
         wall->GetCellData()->AddArray(tau);
