@@ -15,11 +15,13 @@ namespace {
 
 // What can be shown beside the stored arrays, and which vector arrays are shown reversed by
 // default (--reverse-field auto).
-void printDerived(const std::vector<std::string>& vectorArrays) {
+void printDerived(const std::vector<std::string>& vectorArrays, const std::string& skinFriction = {}) {
     std::string fields, scalars;
     for (const char* f : core::kDerivedFieldSyntax) fields += (fields.empty() ? "" : ", ") + std::string(f);
     for (const char* s : skeleton::kDerivedScalarNames) scalars += (scalars.empty() ? "" : ", ") + std::string(s);
     std::printf("Derived fields   --field %s\n", fields.c_str());
+    // The wall stress from a volume's velocity, derived where the file is read.
+    if (!skinFriction.empty()) std::printf("Wall stress      --field skin-friction: %s\n", skinFriction.c_str());
     std::printf("Derived scalars  --color-by, --mask-by: %s (of the shown field)\n", scalars.c_str());
     const session::RenderOptions defaults;
     for (const std::string& name : vectorArrays)
@@ -69,7 +71,7 @@ int runInfo(const std::string& path, const io::SourceOptions& source) {
     }
     const io::FileInfo info = io::inspectFile(path, source);
     std::fputs(io::formatFileInfo(info).c_str(), stdout);
-    printDerived(vectorArrays(info));
+    printDerived(vectorArrays(info), info.skinFriction);
     return 0;
 }
 

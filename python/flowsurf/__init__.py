@@ -101,9 +101,10 @@ def _apply(renderer, options):
 
 def read(path, field=None, **options):
     """Reads a surface: any format the command line reads, a file series, or builtin:NAME.
-    `field` picks the vector array (default: the first that is not zero everywhere);
-    keywords say how the input is read (read_option_names(): patches, foam_case,
-    foam_zero_time)."""
+    `field` picks the vector array (default: the first that is not zero everywhere), or a
+    derived one; "skin-friction" is derived while reading, from the velocity next to the walls
+    of an OpenFOAM case or a volume file (docs/cfd.md); keywords say how the input is read
+    (read_option_names(): patches, foam_case, foam_zero_time, viscosity)."""
     pairs = [(name, text) for _, name, text in _keywords(options, _READ_OPTIONS, "read options")]
     return _read(path, field or "", pairs)
 

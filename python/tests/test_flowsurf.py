@@ -291,7 +291,7 @@ def test_input_options_go_to_read_not_to_the_renderer():
         flowsurf.Renderer(foam_case="decomposed")
     with pytest.raises(ValueError, match="alpha"):
         flowsurf.read("builtin:sphere", alpha=0.1)
-    assert set(flowsurf.read_option_names()) == {"patches", "foam-case", "foam-zero-time"}
+    assert set(flowsurf.read_option_names()) == {"patches", "foam-case", "foam-zero-time", "viscosity"}
     assert flowsurf.read("builtin:sphere", patches="wall.*").triangle_count > 0
 
 
@@ -472,3 +472,17 @@ def test_topology_as_the_command_line_with_the_sign_rule():
         flowsurf.topology(s, topology_cancel_speed=2)
     with pytest.raises(ValueError, match="step"):
         flowsurf.topology(s, step=4)
+
+
+def test_skin_friction_is_derived_while_reading():
+    """field="skin-friction" reaches the reader: the wall stress of the shipped laminar cavity
+    (tests/unit/data), beside the stored fields; the viscosity keyword is a read option."""
+    case = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "unit", "data",
+                        "openfoam_cavity_laminar", "case.foam")
+    s = flowsurf.read(case, field="skin-friction")
+    assert s.field == "skin-friction"
+    assert {"skin-friction", "U", "wallShearStress"} <= set(s.fields)
+    assert "skin-friction" not in flowsurf.read(case).fields
+    assert flowsurf.read(case, field="skin-friction", viscosity=0.02).field == "skin-friction"
+    with pytest.raises(ValueError, match="skin-friction"):
+        flowsurf.read("builtin:sphere", field="skin-friction")

@@ -124,6 +124,7 @@ Surface Surface::read(const std::string& path, const std::string& field,
                               }() + ")");
         session::setOption(o, name, value);
     }
+    o.field = field;  // a field derived where the file is read (skin-friction) must reach the reader
     auto d = std::make_shared<detail::SurfaceData>();
     d->source = path;
     d->read = session::sourceOptions(o);

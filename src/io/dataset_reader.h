@@ -23,6 +23,10 @@ struct SourceOptions {
                                     // family); empty: OpenFOAM all, CGNS the walls
     std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
     bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
+    // The derived wall field `skin-friction` (--field skin-friction), computed where the volume is read
+    // (io/reader/skin_friction.h): OpenFOAM's internal mesh is read for it, a volume file's boundary is its wall.
+    bool skinFriction = false;
+    double viscosity = 0.0;         // kinematic, m²/s, for skin-friction; 0: the case's own, else a relative magnitude
 };
 
 // Reads every time step of `path` into a Dataset. Each step's mesh holds all point
@@ -63,6 +67,10 @@ struct FileInfo {
     std::vector<double> times;     // empty or one entry for a single step
     core::Bounds bounds;
     std::vector<PatchInfo> patches;  // every boundary condition, where the format has them (CGNS)
+    // How --field skin-friction is derived here ("from U in the cells next to ..."), "not
+    // available: why" for a volume without velocity or an OpenFOAM case lacking what it needs;
+    // empty for surface files.
+    std::string skinFriction;
 };
 FileInfo inspectFile(const std::string& path, const SourceOptions& options = {});
 std::string formatFileInfo(const FileInfo& info);

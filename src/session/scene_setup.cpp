@@ -7,7 +7,10 @@
 
 namespace flowsurf::session {
 
-io::SourceOptions sourceOptions(const RenderOptions& o) { return io::SourceOptions{o.patches, o.foamCase, o.foamZeroTime}; }
+io::SourceOptions sourceOptions(const RenderOptions& o) {
+    // skin-friction is derived in the reader process, from the volume only it reads.
+    return io::SourceOptions{o.patches, o.foamCase, o.foamZeroTime, o.field == "skin-friction", o.viscosity};
+}
 
 ViewFrame viewFrame(int upAxis) {
     ViewFrame f;

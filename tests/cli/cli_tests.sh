@@ -335,6 +335,13 @@ if [ -n "$MAKE_CGNS" ]; then
     printf 'not cgns' > "$WORK/cgns/text.cgns"
     expect_fail "cgns not cgns"       4 "text.cgns: not a CGNS file" "$WORK/cg3.png" -- render "$WORK/cgns/text.cgns" -o "$WORK/cg3.png" -q
 fi
+# --- skin-friction: the wall stress derived from the volume's velocity -------------------
+CAVITY=$(cd "$(dirname "$0")/../unit/data/openfoam_cavity_laminar" && pwd)/case.foam
+if "$FLOWSURF" info "$CAVITY" | grep -q "Wall stress.*skin-friction.*nu = 0.01"; then ok "info: skin-friction"; else bad "info: skin-friction"; fi
+if "$FLOWSURF" render "$CAVITY" --field skin-friction --viscosity 0.02 --size 96x72 --frames 2 -q -o "$WORK/sf.png" &&
+   [ -s "$WORK/sf.png" ]; then ok "render --field skin-friction"; else bad "render --field skin-friction"; fi
+expect_fail "skin-friction of a surface" 4 "plain.obj.*volume" "$WORK/sf2.png" -- render "$WORK/plain.obj" --field skin-friction -o "$WORK/sf2.png" -q
+expect_fail "negative viscosity"         2 "viscosity"         "$WORK/sf3.png" -- render "$CAVITY" --field skin-friction --viscosity -1 -o "$WORK/sf3.png" -q
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -8,7 +8,9 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 namespace flowsurf::app::view {
@@ -38,6 +40,22 @@ private:
     size_t cachedIndex_ = 0;
 };
 
+// The field list offers skin-friction, derived on reading (a reload), where the input may
+// have a volume with a velocity: an OpenFOAM case with U, a .vtu/.vtk file with a velocity
+// array (a .vtk surface then says so when it is picked, and the old data stay).
+bool offersSkinFriction(const std::string& input, const std::vector<std::string>& fields) {
+    std::string ext = std::filesystem::path(input).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".foam" && ext != ".vtu" && ext != ".vtk") return false;
+    for (const std::string& f : fields) {
+        std::string n = f;
+        std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (n == "skin-friction") return false;  // already read
+        if (n == "u" || n == "velocity" || n == "vel") return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void ViewPipeline::load(const RenderOptions& o, const std::vector<methods::Method>& views) {
@@ -47,6 +65,7 @@ void ViewPipeline::load(const RenderOptions& o, const std::vector<methods::Metho
     const core::SurfaceMesh first = steps->load(o.timeStepGiven ? o.timeStep : 0);
     std::vector<std::string> fields;
     for (const auto& f : first.fields) fields.push_back(f.name);
+    if (offersSkinFriction(o.input, fields)) fields.push_back("skin-friction");
     // The playback checks the field and loads the first step: errors surface here, and
     // the old data and its renderers stay.
     playback_.setViews(views);

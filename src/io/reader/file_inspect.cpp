@@ -4,6 +4,7 @@
 #include "io/reader/file_inspect.h"
 
 #include "io/reader/reader_wire.h"
+#include "io/reader/skin_friction.h"
 #include "io/reader/surface_pipeline.h"
 #include "io/reader/vtk_messages.h"
 #include "io/reader/vtk_sources.h"
@@ -50,6 +51,21 @@ PartInfo partOf(vtkDataSet* ds, const std::string& name) {
     return part;
 }
 
+// What --field skin-friction would take in a volume file's first step.
+std::string volumeSkinFrictionNote(vtkDataObject* raw, const SourceOptions& options) {
+    std::string velocity;
+    bool volume = false;
+    forEachNamedLeaf(raw, [&](vtkDataSet* ds, const std::string&) {
+        if (!hasVolumeCells(ds)) return;
+        volume = true;
+        if (velocity.empty()) velocity = findVelocityArray(ds);
+    });
+    if (!volume) return {};
+    if (velocity.empty()) return "not available: the volume has no velocity (a 3-component array named U, velocity or vel)";
+    return "from " + velocity + " in the cells next to the boundary surface; " +
+           (options.viscosity > 0 ? "nu from --viscosity" : "a relative magnitude unless --viscosity is given");
+}
+
 }  // namespace
 
 FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) {
@@ -74,6 +90,8 @@ FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) 
     info.points = mesh.vertexCount();
     info.triangles = mesh.triangleCount();
     info.bounds = mesh.bounds();
+    info.skinFriction = info.format.rfind("OpenFOAM", 0) == 0 ? foamSkinFrictionNote(path, options)
+                                                              : volumeSkinFrictionNote(raw, options);
     return info;
 }
 

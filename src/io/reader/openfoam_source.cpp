@@ -4,12 +4,14 @@
 // them too, as ParaView's Skip Zero Time off), a time directory VTK cannot parse left out
 // with a warning naming it, points re-read for time directories that have polyMesh/points
 // (moving meshes), and each field's units from its `dimensions` (VTK's "m/s" notation, kept
-// on the arrays as UNITS_LABEL).
+// on the arrays as UNITS_LABEL). With --field skin-friction the internal mesh is read too,
+// the wall patches get the derived stress from it (openfoam_walls.h), and it is dropped.
 // Sections: case layout · directories VTK may not parse · units and VTK's warnings ·
 // the source · openOpenFoam.
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
+#include "io/reader/openfoam_walls.h"
 
 #include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
@@ -30,7 +32,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
+#include <sstream>
 
 namespace flowsurf::io::detail {
 
@@ -272,17 +276,25 @@ public:
         times_ = std::move(kept);
     }
 
+    // Derive skin-friction on the wall patches of every step (the internal mesh is read).
+    void deriveSkinFriction(FoamWalls walls) { walls_ = std::move(walls); }
+
 protected:
     void afterUpdate(VtkMessageTrap& trap) override { warnMissingPatchEntries(trap.warnings(), path()); }
-    void adapt(vtkDataObject& step) override { moveUnitsToLabels(&step, units_); }
+    void adapt(vtkDataObject& step) override {
+        moveUnitsToLabels(&step, units_);
+        if (walls_) addFoamSkinFriction(step, *walls_, path());
+    }
 
 private:
     std::map<std::string, std::string> units_;
+    std::optional<FoamWalls> walls_;
 };
 
 // Boundary patches only: the surface to show is the walls, not the volume. --patches
 // matches the patch's own name (VTK lists boundary patches as "patch/NAME").
-void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::string& patches) {
+// `volume`: the internal mesh too (for skin-friction, dropped after).
+void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::string& patches, bool volume) {
     std::regex select;
     try {
         select = std::regex(patches.empty() ? ".*" : patches);
@@ -298,31 +310,85 @@ void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::str
         if (keep) all += (all.empty() ? "" : ", ") + bare;
         keep = keep && std::regex_match(bare, select);
         kept += keep;
-        r->SetPatchArrayStatus(name.c_str(), keep ? 1 : 0);
+        r->SetPatchArrayStatus(name.c_str(), keep || (volume && name == "internalMesh") ? 1 : 0);
     }
     if (kept == 0)
         throw ConfigError(path + ": --patches '" + patches + "' matches no boundary patch (patches: " + all + ")");
 }
 
+// How skin-friction is derived on this case: the wall patches from the boundary file of
+// the mesh read (`meshRoot`: the case or processor0), the viscosity given or the case's.
+FoamWalls foamWalls(vtkOpenFOAMReader* r, const std::string& path, const fs::path& meshRoot, const SourceOptions& options,
+                    bool warn = true) {
+    bool velocity = false, volume = false;
+    for (int i = 0; i < r->GetNumberOfCellArrays(); ++i) velocity = velocity || std::string(r->GetCellArrayName(i)) == "U";
+    for (int i = 0; i < r->GetNumberOfPatchArrays(); ++i) volume = volume || std::string(r->GetPatchArrayName(i)) == "internalMesh";
+    if (!volume) throw FormatError(path + ": --field skin-friction: the case has no internal mesh");
+    if (!velocity)
+        throw FieldError(path + ": --field skin-friction needs the velocity field U in the time directories; the case has none");
+    FoamWalls walls;
+    walls.types = readPatchTypes(meshRoot / "constant" / "polyMesh");
+    walls.options.velocity = "U";
+    walls.options.wallVelocity = "U";          // the patch's own value: a moving wall's velocity, zero at rest
+    walls.options.turbulentViscosity = "nut";  // wall functions' ν_t on the wall face
+    walls.options.warn = warnOnce;
+    std::string from = "--viscosity";
+    walls.options.viscosity = options.viscosity > 0 ? options.viscosity : readCaseViscosity(caseDir(path), from);
+    std::ostringstream nu;
+    nu << walls.options.viscosity;
+    walls.described = walls.options.viscosity > 0 ? "nu = " + nu.str() + " m^2/s from " + from
+                                                  : "no viscosity known, relative magnitude";
+    if (warn && walls.options.viscosity <= 0)
+        warnOnce(path + ": --field skin-friction: no viscosity (--viscosity, or nu in constant/transportProperties or "
+                 "physicalProperties): the direction and a relative magnitude (the wall velocity gradient, 1/s)");
+    return walls;
+}
+
 }  // namespace
 
 // --- openOpenFoam -------------------------------------------------------------------------
+namespace {
+
+vtkSmartPointer<vtkOpenFOAMReader> newReader(bool decomposed) {
+    if (!decomposed) return vtkSmartPointer<vtkOpenFOAMReader>::New();
+    // One reader per processor directory, appended patch by patch; VTK's parallel
+    // reader wants a controller even in one process.
+    auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
+    p->SetController(vtkSmartPointer<vtkDummyController>::New());
+    p->SetCaseType(vtkPOpenFOAMReader::DECOMPOSED_CASE);
+    return p;
+}
+
+}  // namespace
+
+std::string foamSkinFrictionNote(const std::string& path, const SourceOptions& options) {
+    VtkMessageTrap trap;
+    SourceOptions with = options;
+    with.skinFriction = true;
+    try {
+        const bool decomposed = readsDecomposed(path, options.foamCase);
+        vtkSmartPointer<vtkOpenFOAMReader> r = newReader(decomposed);
+        r->SetFileName(path.c_str());
+        trap.watch(r);
+        readInformation(r, path, "OpenFOAM case", trap);
+        const FoamWalls walls = foamWalls(r, path, decomposed ? processorDirs(caseDir(path)).front() : caseDir(path), with, false);
+        std::string names;
+        for (const auto& [name, type] : walls.types)
+            if (isWallType(type)) names += (names.empty() ? "" : ", ") + name;
+        return "from U in the cells next to the wall patches" + (names.empty() ? std::string() : " (" + names + ")") +
+               "; " + walls.described;
+    } catch (const Error& e) {
+        return std::string("not available: ") + e.what();
+    }
+}
+
 std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::string& caseFormat, VtkMessageTrap& trap,
                                          const SourceOptions& options) {
-    vtkSmartPointer<vtkOpenFOAMReader> r;
     std::string format = caseFormat;
     const bool readsDecomposedLayout = readsDecomposed(path, options.foamCase);
-    if (readsDecomposedLayout) {
-        // One reader per processor directory, appended patch by patch; VTK's parallel
-        // reader wants a controller even in one process.
-        auto p = vtkSmartPointer<vtkPOpenFOAMReader>::New();
-        p->SetController(vtkSmartPointer<vtkDummyController>::New());
-        p->SetCaseType(vtkPOpenFOAMReader::DECOMPOSED_CASE);
+    vtkSmartPointer<vtkOpenFOAMReader> r = newReader(readsDecomposedLayout);
+    if (readsDecomposedLayout)
         format += " (decomposed, " + std::to_string(processorDirs(caseDir(path)).size()) + " processor directories)";
-        r = p;
-    } else {
-        r = vtkSmartPointer<vtkOpenFOAMReader>::New();
-    }
     r->SetFileName(path.c_str());
     // The initial conditions in 0/ are no result: skipped, as ParaView does, when a solver
     // wrote later times; a case with only 0/ (a mesh, a moving-mesh set-up) is that step.
@@ -338,12 +404,20 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
     r->CacheMeshOn();
     trap.watch(r);
     readInformation(r, path, format, trap);
-    selectPatches(r, path, options.patches);
+    selectPatches(r, path, options.patches, options.skinFriction);
+    // Polyhedra kept whole: a wall face then has one owner cell, whose centre is the mean of its points.
+    if (options.skinFriction) r->DecomposePolyhedraOff();
     r->EnableAllCellArrays();
     r->EnableAllPointArrays();
     r->DisableAllLagrangianArrays();
     readInformation(r, path, format, trap);
+    std::optional<FoamWalls> walls;
+    if (options.skinFriction) {
+        walls = foamWalls(r, path, readsDecomposedLayout ? timeRoot : caseDir(path), options);
+        format += " (skin-friction: " + walls->described + ")";
+    }
     auto source = std::make_unique<OpenFoamSource>(r, path, format, trap);
+    if (walls) source->deriveSkinFriction(*walls);
     source->dropUnparsedTimes(timeRoot);
     return source;
 }

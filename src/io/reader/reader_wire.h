@@ -135,6 +135,8 @@ void record(Io& io, R& r) {
         io.field(r.options.patches);
         io.field(r.options.foamCase);
         io.field(r.options.zeroTime);
+        io.field(r.options.skinFriction);
+        io.field(r.options.viscosity);
     }
     if (r.op == Op::Step) io.field(r.step);
 }
@@ -187,6 +189,7 @@ void record(Io& io, Info& info) {
         io.field(p.faces);
         io.field(p.read);
     });
+    io.field(info.skinFriction);
 }
 
 }  // namespace flowsurf::io::wire

@@ -268,14 +268,15 @@ struct Format {
     const char* extension;
     const char* name;
     Opener open;
+    bool surfaceOnly = false;  // cannot hold a volume (skin-friction)
 };
 const Format kFormats[] = {
-    {".vtp", "VTK XML PolyData", openVtk<vtkXMLPolyDataReader>},
+    {".vtp", "VTK XML PolyData", openVtk<vtkXMLPolyDataReader>, true},
     {".vtu", "VTK XML UnstructuredGrid", openVtk<vtkXMLUnstructuredGridReader>},
     {".vtk", "VTK legacy", openLegacy},
-    {".ply", "Stanford PLY", openParsed<readPly>},
-    {".obj", "Wavefront OBJ", openParsed<readObj>},
-    {".stl", "STL", openStl},
+    {".ply", "Stanford PLY", openParsed<readPly>, true},
+    {".obj", "Wavefront OBJ", openParsed<readObj>, true},
+    {".stl", "STL", openStl, true},
     {".foam", "OpenFOAM case", openOpenFoam},
     {".e", "Exodus II", openExodus},
     {".ex2", "Exodus II", openExodus},
@@ -299,7 +300,13 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
     // The .foam file is an empty marker in the case folder: only its presence counts.
     checkReadable(path, ext == ".foam");
     if (!format) throw FormatError(path + ": unknown file extension '" + ext + "' (supported: " + supported + ")");
-    return format->open(path, format->name, trap, options);
+    if (options.skinFriction && format->surfaceOnly)
+        throw FormatError(path + ": --field skin-friction needs a volume mesh with its velocity (an OpenFOAM case, a "
+                                 ".vtu/.vtk volume, EnSight or Exodus volume parts); " + format->name +
+                          " holds a surface only");
+    std::unique_ptr<StepSource> source = format->open(path, format->name, trap, options);
+    if (options.skinFriction && ext != ".foam") return withSkinFriction(std::move(source), options);
+    return source;
 }
 
 }  // namespace flowsurf::io::detail

@@ -75,11 +75,19 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
 // --patches.
 std::unique_ptr<StepSource> openCgns(const std::string& path, const std::string& format, VtkMessageTrap& trap,
                                      const SourceOptions& options);
+// What `flowsurf info` says of --field skin-friction on an OpenFOAM case: where it comes
+// from and the viscosity, or "not available: why" (the header is read, not the mesh).
+std::string foamSkinFrictionNote(const std::string& path, const SourceOptions& options);
+
+// `inner`'s steps with each volume data set replaced by its boundary surface carrying the
+// derived skin-friction (volume_walls.cpp); the first step without volume cells throws FormatError.
+std::unique_ptr<StepSource> withSkinFriction(std::unique_ptr<StepSource> inner, const SourceOptions& options);
 
 // Picks the reader by extension (case-insensitive) and reads the file's metadata.
 // Throws IoError (missing, unreadable, a folder) or FormatError (unknown extension,
 // empty file, header the reader refuses). Every reader is watched by `trap`.
-// `options`: OpenFOAM's boundary patches and case layout.
+// `options`: OpenFOAM's boundary patches and case layout; skin-friction (FormatError for a
+// format that holds surfaces only).
 std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& trap, const SourceOptions& options = {});
 
 }  // namespace flowsurf::io::detail

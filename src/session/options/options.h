@@ -75,6 +75,7 @@ struct RenderOptions {
     std::string patches;                // --patches REGEX: OpenFOAM boundary patches to read
     std::string foamCase = "auto";      // --foam-case auto|reconstructed|decomposed
     bool foamZeroTime = false;          // --foam-zero-time: 0/ a step also when solved times exist
+    double viscosity = 0.0;             // --viscosity: kinematic m²/s for --field skin-friction (0: the case's own)
     // Dye [doc/algorithms.md §10]: sources (--dye, repeatable) and those of --dye-file, each emitting from
     // its start frame for --dye-release frames (0: continuously) unless its stop frame says.
     std::vector<methods::DyeSource> dye;

@@ -55,7 +55,13 @@ std::vector<OptionSpec> readRows() {
     return {
         text("field", {G::Data, E::Reload, CommandLine | Config},
              "Vector array to show (default: the first 3-component point array that is not zero everywhere in the "
-             "series), or a derived field: curvature-max, curvature-min, gradient:ARRAY, down:x,y,z", FS_REF(field)),
+             "series), or a derived field: curvature-max, curvature-min, gradient:ARRAY, down:x,y,z, skin-friction (the "
+             "wall shear stress from the velocity next to the walls of a volume: OpenFOAM, .vtu/.vtk volumes)",
+             FS_REF(field)),
+        number("viscosity", {G::Data, E::Reload, CommandLine | Config | Read},
+               "Kinematic viscosity in m^2/s for --field skin-friction (0: OpenFOAM's nu from constant/"
+               "transportProperties or physicalProperties; none known: direction and a relative magnitude)",
+               &RenderOptions::viscosity, 0, 1e30),
         number("curvature-radius", {G::Data, E::Rebuild, CommandLine | Config | Renderer},
                "Derived curvature fields: average the curvature tensor over this radius (object units; 0: one-ring "
                "estimate only)", &RenderOptions::curvatureRadius, 0, 1e30),

@@ -1,0 +1,123 @@
+// Sections: case dictionaries · addFoamSkinFriction.
+#include "io/reader/openfoam_walls.h"
+
+#include "core/errors.h"
+
+#include <vtkCellData.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkPolyData.h>
+
+#include <fstream>
+#include <regex>
+
+namespace flowsurf::io::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A dictionary's text without // and /* */ comments (enough for the few plain entries read
+// here; a file over 4 MiB, a binary mesh file's data, is cut there: the entries read come first).
+std::string dictionaryText(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return {};
+    std::string text(size_t(4) << 20, '\0');
+    text.resize(size_t(in.read(text.data(), std::streamsize(text.size())).gcount()));
+    static const std::regex comments(R"(//[^\n]*|/\*[\s\S]*?\*/)");
+    return std::regex_replace(text, comments, " ");
+}
+
+}  // namespace
+
+// --- case dictionaries -------------------------------------------------------------------
+std::map<std::string, std::string> readPatchTypes(const fs::path& meshDir) {
+    std::map<std::string, std::string> types;
+    const std::string text = dictionaryText(meshDir / "boundary");
+    // After the FoamFile header: N ( name { type T; ... } ... ); patch dictionaries hold no braces.
+    const size_t list = text.find('(', text.find("FoamFile") == std::string::npos ? 0 : text.find('}') + 1);
+    if (list == std::string::npos) return types;
+    static const std::regex entry(R"(([A-Za-z_][\w.:\-]*)\s*\{([^{}]*)\})");
+    static const std::regex type(R"((?:^|[;\s])type\s+(\w+)\s*;)");
+    for (auto it = std::sregex_iterator(text.begin() + std::ptrdiff_t(list), text.end(), entry);
+         it != std::sregex_iterator(); ++it) {
+        std::smatch t;
+        const std::string body = (*it)[2].str();
+        if (std::regex_search(body, t, type)) types[(*it)[1].str()] = t[1].str();
+    }
+    return types;
+}
+
+double readCaseViscosity(const fs::path& caseDir, std::string& from) {
+    static const std::regex nu(R"((?:^|[;\s{])nu\s+(?:nu\s+)?(?:\[[^\]]*\]\s*)?([-+0-9.eE]+)\s*;)");
+    for (const char* name : {"transportProperties", "physicalProperties"}) {
+        const fs::path file = caseDir / "constant" / name;
+        const std::string text = dictionaryText(file);
+        std::smatch m;
+        if (!std::regex_search(text, m, nu)) continue;
+        char* end = nullptr;
+        const double value = std::strtod(m[1].str().c_str(), &end);
+        if (*end == '\0' && value > 0) {
+            from = (fs::path("constant") / name).string();
+            return value;
+        }
+    }
+    return 0.0;
+}
+
+bool isWallType(const std::string& type) { return type == "wall" || type.find("Wall") != std::string::npos; }
+
+// --- addFoamSkinFriction ---------------------------------------------------------------------
+void addFoamSkinFriction(vtkDataObject& step, const FoamWalls& walls, const std::string& where) {
+    auto* composite = vtkCompositeDataSet::SafeDownCast(&step);
+    if (!composite) throw FormatError(where + ": --field skin-friction: VTK's OpenFOAM reader gave no blocks");
+    vtkDataSet* volume = nullptr;
+    std::vector<vtkPolyData*> wallPatches, otherPatches;
+    std::vector<std::string> wallNames;
+    auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
+        auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+        const std::string name = it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME())
+                                     ? it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME())
+                                     : "";
+        if (!ds) continue;
+        if (name == "internalMesh") {
+            volume = ds;
+            continue;
+        }
+        auto* patch = vtkPolyData::SafeDownCast(ds);
+        if (!patch) continue;
+        const auto type = walls.types.find(name);
+        // Without the boundary file every patch is taken as a wall.
+        const bool wall = walls.types.empty() || (type != walls.types.end() && isWallType(type->second));
+        (wall ? wallPatches : otherPatches).push_back(patch);
+        if (wall) wallNames.push_back("patch '" + name + "'");
+    }
+    if (!volume || volume->GetNumberOfCells() == 0)
+        throw FormatError(where + ": --field skin-friction: the case has no internal mesh to take the wall gradient in");
+    if (wallPatches.empty())
+        throw FormatError(where + ": --field skin-friction: none of the patches read is a wall (type wall in "
+                                  "constant/polyMesh/boundary); --patches selects which are read");
+    addSkinFriction(volume, wallPatches, wallNames, walls.options, where);
+    for (vtkPolyData* p : otherPatches) {
+        auto zero = vtkSmartPointer<vtkDoubleArray>::New();
+        zero->SetName(kSkinFrictionName);
+        zero->SetNumberOfComponents(3);
+        zero->SetNumberOfTuples(p->GetNumberOfCells());
+        zero->Fill(0.0);
+        zero->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(walls.options.viscosity).c_str());
+        p->GetCellData()->AddArray(zero);
+    }
+    // The surface is the patches: the volume goes before the surface stages see it.
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+        if (it->GetCurrentDataObject() == volume) {
+            composite->SetDataSet(it, nullptr);
+            break;
+        }
+}
+
+}  // namespace flowsurf::io::detail
