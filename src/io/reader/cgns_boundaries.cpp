@@ -341,7 +341,7 @@ void checkSolutionPointers(const CgnsFile& f, int b, int z, const CgnsZone& zone
 
 }  // namespace
 
-bool isWallType(const std::string& type) { return type.rfind("BCWall", 0) == 0; }
+bool isCgnsWallType(const std::string& type) { return type.rfind("BCWall", 0) == 0; }
 
 std::vector<CgnsZone> readCgnsZones(const std::string& path) {
     const CgnsFile f(path);

@@ -40,6 +40,6 @@ std::vector<CgnsZone> readCgnsZones(const std::string& path);
 
 // Whether a BC type is a solid wall: the body a wall-flow texture is drawn on (inviscid
 // walls included: an Euler solution's body).
-bool isWallType(const std::string& type);
+bool isCgnsWallType(const std::string& type);
 
 }  // namespace flowsurf::io::detail

@@ -68,7 +68,7 @@ std::vector<std::vector<size_t>> selectPatches(const std::vector<CgnsZone>& zone
     for (size_t z = 0; z < zones.size(); ++z)
         for (size_t i = 0; i < zones[z].patches.size(); ++i) {
             const CgnsPatch& p = zones[z].patches[i];
-            const bool keep = patches.empty() ? isWallType(p.type)
+            const bool keep = patches.empty() ? isCgnsWallType(p.type)
                                               : std::regex_match(p.name, select) ||
                                                     (!p.family.empty() && std::regex_match(p.family, select));
             if (keep) kept[z].push_back(i), ++count;

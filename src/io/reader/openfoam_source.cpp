@@ -374,7 +374,7 @@ std::string foamSkinFrictionNote(const std::string& path, const SourceOptions& o
         const FoamWalls walls = foamWalls(r, path, decomposed ? processorDirs(caseDir(path)).front() : caseDir(path), with, false);
         std::string names;
         for (const auto& [name, type] : walls.types)
-            if (isWallType(type)) names += (names.empty() ? "" : ", ") + name;
+            if (isFoamWallType(type)) names += (names.empty() ? "" : ", ") + name;
         return "from U in the cells next to the wall patches" + (names.empty() ? std::string() : " (" + names + ")") +
                "; " + walls.described;
     } catch (const Error& e) {

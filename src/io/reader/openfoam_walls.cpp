@@ -68,7 +68,7 @@ double readCaseViscosity(const fs::path& caseDir, std::string& from) {
     return 0.0;
 }
 
-bool isWallType(const std::string& type) { return type == "wall" || type.find("Wall") != std::string::npos; }
+bool isFoamWallType(const std::string& type) { return type == "wall" || type.find("Wall") != std::string::npos; }
 
 // --- addFoamSkinFriction ---------------------------------------------------------------------
 void addFoamSkinFriction(vtkDataObject& step, const FoamWalls& walls, const std::string& where) {
@@ -93,7 +93,7 @@ void addFoamSkinFriction(vtkDataObject& step, const FoamWalls& walls, const std:
         if (!patch) continue;
         const auto type = walls.types.find(name);
         // Without the boundary file every patch is taken as a wall.
-        const bool wall = walls.types.empty() || (type != walls.types.end() && isWallType(type->second));
+        const bool wall = walls.types.empty() || (type != walls.types.end() && isFoamWallType(type->second));
         (wall ? wallPatches : otherPatches).push_back(patch);
         if (wall) wallNames.push_back("patch '" + name + "'");
     }

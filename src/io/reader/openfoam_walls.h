@@ -24,7 +24,7 @@ std::map<std::string, std::string> readPatchTypes(const std::filesystem::path& m
 double readCaseViscosity(const std::filesystem::path& caseDir, std::string& from);
 
 // A patch type OpenFOAM treats as a wall: wall, or a kind of it (mappedWall).
-bool isWallType(const std::string& type);
+bool isFoamWallType(const std::string& type);
 
 // How a case's steps get skin-friction.
 struct FoamWalls {
