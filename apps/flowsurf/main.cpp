@@ -43,10 +43,17 @@ int reportCurrentError() {
     }
 }
 
+// "isa,ibfvs,hybrid": the methods of the table, comma-separated.
+std::string everyMethod() {
+    std::string list;
+    for (const auto& [m, name] : methods::kMethodNames) list += (list.empty() ? "" : ",") + std::string(name);
+    return list;
+}
+
 // The subcommands, and what parsing the command line fills in for each.
 struct Commands {
     app::RenderOptions render, compare, quality, view, topology;
-    std::string compareMethods = "isa,ibfvs,hybrid", qualityMethods = "isa,ibfvs,hybrid";
+    std::string compareMethods = everyMethod(), qualityMethods = everyMethod();
     app::QualityOutput renderQuality, compareQuality, qualityOut;
     bool autoTune = false;
     app::view::ViewOptions viewOpts;
