@@ -134,7 +134,7 @@ public:
         core::Camera camera;
         double time = 0.0;    // data time (0: steady)
         uint32_t clock = 0;   // its noise clock k
-        int frame = 0;        // k less the warm-up frames before it: a movie's frame number
+        int frame = 0;        // k less the finished warm-up: animation frame f reads f, as a movie numbers it
         const skeleton::Skeleton* topology = nullptr;  // the flow topology it drew (--topology on)
     };
     const Drawn& lastFrame() const { return last_; }
