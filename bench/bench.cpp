@@ -26,6 +26,8 @@
 
 namespace flowsurf::bench {
 
+static_assert(session::namesEveryValue(kBenchCameraNames));
+
 namespace {
 
 // Table columns; each method's stages count towards one.

@@ -16,7 +16,8 @@ namespace flowsurf::bench {
 // Camera placement: our default framing, or ParaView's ResetCamera (the bounding box's
 // sphere fills a 30 degree view), for like-for-like comparisons.
 enum class BenchCamera { Fit, ParaView };
-inline constexpr methods::EnumNames<BenchCamera, 2> kBenchCameraNames{
+inline constexpr size_t kBenchCameras = size_t(BenchCamera::ParaView) + 1;  // the last one + 1
+inline constexpr methods::EnumNames<BenchCamera, kBenchCameras> kBenchCameraNames{
     {{BenchCamera::Fit, "fit"}, {BenchCamera::ParaView, "paraview"}}};
 
 struct BenchOptions {

@@ -296,12 +296,12 @@ void bindOptions(py::module_& m) {
             rows.append(py::dict(py::arg("name") = o.name, py::arg("group") = o.group, py::arg("help") = o.help,
                                  py::arg("kind") = o.kind, py::arg("min") = o.min, py::arg("max") = o.max,
                                  py::arg("choices") = o.choices, py::arg("default") = o.defaultValue,
-                                 py::arg("separator") = o.separator));
+                                 py::arg("separator") = o.separator, py::arg("methods") = o.methods));
         return rows;
     };
     m.def("option_info", [rows] { return rows(Renderer::optionInfo()); },
-          "The render options described (name, group, help, kind, min, max, choices, default, separator), in "
-          "--help order");
+          "The render options described (name, group, help, kind, min, max, choices, default, separator, "
+          "methods: those whose images it changes), in --help order");
     m.def("read_option_info", [rows] { return rows(Renderer::readOptionInfo()); },
           "The options of read() described as option_info() describes the render options");
 }

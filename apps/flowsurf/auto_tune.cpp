@@ -21,17 +21,20 @@ namespace flowsurf::app {
 
 namespace {
 
-// The grid: option names of the table and the values tried, per kind of method.
+// The grid: option names of the table and the values tried; a method's grid has the axes
+// whose rows apply to it (OptionSpec::appliesTo), in this order.
 struct Axis {
     const char* option;
     std::vector<const char*> values;
 };
-const std::vector<Axis>& gridFor(methods::Method m) {
-    static const std::vector<Axis> imageSpace{
-        {"step-px", {"2", "4", "6"}}, {"alpha", {"0.05", "0.08", "0.15"}}, {"noise-scale", {"2", "3"}}};
-    static const std::vector<Axis> lic{
-        {"filter-length", {"15", "31", "61"}}, {"lic-step-px", {"1", "2", "3"}}, {"noise-scale", {"2", "3"}}};
-    return m == methods::Method::Hybrid ? lic : imageSpace;
+std::vector<Axis> gridFor(methods::Method m) {
+    static const std::vector<Axis> axes{{"filter-length", {"15", "31", "61"}}, {"lic-step-px", {"1", "2", "3"}},
+                                        {"step-px", {"2", "4", "6"}},          {"alpha", {"0.05", "0.08", "0.15"}},
+                                        {"noise-scale", {"2", "3"}}};
+    std::vector<Axis> grid;
+    for (const Axis& a : axes)
+        if (findOption(a.option)->appliesTo(m)) grid.push_back(a);
+    return grid;
 }
 
 struct Trial {
@@ -85,7 +88,7 @@ int runAutoTune(const RenderOptions& o, const std::string& methodList, const Qua
     gl::HeadlessContext context(o.verbose);
 
     for (methods::Method name : names) {
-        const std::vector<Axis>& axes = gridFor(name);
+        const std::vector<Axis> axes = gridFor(name);
         const auto grid = combinations(axes);
         const std::string method(methods::nameOf(methods::kMethodNames, name));
         std::vector<Trial> trials;
@@ -98,7 +101,7 @@ int runAutoTune(const RenderOptions& o, const std::string& methodList, const Qua
             Trial t;
             t.values = values;
             t.ms = advanceMeasured(playback, oc.frames, q.every, true);
-            const quality::QualitySummary s = playback.qualitySummary(0);
+            const quality::QualitySummary s = playback.quality().summary(0);
             t.error = s.median.orientationErrorDeg;
             t.correlation = s.median.frameCorrelationReprojected;
             t.counted = s.median.countedFraction;

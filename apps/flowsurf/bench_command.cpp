@@ -39,33 +39,10 @@ void parseSlowdown(const std::string& text, bench::BenchOptions& b) {
 
 }  // namespace
 
-int runBench(const BenchOptions& o) {
-    bench::BenchOptions b;
-    b.frames = o.frames;
-    b.methods.clear();
-    for (const auto& m : o.methods) b.methods.push_back(parseName(methods::kMethodNames, m, "--methods"));
-    b.triangles = o.triangles;
-    b.imageSizes.clear();
-    for (const auto& s : o.sizes) b.imageSizes.push_back(parseSize(s, "--sizes"));
-    b.gridRes = o.grids;
-    b.filterLengths = o.lengths;
-    b.dynamicOnly = o.dynamicOnly;
-    b.camera = parseName(bench::kBenchCameraNames, o.camera, "--camera");
-    b.glPaths.clear();
-    for (const auto& p : o.glPaths) b.glPaths.push_back(parseName(methods::kGlPathNames, p, "--gl-paths"));
-    b.surfaceRasters.clear();
-    for (const auto& r : o.surfaceRasters)
-        b.surfaceRasters.push_back(parseName(methods::kSurfaceRasterNames, r, "--surface-rasters"));
-    b.enhanceContrast.clear();
-    for (const auto& e : o.enhanceContrast)
-        b.enhanceContrast.push_back(parseName(methods::kEnhanceContrastNames, e, "--enhance-contrast"));
-    b.ranks = o.ranks;
-    b.parallel.clear();
-    for (const auto& m : o.parallel) b.parallel.push_back(parseName(methods::kParallelModeNames, m, "--parallel"));
-    b.stageTimes = !o.noStageTimes;
-    b.calibration = o.calibration;
-    if (!o.slowdown.empty()) parseSlowdown(o.slowdown, b);
-    if (o.quick) {
+int runBench(const BenchCommand& command) {
+    bench::BenchOptions b = command.suite;
+    if (!command.slowdown.empty()) parseSlowdown(command.slowdown, b);
+    if (command.quick) {
         b.triangles = {10'000, 220'000};
         b.imageSizes = {{512, 512}};
         b.gridRes = {128, 256};
@@ -77,21 +54,21 @@ int runBench(const BenchOptions& o) {
     // The driver and its version, for figures from several machines (bench/gpu/run.sh).
     std::printf("GL driver: %s; %s\n", reinterpret_cast<const char*>(glGetString(GL_VENDOR)),
                 reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-    if (o.transfers) {
-        bench::runTransfers(b.imageSizes, std::max(o.frames, 5));
+    if (command.transfers) {
+        bench::runTransfers(b.imageSizes, std::max(b.frames, 5));
         return 0;
     }
     if (b.slowdownFactor > 1)
         std::printf("--slowdown: every frame of %s rendered %d times (a test of the speed check, not a measurement)\n",
                     std::string(methods::nameOf(methods::kMethodNames, *b.slowdownMethod)).c_str(), b.slowdownFactor);
     std::vector<bench::BenchRow> rows = bench::runBench(b);
-    if (!o.csv.empty()) {
-        std::string tmp = o.csv + ".tmp";
+    if (!b.csv.empty()) {
+        std::string tmp = b.csv + ".tmp";
         std::ofstream f(tmp);
         f << bench::formatCsv(rows);
-        if (!f.good() || (f.close(), std::rename(tmp.c_str(), o.csv.c_str()) != 0)) {
+        if (!f.good() || (f.close(), std::rename(tmp.c_str(), b.csv.c_str()) != 0)) {
             std::remove(tmp.c_str());
-            throw IoError(o.csv + ": cannot write the CSV file");
+            throw IoError(b.csv + ": cannot write the CSV file");
         }
     }
     return 0;

@@ -42,6 +42,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         else
             opt = cmd.add_option_function<std::string>(names, [&o, s](const std::string& v) { s->set(o, v); }, help);
         static const char* const kTypeNames[] = {"", "INT", "FLOAT", "TEXT", "CHOICE", "WxH", "X,Y,Z", "COLOR", "PATH"};
+        static_assert(std::size(kTypeNames) == session::kOptionKinds, "one type name per OptionKind");
         opt->group(groupName(s->role.group))->type_name(kTypeNames[int(s->kind)]);
     }
     cmd.add_flag("--list-builtins", o.listBuiltins, "List the built-in scenes and exit");

@@ -1,6 +1,7 @@
 // flowsurf — the subcommands of the command-line program.
 #pragma once
 
+#include "bench.h"
 #include "cli_options.h"
 #include "io/dataset_reader.h"
 #include "quality_report.h"
@@ -29,27 +30,14 @@ int runQuality(const RenderOptions& options, const std::string& methods, const Q
 // front of orientation error, frame correlation and ms/frame, and the best trade.
 int runAutoTune(const RenderOptions& options, const std::string& methods, const QualityOutput& quality);
 
-struct BenchOptions {
-    std::string csv;          // also write CSV here
-    int frames = 20;          // timed frames per row
+// `flowsurf bench`: the suite's options (the command line sets them by name) and what only
+// the command does.
+struct BenchCommand {
+    bench::BenchOptions suite;
     bool quick = false;       // a small subset (for smoke runs)
-    std::vector<std::string> methods = ::flowsurf::methods::names(::flowsurf::methods::kMethodNames);
-    std::vector<long> triangles{10'000, 80'000, 220'000, 1'000'000};
-    std::vector<std::string> sizes{"512x512", "1024x1024"};
-    std::vector<int> grids{128, 256, 512, 1024};
-    std::vector<int> lengths{10, 25, 50, 100};
-    bool dynamicOnly = false;
-    std::string camera = "fit";
-    std::vector<std::string> glPaths{"auto"};
-    std::vector<std::string> surfaceRasters{"auto"};
-    std::vector<std::string> enhanceContrast{"off"};  // --enhance-contrast: each variant a row
-    std::vector<int> ranks{1};                        // --ranks: each count a row
-    std::vector<std::string> parallel{"tiles"};       // --parallel: each mode a row (ranks > 1)
-    bool noStageTimes = false;
-    bool calibration = false;
     bool transfers = false;   // --transfers: only the host transfer timings (bench/transfers.h)
     std::string slowdown;     // METHOD:K, hidden: proves scripts/bench-check.sh fails
 };
-int runBench(const BenchOptions& options);
+int runBench(const BenchCommand& command);
 
 }  // namespace flowsurf::app

@@ -24,7 +24,7 @@ std::vector<methods::Method> splitMethods(const std::string& list) {
 }
 
 double advanceMeasured(Playback& playback, int frames, int every, bool warmUp) {
-    playback.setQuality(every);
+    playback.quality().configure(every);
     playback.start(warmUp);
     double ms = 0.0;
     for (int k = 0; k <= frames; ++k) {
@@ -33,7 +33,7 @@ double advanceMeasured(Playback& playback, int frames, int every, bool warmUp) {
         playback.advance();
         glFinish();
         ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() -
-              playback.qualityMsLastFrame();
+              playback.quality().msLastFrame();
     }
     return ms / (frames + 1);
 }
@@ -72,7 +72,7 @@ int runCompare(const RenderOptions& o, const std::string& methodList, const Qual
                  (o.frames + 1);
         } else {
             ms = advanceMeasured(playback, o.frames, quality.every, false);  // as above: no warm-up
-            qualities.push_back({playback.view(0).name(), ms, playback.qualityFrames(0), playback.qualitySummary(0)});
+            qualities.push_back({playback.view(0).name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
         }
         const methods::FlowMethod* method = &playback.view(0);
         std::vector<uint8_t> img = gl::readRgb8TopDown(method->composite());

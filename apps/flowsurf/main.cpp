@@ -43,16 +43,23 @@ int reportCurrentError() {
     }
 }
 
+// "isa,ibfvs,hybrid": the methods of the table, comma-separated.
+std::string everyMethod() {
+    std::string list;
+    for (const auto& [m, name] : methods::kMethodNames) list += (list.empty() ? "" : ",") + std::string(name);
+    return list;
+}
+
 // The subcommands, and what parsing the command line fills in for each.
 struct Commands {
     app::RenderOptions render, compare, quality, view, topology;
-    std::string compareMethods = "isa,ibfvs,hybrid", qualityMethods = "isa,ibfvs,hybrid";
+    std::string compareMethods = everyMethod(), qualityMethods = everyMethod();
     app::QualityOutput renderQuality, compareQuality, qualityOut;
     bool autoTune = false;
     app::view::ViewOptions viewOpts;
     std::string infoPath;
     session::RenderOptions infoRead;  // how info reads the file
-    app::BenchOptions bench;
+    app::BenchCommand bench;
     CLI::App *renderCmd = nullptr, *compareCmd = nullptr, *qualityCmd = nullptr, *viewCmd = nullptr,
              *infoCmd = nullptr, *benchCmd = nullptr, *topologyCmd = nullptr;
 };
@@ -125,48 +132,69 @@ void addInfoCommand(CLI::App& app, Commands& c) {
     }
 }
 
-CLI::App* addBenchCommand(CLI::App& app, app::BenchOptions& bench) {
+// A list of names of `table` kept as their values in `values` (bench's --methods,
+// --gl-paths, ...); the default shown is the names of what `values` holds.
+template <typename E, size_t N>
+CLI::Option* addNameList(CLI::App& cmd, const std::string& flag, std::vector<E>& values,
+                         const methods::EnumNames<E, N>& table, const std::string& help) {
+    std::vector<std::string> shown;
+    for (E v : values) shown.emplace_back(methods::nameOf(table, v));
+    return cmd
+        .add_option_function<std::vector<std::string>>(
+            flag,
+            [&values, &table, flag](const std::vector<std::string>& names) {
+                values.clear();
+                for (const std::string& n : names) values.push_back(session::parseName(table, n, flag));
+            },
+            help)
+        ->delimiter(',')
+        ->default_str(CLI::detail::to_string(shown))
+        ->check(CLI::IsMember(methods::names(table)));
+}
+
+CLI::App* addBenchCommand(CLI::App& app, app::BenchCommand& bench) {
+    bench::BenchOptions& b = bench.suite;
     CLI::App* benchCmd = app.add_subcommand("bench", "Print ms/frame per stage, static and dynamic case");
-    benchCmd->add_option("--csv", bench.csv, "Also write the table as CSV to this file");
-    benchCmd->add_option("--frames", bench.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
+    benchCmd->add_option("--csv", b.csv, "Also write the table as CSV to this file");
+    benchCmd->add_option("--frames", b.frames, "Timed frames per row")->check(CLI::Range(1, 10000));
     benchCmd->add_flag("--quick", bench.quick, "A small subset of rows (smoke test)");
-    benchCmd->add_option("--methods", bench.methods, "Methods to time")->delimiter(',')->capture_default_str()
-        ->check(CLI::IsMember(methods::names(methods::kMethodNames)));
-    benchCmd->add_option("--triangles", bench.triangles, "Sphere mesh sizes (triangles)")->delimiter(',')
+    addNameList(*benchCmd, "--methods", b.methods, methods::kMethodNames, "Methods to time");
+    benchCmd->add_option("--triangles", b.triangles, "Sphere mesh sizes (triangles)")->delimiter(',')
         ->capture_default_str()->check(CLI::Range(8L, 20'000'000L));
-    benchCmd->add_option("--sizes", bench.sizes, "Image sizes WxH")->delimiter(',')->capture_default_str();
-    benchCmd->add_option("--grids", bench.grids, "ISA advection mesh resolutions")->delimiter(',')
-        ->capture_default_str()->check(CLI::Range(64, 1024));
-    benchCmd->add_flag("--dynamic-only", bench.dynamicOnly, "Only the dynamic case (the cost while animating)");
-    benchCmd->add_option("--camera", bench.camera, "Camera placement: fit, or paraview (ParaView's ResetCamera framing)")
-        ->capture_default_str()->check(CLI::IsMember(methods::names(bench::kBenchCameraNames)));
-    benchCmd->add_option("--lengths", bench.lengths, "Hybrid filter lengths L")->delimiter(',')
-        ->capture_default_str()->check(CLI::Range(1, 1001));
     {
-        std::vector<std::string> paths;
-        for (const auto& [value, name] : methods::kGlPathNames) paths.emplace_back(name);
-        benchCmd->add_option("--gl-paths", bench.glPaths, "Per-pixel passes as compute or fragment shaders: each "
-                                                         "path listed, one gl_path column (auto: the renderer's)")
-            ->delimiter(',')->capture_default_str()->check(CLI::IsMember(paths));
-        std::vector<std::string> rasters;
-        for (const auto& [value, name] : methods::kSurfaceRasterNames) rasters.emplace_back(name);
-        benchCmd->add_option("--surface-rasters", bench.surfaceRasters, "Who rasterises the surface: each listed, "
-                                                                       "one raster column (auto: by renderer, its cores and triangles per pixel)")
-            ->delimiter(',')->capture_default_str()->check(CLI::IsMember(rasters));
+        std::vector<std::string> sizes;
+        for (const core::Viewport& v : b.imageSizes) sizes.push_back(std::to_string(v.width) + "x" + std::to_string(v.height));
+        benchCmd->add_option_function<std::vector<std::string>>("--sizes", [&b](const std::vector<std::string>& given) {
+            b.imageSizes.clear();
+            for (const std::string& s : given) b.imageSizes.push_back(session::parseSize(s, "--sizes"));
+        }, "Image sizes WxH")->delimiter(',')->default_str(CLI::detail::to_string(sizes));
     }
-    benchCmd->add_option("--enhance-contrast", bench.enhanceContrast,
-                         "Contrast enhancement variants to time, each a row (off, texture, color, both)")
-        ->delimiter(',')->capture_default_str()->check(CLI::IsMember(methods::names(methods::kEnhanceContrastNames)));
-    benchCmd->add_option("--ranks", bench.ranks, "Ranks rendering each row together, each count a row: above 1, that "
-                                                 "many threads with a GL context and a slab of the sphere each, as "
-                                                 "ParaView's ranks with memory for MPI (the slowest rank's times)")
+    benchCmd->add_option("--grids", b.gridRes, "ISA advection mesh resolutions")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(64, 1024));
+    benchCmd->add_flag("--dynamic-only", b.dynamicOnly, "Only the dynamic case (the cost while animating)");
+    benchCmd->add_option_function<std::string>("--camera", [&b](const std::string& name) {
+        b.camera = session::parseName(bench::kBenchCameraNames, name, "--camera");
+    }, "Camera placement: fit, or paraview (ParaView's ResetCamera framing)")
+        ->default_str(std::string(methods::nameOf(bench::kBenchCameraNames, b.camera)))
+        ->check(CLI::IsMember(methods::names(bench::kBenchCameraNames)));
+    benchCmd->add_option("--lengths", b.filterLengths, "Hybrid filter lengths L")->delimiter(',')
+        ->capture_default_str()->check(CLI::Range(1, 1001));
+    addNameList(*benchCmd, "--gl-paths", b.glPaths, methods::kGlPathNames, "Per-pixel passes as compute or fragment "
+                "shaders: each path listed, one gl_path column (auto: the renderer's)");
+    addNameList(*benchCmd, "--surface-rasters", b.surfaceRasters, methods::kSurfaceRasterNames, "Who rasterises the "
+                "surface: each listed, one raster column (auto: by renderer, its cores and triangles per pixel)");
+    addNameList(*benchCmd, "--enhance-contrast", b.enhanceContrast, methods::kEnhanceContrastNames,
+                "Contrast enhancement variants to time, each a row (off, texture, color, both)");
+    benchCmd->add_option("--ranks", b.ranks, "Ranks rendering each row together, each count a row: above 1, that "
+                                             "many threads with a GL context and a slab of the sphere each, as "
+                                             "ParaView's ranks with memory for MPI (the slowest rank's times)")
         ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 64));
-    benchCmd->add_option("--parallel", bench.parallel, "The ranks' parallel modes, each a row (tiles, replicate)")
-        ->delimiter(',')->capture_default_str()->check(CLI::IsMember(methods::names(methods::kParallelModeNames)));
-    benchCmd->add_flag("--no-stage-times", bench.noStageTimes,
-                       "Time whole frames only (skips the second, synchronised pass per stage)");
-    benchCmd->add_flag("--calibration", bench.calibration, "Also time a fixed GL frame no flowsurf change touches "
-                                                            "(the machine's speed; scripts/bench-check.sh)");
+    addNameList(*benchCmd, "--parallel", b.parallel, methods::kParallelModeNames,
+                "The ranks' parallel modes, each a row (tiles, replicate)");
+    benchCmd->add_flag_callback("--no-stage-times", [&b] { b.stageTimes = false; },
+                                "Time whole frames only (skips the second, synchronised pass per stage)");
+    benchCmd->add_flag("--calibration", b.calibration, "Also time a fixed GL frame no flowsurf change touches "
+                                                       "(the machine's speed; scripts/bench-check.sh)");
     benchCmd->add_flag("--transfers", bench.transfers, "Only time host read-backs and uploads of full-image layers "
                                                         "at --sizes (what the tiled parallel mode adds per frame)");
     benchCmd->add_option("--slowdown", bench.slowdown, "METHOD:K renders each frame of METHOD K times (tests the "

@@ -80,7 +80,7 @@ int renderMovie(const RenderOptions& o, Playback& playback) {
         const gl::Texture2D& image = playback.view(0).composite();
         if (video) video->addFrame(gl::readRgb8TopDown(image));
         else io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3, gl::readRgb8TopDown(image));
-        if (playback.surface().unsteady()) progress.update(rendered, "t = " + std::to_string(playback.lastTime()));
+        if (playback.surface().unsteady()) progress.update(rendered, "t = " + std::to_string(playback.lastFrame().time));
     }
     progress.finish();
     if (video) video->finish();
@@ -96,7 +96,7 @@ void writeOutputs(const RenderOptions& o, const QualityOutput& quality, Playback
         io::writePngGray16(o.flowTexture, o.size.width, o.size.height, gl::readGray16TopDown(method.flowTexture()));
     if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", o.output.c_str());
     if (!quality.file.empty()) {
-        const MethodQuality q{method.name(), quality::kNoValue, playback.qualityFrames(0), playback.qualitySummary(0)};
+        const MethodQuality q{method.name(), quality::kNoValue, playback.quality().frames(0), playback.quality().summary(0)};
         io::writeTextFile(quality.file, qualityJson(o, "render", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                                                     quality.every, {q}));
         if (!o.quiet) std::fprintf(stderr, "flowsurf: wrote %s\n", quality.file.c_str());
@@ -115,7 +115,7 @@ int runRender(const RenderOptions& o, const QualityOutput& quality) {
     (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
     Playback playback(o, *steps);
-    if (!quality.file.empty()) playback.setQuality(quality.every);
+    if (!quality.file.empty()) playback.quality().configure(quality.every);
     if (!o.quiet && o.verbose) describeInput(o, playback);
 
     const auto start = std::chrono::steady_clock::now();

@@ -9,7 +9,7 @@
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
-TRIS=10000,80000,220000,1000000
+TRIS=  # default: flowsurf bench's mesh sizes
 SIZES=512x512,1024x1024,1920x1080
 STEPS=10,25,50,100
 FRAMES=3
@@ -27,6 +27,7 @@ mkdir -p "$OUT"
 LENGTHS=$(echo "$STEPS" | tr ',' '\n' | awk '{printf "%s%d", (NR>1?",":""), 2*$1+1}')
 FLOWSURF="$ROOT/build/apps/flowsurf"
 [ -x "$FLOWSURF" ] || { echo "build flowsurf first (scripts/build.sh)" >&2; exit 1; }
+[ -n "$TRIS" ] || TRIS=$("$FLOWSURF" bench --help | sed 's/.*--triangles [^=]*=\[\([0-9,]*\)\].*/\1/;t;d')
 
 echo "# flowsurf hybrid, L = $LENGTHS" >&2
 "$FLOWSURF" bench --methods hybrid --lengths "$LENGTHS" --triangles "$TRIS" --sizes "$SIZES" \

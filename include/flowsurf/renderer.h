@@ -70,6 +70,9 @@ struct OptionInfo {
     std::string defaultValue;  // as text; empty when it has none (e.g. the fitted camera)
     // What joins the numbers of a value given as several (size 800x600, time 0:1, x,y,z).
     std::string separator = ",";
+    // The methods whose images the option changes ("isa", "ibfvs", "hybrid"; all of them
+    // for most options).
+    std::vector<std::string> methods;
 };
 
 class Renderer {

@@ -133,10 +133,9 @@ def animate(surface, frames=60, fps=30, field=None, format=None, **options):
 
 # --- the player -------------------------------------------------------------------------
 
-# The parameters the player shows a slider for, per method; ranges and defaults come from
-# the option table (option_info()).
-_METHOD_PARAMS = {"isa": ("alpha", "step-px", "noise-scale"), "ibfvs": ("alpha", "step-px", "noise-scale"),
-                  "hybrid": ("filter-length", "lic-step-px", "noise-scale")}
+# The parameters the player shows a slider for, those of the method shown (option_info()'s
+# "methods"), in this order; ranges and defaults come from the option table too.
+_SLIDERS = ("alpha", "step-px", "filter-length", "lic-step-px", "noise-scale")
 _CHOICES = ("method", "overlay", "colormap")
 
 
@@ -186,7 +185,7 @@ class Player:
             info = self._info[name]
             self.controls[name] = w.Dropdown(options=[c for c in info["choices"] if c],
                                              value=self.renderer.get(name), description=name)
-        for name in sorted({p for ps in _METHOD_PARAMS.values() for p in ps}):
+        for name in sorted(_SLIDERS):
             info = self._info[name]
             default = float(info["default"])
             hi = min(info["max"], max(4 * default, info["min"] + 1))  # the table's range, capped for a slider
@@ -250,7 +249,8 @@ class Player:
         self.show(self.frame.value)
 
     def _show_params(self):
-        self._params_box.children = [self.controls[p] for p in _METHOD_PARAMS[self.renderer.get("method")]]
+        method = self.renderer.get("method")
+        self._params_box.children = [self.controls[p] for p in _SLIDERS if method in self._info[p]["methods"]]
 
     def _restart(self):
         """begin() with the current options: the animation starts over (with its warm-up)."""

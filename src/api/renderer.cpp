@@ -61,7 +61,7 @@ struct Renderer::Impl {
         playback.setOptions(o);  // closed: the input's options too
         session::validateRenderOptions(o);
         steps = data->provider();
-        playback.setQuality(qualityEvery);
+        playback.quality().configure(qualityEvery);
         playback.open(*steps);
     }
 
@@ -155,12 +155,16 @@ namespace {
 // The rows of the option table that `frontEnd` takes, described.
 std::vector<OptionInfo> describeOptions(session::FrontEnd frontEnd) {
     static constexpr const char* kKinds[] = {"flag", "int", "float", "text", "choice", "size", "vec3", "color", "path"};
-    static_assert(std::size(kKinds) == size_t(session::OptionKind::Path) + 1, "one name per OptionKind");
+    static_assert(std::size(kKinds) == session::kOptionKinds, "one name per OptionKind");
     std::vector<OptionInfo> out;
-    for (const auto& spec : session::renderOptionTable())
-        if (spec.takes(frontEnd))
-            out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)],
-                           spec.min, spec.max, spec.choices, session::defaultText(spec), spec.arraySeparator});
+    for (const auto& spec : session::renderOptionTable()) {
+        if (!spec.takes(frontEnd)) continue;
+        std::vector<std::string> applies;
+        for (const auto& [m, name] : methods::kMethodNames)
+            if (spec.appliesTo(m)) applies.emplace_back(name);
+        out.push_back({spec.name, session::groupName(spec.role.group), spec.help, kKinds[int(spec.kind)], spec.min,
+                       spec.max, spec.choices, session::defaultText(spec), spec.arraySeparator, std::move(applies)});
+    }
     return out;
 }
 
@@ -192,7 +196,7 @@ void Renderer::fitCamera() {
 
 CameraView Renderer::camera() const {
     CameraView v;
-    const core::Camera c = impl_->playback.lastCamera();
+    const core::Camera c = impl_->playback.lastFrame().camera;
     for (int a = 0; a < 3; ++a) v.eye[a] = c.eye[a], v.target[a] = c.target[a], v.up[a] = c.up[a];
     v.fovDeg = c.fovDeg;
     v.orthoHeight = c.orthoHeight;
@@ -221,7 +225,7 @@ void Renderer::advance() {
 }
 
 int Renderer::frame() const { return impl_->playback.frame(); }
-double Renderer::time() const { return impl_->playback.lastTime(); }
+double Renderer::time() const { return impl_->playback.lastFrame().time; }
 int Renderer::width() const { return impl_->playback.options().size.width; }
 int Renderer::height() const { return impl_->playback.options().size.height; }
 
@@ -263,13 +267,13 @@ Quality Renderer::quality() const {
     impl_->rendered();  // throws before anything is rendered
     session::Playback& p = impl_->playback;
     Quality q;
-    if (p.qualityFrames(0).empty()) {
+    if (p.quality().frames(0).empty()) {
         const quality::FrameQuality now = p.measureLastFrame(0);
         q.frames = 1;
         q.median = q.worst = toPublic(now);
         return q;
     }
-    const quality::QualitySummary s = p.qualitySummary(0);
+    const quality::QualitySummary s = p.quality().summary(0);
     q.frames = s.frames;
     q.median = toPublic(s.median);
     q.worst = toPublic(s.worst);

@@ -66,7 +66,6 @@ void Playback::close() {
     topology_.reset();
     surface_.reset();
     cameras_.reset();
-    views_.clear();
     quality_.rebuilt(0, options_.size, options_.params.common.cullBackFaces);
     dye_ = DyeInjection(group_);
     steps_ = nullptr;
@@ -74,8 +73,7 @@ void Playback::close() {
     started_ = startWarm_ = false;
     frame_ = warmedUp_ = 0;
     clock_ = 0;
-    lastCamera_ = core::Camera{};
-    lastTime_ = 0.0;
+    last_ = Drawn{};
 }
 
 void Playback::requireOpen(const char* call) const {
@@ -84,16 +82,15 @@ void Playback::requireOpen(const char* call) const {
 
 // --- build and options -------------------------------------------------------------------
 
-std::vector<methods::Method> Playback::shownViews(const RenderOptions& o) const {
-    return requestedViews_.empty() ? std::vector<methods::Method>{o.method} : requestedViews_;
+std::vector<methods::Method> Playback::shownViews(const std::vector<methods::Method>& views, const RenderOptions& o) {
+    return views.empty() ? std::vector<methods::Method>{o.method} : views;
 }
 
 Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps) const {
     Parts parts;
     parts.surface = std::make_unique<AnimatedSurface>(o, steps, group_);
     const methods::MethodParams params = parts.surface->paramsFor(o.params);
-    parts.views = shownViews(o);
-    for (methods::Method m : parts.views) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
+    for (methods::Method m : shownViews(requestedViews_, o)) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
     for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
     if (o.topology) {
         if (group_) throw ConfigError("--topology on: not available in a parallel render (ParaView's ranks) yet");
@@ -116,9 +113,9 @@ void Playback::install(Parts parts) {
     dye_.dropBand();
     dye_.restart();
     surface_ = std::move(parts.surface);
-    views_ = std::move(parts.views);
     methods_ = std::move(parts.methods);
     topology_ = std::move(parts.topology);
+    last_.topology = nullptr;  // the old overlay's, gone with it
     rebuildPending_ = camerasPending_ = false;
     clock_ = 0;
     warmedUp_ = 0;
@@ -173,7 +170,7 @@ OptionEffect Playback::setOptions(const RenderOptions& o) {
 
 void Playback::setViews(std::vector<methods::Method> views) {
     requestedViews_ = std::move(views);
-    if (shownViews(options_) != views_) rebuildPending_ = true;
+    if (shownViews(requestedViews_, options_) != shownViews(builtViews_, built_)) rebuildPending_ = true;
 }
 
 void Playback::setStageTiming(bool on) {
@@ -199,7 +196,7 @@ void Playback::restart() {
     frame_ = 0;
     clock_ = 0;
     warmedUp_ = 0;
-    clearQuality();
+    quality_.clear();
     dye_.restart();
     if (startWarm_) {
         const core::Camera camera = frameCameras().at(0);
@@ -290,8 +287,8 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
         if (topology_) topology_->draw(*m, camera, time);
     }
     quality_.frameDone();
-    lastCamera_ = camera;
-    lastTime_ = surface_->unsteady() ? time : 0.0;
+    last_ = {camera, surface_->unsteady() ? time : 0.0, k, int(k) - warmedUp_,
+             topology_ ? &topology_->current() : nullptr};
     if (onFrame_) onFrame_();
 }
 
@@ -327,7 +324,7 @@ std::vector<uint8_t> Playback::readImage(int* width, int* height) const {
 quality::FrameQuality Playback::measureLastFrame(size_t view) {
     requireOpen("measureLastFrame");
     const uint32_t k = clock_ > 0 ? clock_ - 1 : 0;
-    return quality_.measure(view, *methods_.at(view), surface_->atTime(lastTime_), lastCamera_, k);
+    return quality_.measure(view, *methods_.at(view), surface_->atTime(last_.time), last_.camera, k);
 }
 
 }  // namespace flowsurf::session

@@ -128,44 +128,36 @@ public:
     size_t viewCount() const { return methods_.size(); }  // 0 while closed
     methods::FlowMethod& view(size_t i) { return *methods_[i]; }
     const methods::FlowMethod& view(size_t i) const { return *methods_[i]; }
-    methods::Method viewMethod(size_t i) const { return views_[i]; }
     AnimatedSurface& surface() { return *surface_; }  // while open
-    const core::Camera& lastCamera() const { return lastCamera_; }
-    // The flow topology the last frame drew (--topology on), or null.
-    const skeleton::Skeleton* topology() const { return topology_ ? &topology_->current() : nullptr; }
-    double lastTime() const { return lastTime_; }  // data time of the last frame (0: steady)
+    // The last frame rendered, warm-up included (all zero before the first).
+    struct Drawn {
+        core::Camera camera;
+        double time = 0.0;    // data time (0: steady)
+        uint32_t clock = 0;   // its noise clock k
+        int frame = 0;        // k less the finished warm-up: animation frame f reads f, as a movie numbers it
+        const skeleton::Skeleton* topology = nullptr;  // the flow topology it drew (--topology on)
+    };
+    const Drawn& lastFrame() const { return last_; }
     // Composites of every view side by side, RGB8, rows top to bottom.
     std::vector<uint8_t> readImage(int* width, int* height) const;
 
-    // --- quality (QualityMonitor; doc/algorithms.md, "Quality metrics"): off by default ---
-    // every > 0: measure every view's F_a against the field on every `every`-th frame that
-    // is not warm-up (animation, still and live frames alike; a still measures its last
-    // frame only), reading back the frame before each for the correlations. 0: off.
-    void setQuality(int every, const quality::QualityParams& params = {}) { quality_.configure(every, params); }
-    int qualityEvery() const { return quality_.every(); }
-    // The frames of view i measured since the animation (re)started, the build, or
-    // clearQuality(); and their median and worst.
-    const std::vector<quality::FrameQuality>& qualityFrames(size_t view) const { return quality_.frames(view); }
-    quality::QualitySummary qualitySummary(size_t view) const { return quality::summarize(qualityFrames(view)); }
-    void clearQuality() { quality_.clear(); }
+    // --- parts -----------------------------------------------------------------------------
+    // The quality measurements (QualityMonitor: its setting, log and summaries), kept over
+    // rebuilds; off by default.
+    QualityMonitor& quality() { return quality_; }
+    const QualityMonitor& quality() const { return quality_; }
     // Measures view i's last frame now (surface and camera of the last frame); with the
     // quality off it has no frame before it, so no correlations. Not added to the log.
     quality::FrameQuality measureLastFrame(size_t view);
-    // Wall time the quality took in the last frame (measuring, or keeping the frame for the
-    // next measurement; 0: none), for timers that leave it out.
-    double qualityMsLastFrame() const { return quality_.msLastFrame(); }
-
-    // --- dye [doc/algorithms.md §10] (DyeInjection) -----------------------------------------------------
-    // The dye steps with each animation frame and each live frame that advances the clock
-    // (not the warm-up), with the options of that frame: dye changes apply live (effect
-    // None). Null until a frame had a source.
-    const methods::DyeField* dye() const { return dye_.field(); }
+    // The dye [doc/algorithms.md §10] (DyeInjection): it steps with each animation frame and
+    // each live frame that advances the clock (not the warm-up), with the options of that
+    // frame: dye changes apply live (effect None). Its field is null until a frame had a source.
+    const DyeInjection& dye() const { return dye_; }
 
 private:
     // What a build makes from the steps and options, before the playback takes it.
     struct Parts {
         std::unique_ptr<AnimatedSurface> surface;
-        std::vector<methods::Method> views;
         std::vector<std::unique_ptr<methods::FlowMethod>> methods;
         std::unique_ptr<TopologyOverlay> topology;  // --topology on
     };
@@ -175,7 +167,7 @@ private:
     void requireOpen(const char* call) const;  // ConfigError naming `call` while closed
     bool applyPending();                // a pending rebuild (true) or camera change, before a frame
     void restart();                     // the animation over, after a rebuild
-    std::vector<methods::Method> shownViews(const RenderOptions& o) const;
+    static std::vector<methods::Method> shownViews(const std::vector<methods::Method>& views, const RenderOptions& o);
     // Every method's stage list once at noise clock k.
     void renderAll(const core::Camera& camera, double time, double perFrame, uint32_t k);
     void animationFrame(int f, uint32_t k);
@@ -184,7 +176,8 @@ private:
     RenderOptions options_, built_;     // as set, and of the last build that worked
     core::StepProvider* steps_ = nullptr;  // null: closed
     methods::ProcessGroup* group_;
-    std::vector<methods::Method> requestedViews_, builtViews_, views_;
+    // As asked for (empty: options().method alone), and of the last build that worked.
+    std::vector<methods::Method> requestedViews_, builtViews_;
     std::unique_ptr<AnimatedSurface> surface_;
     std::vector<std::unique_ptr<methods::FlowMethod>> methods_;
     std::unique_ptr<TopologyOverlay> topology_;
@@ -195,8 +188,7 @@ private:
     int frame_ = 0;
     int warmedUp_ = 0;                  // warm-up frames on the clock since the build
     uint32_t clock_ = 0;
-    core::Camera lastCamera_;
-    double lastTime_ = 0.0;
+    Drawn last_;
     std::function<void()> onFrame_;
     QualityMonitor quality_;
     DyeInjection dye_;

@@ -15,16 +15,28 @@ namespace flowsurf::session {
 
 class QualityMonitor {
 public:
-    // every > 0: measure every `every`-th frame; 0: off. Throws ConfigError for every < 0.
-    void configure(int every, const quality::QualityParams& params);
+    // every > 0: measure every view's F_a against the field on every `every`-th frame that
+    // is not warm-up, reading back the frame before each for the correlations; 0: off.
+    // Throws ConfigError for every < 0.
+    void configure(int every, const quality::QualityParams& params = {});
     int every() const { return every_; }
+    // The frames of view `view` measured since the animation (re)started, the build, or
+    // clear(); and their median and worst.
+    const std::vector<quality::FrameQuality>& frames(size_t view) const { return log_.at(view); }
+    quality::QualitySummary summary(size_t view) const { return quality::summarize(frames(view)); }
+    // The log empty for every view, the count of frames at 0 (an animation starts over).
+    void clear();
+    // Wall time the quality took in the last frame (measuring, or keeping the frame for the
+    // next measurement; 0: none), for timers that leave it out.
+    double msLastFrame() const { return ms_; }
+
+private:
+    // The frame loop's side (Playback): new renderers, and each frame planned before it is
+    // drawn and collected per view after it.
+    friend class Playback;
     // New renderers: `views` of them at `viewport`; the probes are made again when needed
     // and the log starts empty.
     void rebuilt(size_t views, const core::Viewport& viewport, bool cullBackFaces);
-    // The log empty for every view, the count of frames at 0 (an animation starts over).
-    void clear();
-
-    // --- the next frame: planned before it is drawn, collected per view after it -----------
     void planFrame();                       // an animation or live frame
     void planStill(int stillFrame, int frame);  // frame `frame` of a still ending at stillFrame
     void planNothing() { next_ = Step::None; }  // warm-up
@@ -35,15 +47,11 @@ public:
     // The frame is done: wall time of its measurements in msLastFrame(), nothing planned.
     void frameDone() { next_ = Step::None; }
     void frameStarts() { ms_ = 0.0; }
-
     // Measures view `view`'s last frame now; with the monitor off it has no frame before it,
     // so no correlations. Not added to the log.
     quality::FrameQuality measure(size_t view, const methods::FlowMethod& method, const methods::SurfaceGpu& surface,
                                   const core::Camera& camera, uint32_t k);
-    const std::vector<quality::FrameQuality>& frames(size_t view) const { return log_.at(view); }
-    double msLastFrame() const { return ms_; }
 
-private:
     enum class Step { None, Keep, Measure };
     void makeProbes();
 

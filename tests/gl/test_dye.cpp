@@ -53,7 +53,7 @@ struct Blob {
 Blob measure(session::Playback& p) {
     int w = 0, h = 0;
     const std::vector<uint8_t> rgb = p.readImage(&w, &h);
-    const core::Camera cam = p.lastCamera();
+    const core::Camera cam = p.lastFrame().camera;
     const glm::mat4 inv = glm::inverse(cam.viewProjection(p.options().size.aspect()));
     Blob b;
     glm::dvec3 onSphere(0.0);
@@ -78,13 +78,13 @@ Blob measure(session::Playback& p) {
 
 glm::dvec2 expectedPx(const session::Playback& p, float turn) {
     const glm::vec3 q = glm::rotate(kStart, turn, kAxis);
-    return glm::dvec2(core::projectToPixels(p.lastCamera(), p.options().size, q));
+    return glm::dvec2(core::projectToPixels(p.lastFrame().camera, p.options().size, q));
 }
 
 // Band voxels holding more than half the ink: the blob's area on the surface, in voxels.
 size_t inkedVoxels(const session::Playback& p) {
     size_t n = 0;
-    for (const glm::vec4& v : p.dye()->readValues()) n += v.a > 0.5f;
+    for (const glm::vec4& v : p.dye().field()->readValues()) n += v.a > 0.5f;
     return n;
 }
 
@@ -128,8 +128,8 @@ TEST(Dye, ContinuousSourceDrawsAStreaklineAlongTheCircle) {
     session::Playback p(o, steps);
     p.start(false);
     for (int f = 0; f <= kQuarter; ++f) p.advance();
-    const methods::DyeBand& band = p.dye()->band();
-    const std::vector<glm::vec4> v = p.dye()->readValues();
+    const methods::DyeBand& band = p.dye().field()->band();
+    const std::vector<glm::vec4> v = p.dye().field()->readValues();
     const glm::vec3 src = glm::normalize(kStart);
     const float height = glm::dot(src, kAxis);  // the circle: dot(p, axis) = height
     const glm::vec3 u = glm::normalize(src - height * kAxis), w = glm::cross(kAxis, u);
@@ -192,9 +192,9 @@ TEST(Dye, TimeSeriesCarriesDyeOverTheSteps) {
     session::Playback p(o, steps);
     p.start(false);
     p.advance();
-    const methods::DyeField* first = p.dye();
+    const methods::DyeField* first = p.dye().field();
     const size_t area0 = inkedVoxels(p);
     for (int f = 1; f <= 40; ++f) p.advance();
-    EXPECT_EQ(p.dye(), first) << "the band was made again: the dye started over";
+    EXPECT_EQ(p.dye().field(), first) << "the band was made again: the dye started over";
     EXPECT_GT(inkedVoxels(p), 4 * area0);
 }

@@ -122,11 +122,11 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
     const core::Camera cam = test::orthoFront(2.4f);
     for (int k = 0; k <= frames; ++k) {
         p.render({cam, 0.0, 0.0});
-        if (share && p.dye()) share->haloBytes += p.dye()->haloBytesSent();
+        if (share && p.dye().field()) share->haloBytes += p.dye().field()->haloBytesSent();
     }
-    if (share && p.dye()) {
-        share->advected = p.dye()->advectedVoxels();
-        share->band = p.dye()->band().size();
+    if (share && p.dye().field()) {
+        share->advected = p.dye().field()->advectedVoxels();
+        share->band = p.dye().field()->band().size();
     }
     Images im;
     int w = 0, h = 0;

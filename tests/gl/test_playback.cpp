@@ -74,7 +74,7 @@ TEST(PlaybackOptions, ReopenedPlaybackRendersAsANewOne) {
     p.open(steps);                            // as a new playback: frame 0, clock 0, no dye
     EXPECT_EQ(p.frame(), 0);
     EXPECT_EQ(p.clock(), 0u);
-    EXPECT_EQ(p.dye(), nullptr);
+    EXPECT_EQ(p.dye().field(), nullptr);
     p.still(4);
     EXPECT_EQ(image(p), expected);
 }

@@ -247,7 +247,7 @@ struct Orbiting {
         options.params.common.noise.seed = 7;
         playback = std::make_unique<session::Playback>(options, steps,
                                                        std::vector{methods::Method::Isa, methods::Method::Hybrid});
-        playback->setQuality(every);
+        playback->quality().configure(every);
         playback->start(true);
         for (int f = 0; f < 12; ++f) playback->advance();
         int w = 0, h = 0;
@@ -267,7 +267,7 @@ TEST(QualityPlayback, MeasuresEveryNthFrameWithoutChangingImages) {
     ASSERT_EQ(on.playback->viewCount(), 2u);
     const uint32_t w = uint32_t(on.playback->warmupFrames());
     for (size_t v = 0; v < 2; ++v) {
-        const auto& frames = on.playback->qualityFrames(v);
+        const auto& frames = on.playback->quality().frames(v);
         ASSERT_EQ(frames.size(), 3u);
         EXPECT_EQ(frames[0].frame, w + 3);
         EXPECT_EQ(frames[2].frame, w + 11);
@@ -275,17 +275,17 @@ TEST(QualityPlayback, MeasuresEveryNthFrameWithoutChangingImages) {
             EXPECT_FALSE(std::isnan(q.orientationErrorDeg));
             EXPECT_FALSE(std::isnan(q.frameCorrelationReprojected));
         }
-        const quality::QualitySummary s = on.playback->qualitySummary(v);
+        const quality::QualitySummary s = on.playback->quality().summary(v);
         EXPECT_EQ(s.frames, 3);
         EXPECT_GE(s.worst.orientationErrorDeg, s.median.orientationErrorDeg);
         EXPECT_LE(s.worst.frameCorrelation, s.median.frameCorrelation);
     }
     for (size_t v = 0; v < 2; ++v) {
-        const quality::QualitySummary q = on.playback->qualitySummary(v);
+        const quality::QualitySummary q = on.playback->quality().summary(v);
         std::printf("%s orbiting: frame correlation %.3f, reprojected %.3f\n", on.playback->view(v).name(),
                     q.median.frameCorrelation, q.median.frameCorrelationReprojected);
     }
-    const quality::QualitySummary hybrid = on.playback->qualitySummary(1);
+    const quality::QualitySummary hybrid = on.playback->quality().summary(1);
     EXPECT_GT(hybrid.median.frameCorrelationReprojected, hybrid.median.frameCorrelation + 0.02);
-    EXPECT_TRUE(off.playback->qualityFrames(0).empty());
+    EXPECT_TRUE(off.playback->quality().frames(0).empty());
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <utility>
 
 using namespace flowsurf;
@@ -326,4 +327,37 @@ TEST(CliOptions, RolesAgreeWithEffects) {
         positional += s.takes(FrontEnd::Positional);
     }
     EXPECT_EQ(positional, 1);
+}
+
+// Each row says which methods it changes: a row whose help names its methods ("ISA/IBFVS:",
+// "Hybrid", "IBFVS silhouette", ...) applies to those alone, every other row to all of them,
+// and every row to at least one.
+TEST(CliOptions, RowsSayWhichMethodsTheyApplyTo) {
+    using methods::Method;
+    auto applies = [](const char* name) {
+        std::string out;
+        for (const auto& [m, text] : methods::kMethodNames)
+            if (findOption(name)->appliesTo(m)) out += (out.empty() ? "" : ",") + std::string(text);
+        return out;
+    };
+    EXPECT_EQ(applies("alpha"), "isa,ibfvs");
+    EXPECT_EQ(applies("step-px"), "isa,ibfvs");
+    EXPECT_EQ(applies("grid-res"), "isa");
+    EXPECT_EQ(applies("edge-mask"), "ibfvs");
+    EXPECT_EQ(applies("filter-length"), "hybrid");
+    EXPECT_EQ(applies("lic-step-px"), "hybrid");
+    EXPECT_EQ(applies("noise-scale"), "isa,ibfvs,hybrid");
+    EXPECT_EQ(applies("method"), "isa,ibfvs,hybrid");
+    EXPECT_EQ(applies("colormap"), "isa,ibfvs,hybrid");
+    EXPECT_EQ(applies("trace-dt"), "hybrid");
+    for (const OptionSpec& s : renderOptionTable()) {
+        const bool some = s.role.methods.bits != kEveryMethod.bits;
+        const std::string head = s.help.substr(0, s.help.find(' '));
+        const bool named = head == "ISA" || head == "ISA/IBFVS:" || head == "IBFVS" || head == "Hybrid" ||
+                           head == "Hybrid:";
+        EXPECT_TRUE(!named || some) << s.name << ": its help names its methods, its row does not";
+        EXPECT_TRUE(std::any_of(std::begin(methods::kMethodNames), std::end(methods::kMethodNames),
+                                [&](const auto& m) { return s.appliesTo(m.first); }))
+            << s.name;
+    }
 }

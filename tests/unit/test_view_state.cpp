@@ -190,7 +190,7 @@ TEST(ViewState, OptionsAndKeysRequestWhatTheyChange) {
     EXPECT_TRUE(s.advancing());
     s.frameDone();
     EXPECT_FALSE(s.advancing());
-    EXPECT_EQ(s.clock(), 1u);
+    EXPECT_FALSE(s.stepOnce);
 }
 
 // The state's options are its playback's (the one copy the GL side renders with): panel
@@ -203,9 +203,9 @@ TEST(ViewState, OptionsAndQualityLiveInThePlayback) {
     s.handle({0, EventType::Set, "dye", "0,0,1:0.1:red"});
     EXPECT_EQ(s.playback().options().dye.size(), 1u);
     s.handle({0, EventType::Set, "quality", "5"});
-    EXPECT_EQ(s.playback().qualityEvery(), 5);
+    EXPECT_EQ(s.playback().quality().every(), 5);
     s.handle({0, EventType::Set, "quality", "off"});
-    EXPECT_EQ(s.qualityEvery(), 0);
+    EXPECT_EQ(s.playback().quality().every(), 0);
     EXPECT_TRUE(s.error.empty()) << s.error;
 }
 
@@ -216,17 +216,17 @@ TEST(ViewState, TimePlaysToTheEndAndBatchOptionsReproduceIt) {
     EXPECT_DOUBLE_EQ(s.time, 0.0);
     for (int k = 0; k < 10; ++k) s.frameDone();
     EXPECT_DOUBLE_EQ(s.time, 2.5);
-    RenderOptions b = s.batchOptions();
+    RenderOptions b = s.batchOptions(10);  // the noise clock after 10 frames
     EXPECT_EQ(b.frames, 10);
     EXPECT_DOUBLE_EQ(makeTimeMapping(b, {0, 1, 2, 3, 4}).at(b.frames), 2.5);
     for (int k = 0; k < 20; ++k) s.frameDone();
     EXPECT_DOUBLE_EQ(s.time, 4.0);  // held at the end
-    b = s.batchOptions();
+    b = s.batchOptions(30);
     EXPECT_DOUBLE_EQ(makeTimeMapping(b, {0, 1, 2, 3, 4}).at(b.frames), 4.0);
     s.handle({0, EventType::Key, "left"});
     EXPECT_DOUBLE_EQ(s.time, 3.0);
     EXPECT_FALSE(s.timePlaying);
-    b = s.batchOptions();
+    b = s.batchOptions(30);
     EXPECT_DOUBLE_EQ(makeTimeMapping(b, {0, 1, 2, 3, 4}).at(b.frames), 3.0);
     s.handle({0, EventType::Set, "time-playing", "true"});
     s.handle({0, EventType::Set, "loop", "true"});

@@ -163,12 +163,8 @@ private:
     // ISA and IBFVS advect the warm-up frames (--warmup, default 3/alpha) out of sight, so
     // the first frame shown looks converged, as a batch movie's does (session/playback.h).
     void warmUp() {
-        state_.restartClock();
         mustRender_ = true;
-        session::Playback& playback = pipeline_.playback();
-        playback.warmUp({state_.camera(), state_.time, state_.timePerFrame});
-        state_.advanceClock(playback.clock());
-        warmedUp_ = playback.clock();
+        pipeline_.playback().warmUp({state_.camera(), state_.time, state_.timePerFrame});
     }
 
     void applyRequests(const Requests& req) {
@@ -281,6 +277,7 @@ private:
     }
 
     void output(const Event& e) {
+        const session::Playback::Drawn& shown = pipeline_.playback().lastFrame();
         try {
             switch (e.type) {
             case EventType::WindowShot:
@@ -299,9 +296,10 @@ private:
                 io::writePngGray16(e.value, v.width, v.height, gl::readGray16TopDown(pipeline_.method(0).flowTexture()));
                 break;
             }
-            case EventType::SaveConfig: io::writeTextFile(e.value, configJson(state_.batchOptions())); break;
-            // Keyframes count the frames shown (a movie's warm-up comes before its frame 0).
-            case EventType::SaveKeyframe: appendKeyframe(e.value, state_.camera(), state_.clock() - warmedUp_); break;
+            // The frame on screen: the playback's last, numbered as a movie numbers it (its
+            // warm-up comes before its frame 0).
+            case EventType::SaveConfig: io::writeTextFile(e.value, configJson(state_.batchOptions(shown.clock))); break;
+            case EventType::SaveKeyframe: appendKeyframe(e.value, shown.camera, uint32_t(shown.frame)); break;
             default: return;
             }
             state_.status = "wrote " + e.value;
@@ -319,7 +317,7 @@ private:
             io::writeTextFile(view_.recordEvents, formatEventLog(log));
         }
         if (!view_.stats.empty())
-            io::writeTextFile(view_.stats, statsJson(pipeline_, frameMs_, renderer_, state_.qualityEvery() > 0));
+            io::writeTextFile(view_.stats, statsJson(pipeline_, frameMs_, renderer_, state_.playback().quality().every() > 0));
     }
 
     // In this order: the playback (in state_) goes while the GL context lives.
@@ -336,7 +334,6 @@ private:
     double lastTime_ = 0.0;
     bool mustRender_ = true;
     bool lastRendered_ = true;
-    uint32_t warmedUp_ = 0;  // warm-up frames on the clock since the last build
     std::vector<double> seenTimes_;  // the steps' times and mapping the state was given
     core::TimeMapping seenMapping_;
     int timerFrames_ = 0;

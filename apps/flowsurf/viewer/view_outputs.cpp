@@ -17,7 +17,7 @@ namespace {
 nlohmann::ordered_json qualityStats(ViewPipeline& pipeline) {
     nlohmann::ordered_json views = nlohmann::ordered_json::object();
     for (size_t i = 0; i < pipeline.viewCount(); ++i) {
-        const quality::QualitySummary s = pipeline.playback().qualitySummary(i);
+        const quality::QualitySummary s = pipeline.playback().quality().summary(i);
         auto value = [](double v) { return std::isnan(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v); };
         nlohmann::ordered_json median = nlohmann::ordered_json::object(), worst = median;
         for (const quality::MetricInfo& m : quality::metricTable()) {

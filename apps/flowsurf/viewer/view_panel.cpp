@@ -182,7 +182,7 @@ void Window::readout(ViewerState& state, const ViewPipeline& pipeline, const Fra
                 pipeline.viewSize().height);
     ImGui::Text("%s", info.renderer.c_str());
     ImGui::Text("frame %.1f ms (%.1f fps), clock k = %u%s", info.frameMs, info.frameMs > 0 ? 1000.0 / info.frameMs : 0.0,
-                state.clock(), state.paused ? ", paused" : "");
+                state.playback().lastFrame().clock, state.paused ? ", paused" : "");
 }
 
 // Method (one, or all side by side), pause and step, and the field shown.
@@ -241,10 +241,15 @@ void Window::optionSections(const ViewerState& state, const ViewPipeline& pipeli
         if (ImGui::Button("reset view")) queue_.push_back({frame_, EventType::Key, "r"});
     }
 
+    // A row shows when it applies to a method shown (its row's methods).
+    const std::vector<methods::Method> shown = state.shownMethods();
+    const auto applies = [&](const OptionSpec& spec) {
+        return std::any_of(shown.begin(), shown.end(), [&](methods::Method m) { return spec.appliesTo(m); });
+    };
     for (const OptionGroup group : {OptionGroup::Method, OptionGroup::Overlay})
         if (ImGui::CollapsingHeader(group == OptionGroup::Method ? "Method parameters" : "Overlay"))
             for (const OptionSpec& spec : renderOptionTable())
-                if (spec.role.group == group && spec.takes(FrontEnd::Panel))
+                if (spec.role.group == group && spec.takes(FrontEnd::Panel) && applies(spec))
                     optionWidget(spec, state, pipeline.ready());
 
     if (ImGui::CollapsingHeader("Dye")) dyePanel(state);
@@ -300,12 +305,12 @@ void Window::keysSection() {
 // costs a surface pass, a read-back and CPU work); on, every N-th frame is measured. The
 // widgets emit `set quality N|off`, recorded like every edit.
 void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
-    bool on = state.qualityEvery() > 0;
+    bool on = state.playback().quality().every() > 0;
     if (on) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // turned on by an event or a replay
     if (!ImGui::CollapsingHeader("Quality")) return;
     if (ImGui::Checkbox("measure", &on)) emitSet("quality", on ? "10" : "off");
     if (on) {
-        int every = state.qualityEvery();
+        int every = state.playback().quality().every();
         ImGui::SameLine();
         ImGui::SetNextItemWidth(100);
         if (ImGui::SliderInt("every N frames", &every, 2, 60)) emitSet("quality", std::to_string(every));
@@ -313,10 +318,10 @@ void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
     if (!on || !pipeline.ready()) return;
     session::Playback& playback = pipeline.playback();
     for (size_t i = 0; i < pipeline.viewCount() && i < playback.viewCount(); ++i) {
-        const auto& frames = playback.qualityFrames(i);
+        const auto& frames = playback.quality().frames(i);
         ImGui::Text("%s: %zu frames measured", upper(pipeline.methodName(i)).c_str(), frames.size());
         if (frames.empty()) continue;
-        const quality::QualitySummary summary = playback.qualitySummary(i);
+        const quality::QualitySummary summary = playback.quality().summary(i);
         for (const quality::MetricInfo& m : quality::metricTable()) {
             ImGui::BulletText("%-30s %8.3f  (median %.3f)", m.name, frames.back().*m.member, summary.median.*m.member);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.help);

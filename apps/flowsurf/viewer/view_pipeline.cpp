@@ -103,7 +103,7 @@ void ViewPipeline::framebuffers() {
 }
 
 std::string ViewPipeline::methodName(size_t i) const {
-    return std::string(methods::nameOf(methods::kMethodNames, playback_.viewMethod(i)));
+    return playback_.view(i).name();
 }
 
 void ViewPipeline::render(const session::Playback::LiveFrame& f, bool advance) {

@@ -108,7 +108,7 @@ core::Camera ViewerState::camera() const {
     RenderOptions o = options();
     o.size = viewSize();
     if (!haveData_) return core::Camera{};
-    if (o.orbit != 0.0f || !o.cameraPath.empty()) return FrameCameras(o, bounds_).at(int(clock_));
+    if (o.orbit != 0.0f || !o.cameraPath.empty()) return FrameCameras(o, bounds_).at(int(playback_->clock()));
     return makeCamera(o, bounds_);
 }
 
@@ -142,7 +142,6 @@ void ViewerState::dropCameraPath() {
 void ViewerState::frameDone() {
     if (!advancing()) return;
     stepOnce = false;
-    ++clock_;
     if (timePlaying && !stepTimes.empty() && timePerFrame != 0.0) {
         time += timePerFrame;
         const double lo = std::min(timeStart, timeEnd), hi = std::max(timeStart, timeEnd);
@@ -243,7 +242,7 @@ void ViewerState::set(const std::string& name, const std::string& value) {
         const long n = value == "off" ? 0 : std::strtol(value.c_str(), &end, 10);
         if (value != "off" && (value.empty() || *end != '\0' || n < 1 || n > 100000))
             throw ConfigError("quality: '" + value + "' is not a frame count 1..100000 or off");
-        if (int(n) != playback_->qualityEvery()) playback_->setQuality(int(n));  // a new setting starts a new log
+        if (int(n) != playback_->quality().every()) playback_->quality().configure(int(n));  // a new setting starts a new log
         return;
     }
     if (name == "time-now") {
@@ -302,17 +301,17 @@ Requests ViewerState::takeRequests() {
     return r;
 }
 
-RenderOptions ViewerState::batchOptions() const {
+RenderOptions ViewerState::batchOptions(uint32_t clock) const {
     RenderOptions b = options();
     b.size = viewSize();
     b.method = shownMethods().front();
-    b.frames = int(clock_);
+    b.frames = int(clock);
     if (!stepTimes.empty() && !b.timeStepGiven) {
         // Frame k of the batch render shows data time start + k * perFrame: pick the start
         // so that frame `clock` shows the time on screen now.
         const bool moving = timePlaying && timePerFrame != 0.0;
         const double perFrame = moving ? timePerFrame : 0.0;
-        b.timeRange = std::make_pair(time - double(clock_) * perFrame, moving ? timeEnd : time);
+        b.timeRange = std::make_pair(time - double(clock) * perFrame, moving ? timeEnd : time);
         b.timePerFrame = std::abs(perFrame);
         b.framesPerStep = 0;
     }

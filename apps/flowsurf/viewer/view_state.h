@@ -2,7 +2,7 @@
 // window so unit tests drive it directly. The state is a session::Playback, the one owner
 // of the options (the camera lives in their eye/target/up/fov, so a saved config renders
 // the same view offline; the GL side opens data in it, view_pipeline.h), plus what only a
-// viewer has: the frame clock, pause, time playback, side-by-side methods, the mouse.
+// viewer has: pause, time playback, side-by-side methods, the mouse.
 // Input arrives as Events (view_events.h), from GLFW or a replayed log alike.
 #pragma once
 
@@ -89,17 +89,11 @@ public:
     // One view's size and the methods shown, left to right.
     core::Viewport viewSize() const;
     std::vector<methods::Method> shownMethods() const;
-    // Measure the texture every N frames (0: off; doc/algorithms.md §9): the playback's setting.
-    int qualityEvery() const { return playback_->qualityEvery(); }
 
     // The camera for the current frame (orbit / camera path play until the user takes over).
     core::Camera camera() const;
-    // Advection frames since the renderers were (re)built: the noise clock k.
-    uint32_t clock() const { return clock_; }
-    void restartClock() { clock_ = 0; }
-    // Frames advected out of sight (the warm-up after a rebuild) still count on the clock.
-    void advanceClock(uint32_t frames) { clock_ += frames; }
-    // Called after each displayed frame: advances the clock and the data time unless paused.
+    // Called after each displayed frame: advances the data time unless paused (the noise
+    // clock is the playback's).
     void frameDone();
     // True if the next frame advects (not paused, or a single step asked for).
     bool advancing() const { return !paused || stepOnce; }
@@ -113,9 +107,10 @@ public:
     // The camera path could not be read: the camera stays where it is, the user's from now on.
     void dropCameraPath();
 
-    // The options that render this very view offline: `render --config` with --frames
-    // = clock() gives the frame on screen (see README, Viewer).
-    RenderOptions batchOptions() const;
+    // The options that render the frame drawn at noise clock `clock` (the playback's last
+    // frame's) offline: `render --config` with --frames = clock gives the frame on screen,
+    // at the data time on screen (see README, Viewer).
+    RenderOptions batchOptions(uint32_t clock) const;
 
     std::string error;       // last error, shown in the panel until the next one or dismissal
     std::string status;      // last message (saved a file, ...)
@@ -144,7 +139,6 @@ private:
     core::Bounds bounds_;
     bool haveData_ = false;
     core::Viewport window_{800, 600};
-    uint32_t clock_ = 0;
     glm::vec3 turntableUp_{0, 1, 0};
     glm::vec2 mouse_{0, 0};
     std::string dragButton_;  // "" when no button is down

@@ -188,7 +188,7 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
     glGetTextureSubImage(pipeline.method(size_t(view)).surfaceDepth().id(), 0, x, y, 0, 1, 1, 1, GL_DEPTH_COMPONENT,
                          GL_FLOAT, sizeof depth, &depth);
     if (depth >= 1.0f) return;  // background: nothing to dye
-    const glm::mat4 inv = glm::inverse(pipeline.playback().lastCamera().viewProjection(v.aspect()));
+    const glm::mat4 inv = glm::inverse(pipeline.playback().lastFrame().camera.viewProjection(v.aspect()));
     const glm::vec4 ndc((x + 0.5f) / float(v.width) * 2.0f - 1.0f, (y + 0.5f) / float(v.height) * 2.0f - 1.0f,
                         depth * 2.0f - 1.0f, 1.0f);
     const glm::vec4 p = inv * ndc;
@@ -199,7 +199,7 @@ void Window::dropDye(const ViewerState& state, ViewPipeline& pipeline) {
 
 // --topology on: the type and position of the critical point under the cursor.
 void Window::topologyTooltip(const ViewPipeline& pipeline) const {
-    const skeleton::Skeleton* s = pipeline.ready() ? pipeline.playbackView().topology() : nullptr;
+    const skeleton::Skeleton* s = pipeline.ready() ? pipeline.playbackView().lastFrame().topology : nullptr;
     if (!s || s->criticalPoints.empty() || ImGui::GetIO().WantCaptureMouse) return;
     int ww = 1, wh = 1, fw = 1, fh = 1;
     glfwGetWindowSize(window_, &ww, &wh);
@@ -214,7 +214,7 @@ void Window::topologyTooltip(const ViewPipeline& pipeline) const {
     const skeleton::CriticalPoint* best = nullptr;
     float bestDist = reach;
     for (const skeleton::CriticalPoint& p : s->criticalPoints) {
-        const glm::vec3 px = core::projectToPixels(pipeline.playbackView().lastCamera(), v, p.position);
+        const glm::vec3 px = core::projectToPixels(pipeline.playbackView().lastFrame().camera, v, p.position);
         const float d = glm::length(glm::vec2(px.x - xInView, px.y - yUp));
         if (px.z < 1.0f && d < bestDist) { best = &p; bestDist = d; }
     }

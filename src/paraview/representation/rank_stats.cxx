@@ -66,7 +66,7 @@ void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, b
   }
   line["stages_cpu_ms"] = stagesCpu;
   line["compute_cpu_ms"] = computeCpuMs;
-  if (const methods::DyeField* dye = playback.dye())
+  if (const methods::DyeField* dye = playback.dye().field())
   {
     line["dye_voxels"] = dye->advectedVoxels();
     line["dye_halo_bytes_sent"] = dye->haloBytesSent();

@@ -25,10 +25,19 @@ std::vector<OptionSpec> overlayRows();  // rows_overlay.cpp
 std::vector<OptionSpec> dyeRows();      // rows_dye_camera.cpp
 std::vector<OptionSpec> cameraRows();   // rows_dye_camera.cpp
 
-// The rows' spelling of their roles: {G::Method, E::Rebuild, CommandLine | Config | Panel}.
+// The rows' spelling of their roles: {G::Method, E::Rebuild, CommandLine | Config | Panel},
+// and kMethodRole.onlyFor({Isa, Ibfvs}) for a row of some methods.
 using G = OptionGroup;
 using E = OptionEffect;
 using enum FrontEnd;
+using enum methods::Method;
+
+// The roles most rows share. A setting of the picture: every front end that renders takes it.
+inline constexpr FrontEnd kPictureFrontEnds = CommandLine | Config | Panel | Renderer | ParaView;
+inline constexpr OptionRole kMethodRole{G::Method, E::Rebuild, kPictureFrontEnds};
+inline constexpr OptionRole kOverlayRole{G::Overlay, E::Rebuild, kPictureFrontEnds};
+// What ParaView does itself (its own colour map, lighting and background).
+inline constexpr OptionRole kOverlayRoleNotParaView{G::Overlay, E::Rebuild, CommandLine | Config | Panel | Renderer};
 
 // A field of RenderOptions as a reference the builders' set/get reach through.
 #define FS_REF(expr) [](RenderOptions& o) -> auto& { return o.expr; }

@@ -20,10 +20,24 @@
 
 namespace flowsurf::session {
 
+// True when entry i of a name table names value i, E(0) .. E(N - 1) in order, each by a name
+// of its own: with N the enum's count, a table one short (its last entry left {E(0), ""})
+// or out of order fails the static_assert beside it.
+template <typename E, size_t N>
+constexpr bool namesEveryValue(const methods::EnumNames<E, N>& names) {
+    for (size_t i = 0; i < N; ++i) {
+        if (names[i].first != E(i)) return false;
+        for (size_t j = 0; j < i; ++j)
+            if (names[j].second == names[i].second) return false;
+    }
+    return true;
+}
+
 // --view: ParaView's camera buttons (look along that direction), iso, or the default view
 // (front, a little above and to the right; its name is empty).
 enum class ViewPreset { Default, PlusX, MinusX, PlusY, MinusY, PlusZ, MinusZ, Iso };
-inline constexpr methods::EnumNames<ViewPreset, 8> kViewPresetNames{{{ViewPreset::Default, ""},
+inline constexpr size_t kViewPresets = size_t(ViewPreset::Iso) + 1;  // the last one + 1
+inline constexpr methods::EnumNames<ViewPreset, kViewPresets> kViewPresetNames{{{ViewPreset::Default, ""},
                                                                     {ViewPreset::PlusX, "+x"},
                                                                     {ViewPreset::MinusX, "-x"},
                                                                     {ViewPreset::PlusY, "+y"},
@@ -31,6 +45,7 @@ inline constexpr methods::EnumNames<ViewPreset, 8> kViewPresetNames{{{ViewPreset
                                                                     {ViewPreset::PlusZ, "+z"},
                                                                     {ViewPreset::MinusZ, "-z"},
                                                                     {ViewPreset::Iso, "iso"}}};
+static_assert(namesEveryValue(kViewPresetNames));
 
 struct RenderOptions {
     std::string input;                  // file or builtin:NAME
@@ -93,6 +108,7 @@ bool fieldShownReversed(const RenderOptions& o, const std::string& field);
 
 // What kind of value an option takes (the viewer picks its widget from this).
 enum class OptionKind { Flag, Int, Float, Text, Choice, Size, Vec3, Color, Path };
+inline constexpr size_t kOptionKinds = size_t(OptionKind::Path) + 1;  // the last one + 1
 
 // What changing an option means for a running session (session::Playback::set and every
 // front end that changes options after the start: the viewer, flowsurf::Renderer, ParaView).
@@ -104,21 +120,25 @@ enum class OptionEffect {
     Rebuild,  // new surface upload and renderers: the clock restarts, with the warm-up again
     Reload,   // what is read from the input (file, field, patches): open it again, then rebuild
 };
-inline constexpr methods::EnumNames<OptionEffect, 5> kOptionEffectNames{{{OptionEffect::None, "none"},
+inline constexpr size_t kOptionEffects = size_t(OptionEffect::Reload) + 1;  // the last one + 1
+inline constexpr methods::EnumNames<OptionEffect, kOptionEffects> kOptionEffectNames{{{OptionEffect::None, "none"},
                                                                          {OptionEffect::Output, "output-only"},
                                                                          {OptionEffect::Camera, "camera"},
                                                                          {OptionEffect::Rebuild, "rebuild"},
                                                                          {OptionEffect::Reload, "reload"}}};
+static_assert(namesEveryValue(kOptionEffectNames));
 
 // The section an option is listed in: --help, the manual's option reference, the viewer's
 // panel and the Python/C++ option descriptions.
 enum class OptionGroup { Data, Output, Method, Overlay, Dye, Camera };
-inline constexpr methods::EnumNames<OptionGroup, 6> kOptionGroupNames{{{OptionGroup::Data, "Data"},
+inline constexpr size_t kOptionGroups = size_t(OptionGroup::Camera) + 1;  // the last one + 1
+inline constexpr methods::EnumNames<OptionGroup, kOptionGroups> kOptionGroupNames{{{OptionGroup::Data, "Data"},
                                                                        {OptionGroup::Output, "Output"},
                                                                        {OptionGroup::Method, "Method"},
                                                                        {OptionGroup::Overlay, "Overlay"},
                                                                        {OptionGroup::Dye, "Dye"},
                                                                        {OptionGroup::Camera, "Camera"}}};
+static_assert(namesEveryValue(kOptionGroupNames));
 std::string groupName(OptionGroup group);
 
 // The front ends that take an option, a set of bits. Every option is also a `set NAME VALUE`
@@ -135,12 +155,35 @@ enum class FrontEnd : unsigned {
 };
 constexpr FrontEnd operator|(FrontEnd a, FrontEnd b) { return FrontEnd(unsigned(a) | unsigned(b)); }
 
+// A set of methods, a bit 1 << Method each.
+struct MethodSet {
+    unsigned bits = 0;
+    constexpr bool has(methods::Method m) const { return ((bits >> unsigned(m)) & 1u) != 0; }
+};
+// Every method of methods::kMethodNames.
+inline constexpr MethodSet kEveryMethod = [] {
+    MethodSet all;
+    for (const auto& [m, name] : methods::kMethodNames) all.bits |= 1u << unsigned(m);
+    return all;
+}();
+
 // What a row is besides its value, declared in the row: its section, what a change means
-// after the start (the viewer, flowsurf::Renderer, ParaView) and the front ends that take it.
+// after the start (the viewer, flowsurf::Renderer, ParaView), the front ends that take it
+// and the methods whose images it changes (the panel hides the others' rows; Jupyter's
+// sliders and auto-tune's grid take each method's).
 struct OptionRole {
     OptionGroup group = OptionGroup::Data;
     OptionEffect effect = OptionEffect::Rebuild;
     FrontEnd frontEnds = FrontEnd::CommandLine;
+    MethodSet methods = kEveryMethod;
+
+    // This role for `only` of the methods.
+    constexpr OptionRole onlyFor(std::initializer_list<methods::Method> only) const {
+        OptionRole r = *this;
+        r.methods.bits = 0;
+        for (methods::Method m : only) r.methods.bits |= 1u << unsigned(m);
+        return r;
+    }
 };
 
 // The rescale buttons the viewer's panel offers for a range option (robust | data | auto |
@@ -173,6 +216,7 @@ struct OptionSpec {
     RangeRescale rescale = RangeRescale::None;
 
     bool takes(FrontEnd f) const { return (unsigned(role.frontEnds) & unsigned(f)) != 0; }
+    bool appliesTo(methods::Method m) const { return role.methods.has(m); }
 };
 
 // Every option of render/compare/view, in --help order.

@@ -124,7 +124,7 @@ std::vector<OptionSpec> timeRows() {
                "Animation frames per data time step (0: the range over --frames)", &RenderOptions::framesPerStep, 0,
                100000),
         {.name = "trace-dt",
-         .role = {G::Data, E::Rebuild, CommandLine | Config | Renderer},
+         .role = OptionRole{G::Data, E::Rebuild, CommandLine | Config | Renderer}.onlyFor({Hybrid}),
          .help = "Hybrid on a time series: data time per particle step, so the LIC follows pathlines (default: the "
                  "data time per frame; 0: streamlines of each frame's field)",
          .kind = OptionKind::Float,
