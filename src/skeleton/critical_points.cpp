@@ -96,12 +96,10 @@ PointType classify(const glm::mat2& j, int index, float spiralRatio, glm::vec2 (
     return re > 0.0f ? PointType::RepellingFocus : PointType::AttractingFocus;
 }
 
-std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const FieldOnGraph& field,
-                                              const SkeletonParams& params, size_t& zeros) {
-    const std::vector<glm::vec3>& f = field.smoothed;
-    const float tiny = 1e-7f * std::max(field.speed99, 1e-30f);
+namespace {
 
-    // (1) every triangle's zero
+// (1) every triangle's zero, in triangle order (the chunks are in order)
+std::vector<RawZero> triangleZeros(const SurfaceGraph& graph, const std::vector<glm::vec3>& f, float tiny) {
     std::vector<std::vector<RawZero>> perThread(16);
     detail::parallelChunks(graph.triangles.size(), [&](size_t b, size_t e, size_t thread) {
         for (size_t i = b; i < e; ++i) {
@@ -112,13 +110,16 @@ std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const F
             }
         }
     });
-    std::vector<RawZero> raw;  // in triangle order: the chunks are in order
+    std::vector<RawZero> raw;
     for (const auto& part : perThread) raw.insert(raw.end(), part.begin(), part.end());
-    zeros = raw.size();
+    return raw;
+}
 
-    // (2) the slow regions: vertices under the cancellation speed, joined along edges
+// (2) the slow regions: vertices under `slow`, joined along edges; a zero belongs to the slow
+// region of its triangle's slowest vertex, else stands alone. The zeros of each group.
+std::map<uint64_t, std::vector<size_t>> slowGroups(const SurfaceGraph& graph, const std::vector<glm::vec3>& f,
+                                                   const std::vector<RawZero>& raw, float slow) {
     const size_t nv = graph.vertexCount();
-    const float slow = params.cancelSpeed * field.speed99;
     std::vector<uint32_t> parent(nv);
     std::iota(parent.begin(), parent.end(), 0u);
     auto isSlow = [&](uint32_t v) { return glm::length(f[v]) < slow; };
@@ -131,7 +132,6 @@ std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const F
             if (a != b) parent[std::max(a, b)] = std::min(a, b);
         }
     }
-    // a zero belongs to the slow region of its triangle's slowest vertex, else stands alone
     std::map<uint64_t, std::vector<size_t>> groups;
     for (size_t i = 0; i < raw.size(); ++i) {
         const glm::uvec3& t = graph.triangles[raw[i].triangle];
@@ -141,44 +141,59 @@ std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const F
         const uint64_t key = isSlow(slowest) ? uint64_t(findRoot(parent, slowest)) : (uint64_t(1) << 40) + i;
         groups[key].push_back(i);
     }
+    return groups;
+}
 
-    // (3) each group: its net index; the type from the Jacobian over the scale (or the group's extent)
-    std::vector<CriticalPoint> points;
-    for (const auto& [key, members] : groups) {
-        int net = 0;
-        glm::vec3 centroid(0.0f);
-        for (size_t m : members) {
-            net += raw[m].index;
-            centroid += raw[m].position;
-        }
-        if (net == 0) continue;
-        centroid /= float(members.size());
-        std::vector<size_t> kept;
-        if (std::abs(net) == 1) {
-            size_t best = SIZE_MAX;
-            float bestDist = 0.0f;
-            for (size_t m : members) {
-                if (raw[m].index != net) continue;
-                const float d = glm::length(raw[m].position - centroid);
-                if (best == SIZE_MAX || d < bestDist) { best = m; bestDist = d; }
-            }
-            if (best != SIZE_MAX) kept.push_back(best);
-        } else {
-            kept = members;  // a higher-order zero: its parts as found
-        }
-        float extent = 0.0f;
-        for (size_t m : members) extent = std::max(extent, glm::length(raw[m].position - centroid));
-        for (size_t m : kept) {
-            CriticalPoint cp;
-            cp.position = raw[m].position;
-            cp.index = raw[m].index;
-            cp.merged = kept.size() == 1 ? members.size() : 1;
-            const glm::mat2 j = meanJacobian(graph, field.jacobians, raw[m].nearestVertex, cp.position,
-                                             std::max(field.scale, extent));
-            cp.type = classify(j, cp.index, params.spiralRatio, cp.eigenvalues);
-            points.push_back(cp);
-        }
+// (3) a group's points: none where its zeros cancel, the one of the net index nearest the
+// group's centre for +-1, else its parts as found (a higher-order zero); each typed by the
+// Jacobian over the scale (or the group's extent).
+void groupPoints(const SurfaceGraph& graph, const FieldOnGraph& field, const SkeletonParams& params,
+                 const std::vector<RawZero>& raw, const std::vector<size_t>& members, std::vector<CriticalPoint>& points) {
+    int net = 0;
+    glm::vec3 centroid(0.0f);
+    for (size_t m : members) {
+        net += raw[m].index;
+        centroid += raw[m].position;
     }
+    if (net == 0) return;
+    centroid /= float(members.size());
+    std::vector<size_t> kept;
+    if (std::abs(net) == 1) {
+        size_t best = SIZE_MAX;
+        float bestDist = 0.0f;
+        for (size_t m : members) {
+            if (raw[m].index != net) continue;
+            const float d = glm::length(raw[m].position - centroid);
+            if (best == SIZE_MAX || d < bestDist) { best = m; bestDist = d; }
+        }
+        if (best != SIZE_MAX) kept.push_back(best);
+    } else {
+        kept = members;
+    }
+    float extent = 0.0f;
+    for (size_t m : members) extent = std::max(extent, glm::length(raw[m].position - centroid));
+    for (size_t m : kept) {
+        CriticalPoint cp;
+        cp.position = raw[m].position;
+        cp.index = raw[m].index;
+        cp.merged = kept.size() == 1 ? members.size() : 1;
+        const glm::mat2 j = meanJacobian(graph, field.jacobians, raw[m].nearestVertex, cp.position,
+                                         std::max(field.scale, extent));
+        cp.type = classify(j, cp.index, params.spiralRatio, cp.eigenvalues);
+        points.push_back(cp);
+    }
+}
+
+}  // namespace
+
+std::vector<CriticalPoint> findCriticalPoints(const SurfaceGraph& graph, const FieldOnGraph& field,
+                                              const SkeletonParams& params, size_t& zeros) {
+    const std::vector<glm::vec3>& f = field.smoothed;
+    const std::vector<RawZero> raw = triangleZeros(graph, f, 1e-7f * std::max(field.speed99, 1e-30f));
+    zeros = raw.size();
+    std::vector<CriticalPoint> points;
+    for (const auto& [key, members] : slowGroups(graph, f, raw, params.cancelSpeed * field.speed99))
+        groupPoints(graph, field, params, raw, members, points);
     return points;
 }
 
