@@ -3,11 +3,9 @@
 
 #include "core/errors.h"
 
-#include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
-#include <vtkDoubleArray.h>
 #include <vtkInformation.h>
 #include <vtkPolyData.h>
 
@@ -103,15 +101,7 @@ void addFoamSkinFriction(vtkDataObject& step, const FoamWalls& walls, const std:
         throw FormatError(where + ": --field skin-friction: none of the patches read is a wall (type wall in "
                                   "constant/polyMesh/boundary); --patches selects which are read");
     addSkinFriction(volume, wallPatches, wallNames, walls.options, where);
-    for (vtkPolyData* p : otherPatches) {
-        auto zero = vtkSmartPointer<vtkDoubleArray>::New();
-        zero->SetName(kSkinFrictionName);
-        zero->SetNumberOfComponents(3);
-        zero->SetNumberOfTuples(p->GetNumberOfCells());
-        zero->Fill(0.0);
-        zero->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(walls.options.viscosity).c_str());
-        p->GetCellData()->AddArray(zero);
-    }
+    for (vtkPolyData* p : otherPatches) addZeroSkinFriction(p, walls.options.viscosity);
     // The surface is the patches: the volume goes before the surface stages see it.
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
         if (it->GetCurrentDataObject() == volume) {
