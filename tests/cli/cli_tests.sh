@@ -352,6 +352,15 @@ fi
 # --- skin-friction: the wall stress derived from the volume's velocity -------------------
 CAVITY=$(cd "$(dirname "$0")/../unit/data/openfoam_cavity_laminar" && pwd)/case.foam
 if "$FLOWSURF" info "$CAVITY" | grep -q "Wall stress.*skin-friction.*nu = 0.01"; then ok "info: skin-friction"; else bad "info: skin-friction"; fi
+# OpenFOAM's default: the wall-type patches, marked read by info; --patches '.*' all
+info=$("$FLOWSURF" info "$CAVITY")
+if grep -q "(wall patches)" <<<"$info" && grep -qE "movingWall +wall +- +20 faces  read" <<<"$info" &&
+   grep -qE "frontAndBack +empty +- +800 faces$" <<<"$info" && ! grep -qE "^  frontAndBack +[0-9]+ faces" <<<"$info" &&
+   "$FLOWSURF" info "$CAVITY" --patches '.*' | grep -qE "frontAndBack +empty +- +800 faces  read"; then
+    ok "foam info: wall patches by default"
+else
+    bad "foam info: wall patches by default ($info)"
+fi
 if "$FLOWSURF" render "$CAVITY" --field skin-friction --viscosity 0.02 --size 96x72 --frames 2 -q -o "$WORK/sf.png" &&
    [ -s "$WORK/sf.png" ]; then ok "render --field skin-friction"; else bad "render --field skin-friction"; fi
 expect_fail "skin-friction of a surface" 4 "plain.obj.*volume" "$WORK/sf2.png" -- render "$WORK/plain.obj" --field skin-friction -o "$WORK/sf2.png" -q
