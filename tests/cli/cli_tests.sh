@@ -361,6 +361,12 @@ if grep -q "(wall patches)" <<<"$info" && grep -qE "movingWall +wall +- +20 face
 else
     bad "foam info: wall patches by default ($info)"
 fi
+# wallShearStress is a point and a cell array: said once to be shown reversed
+if [ "$(grep -c "^Shown reversed   wallShearStress" <<<"$info")" -eq 1 ]; then
+    ok "info: reversed field said once"
+else
+    bad "info: reversed field said once ($info)"
+fi
 if "$FLOWSURF" render "$CAVITY" --field skin-friction --viscosity 0.02 --size 96x72 --frames 2 -q -o "$WORK/sf.png" &&
    [ -s "$WORK/sf.png" ]; then ok "render --field skin-friction"; else bad "render --field skin-friction"; fi
 expect_fail "skin-friction of a surface" 4 "plain.obj.*volume" "$WORK/sf2.png" -- render "$WORK/plain.obj" --field skin-friction -o "$WORK/sf2.png" -q
