@@ -7,6 +7,7 @@
 #include "skeleton/skeleton.h"
 #include "core/derived_fields.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace flowsurf::app {
@@ -30,10 +31,11 @@ void printDerived(const std::vector<std::string>& vectorArrays, const std::strin
                         "the near-wall flow; --reverse-field off shows it as stored)\n", name.c_str());
 }
 
+// Each vector array's name once: an OpenFOAM field is a cell array and a point array of the same name.
 std::vector<std::string> vectorArrays(const io::FileInfo& info) {
     std::vector<std::string> names;
     for (const auto& a : info.arrays)
-        if (a.components == 3) names.push_back(a.name);
+        if (a.components == 3 && std::find(names.begin(), names.end(), a.name) == names.end()) names.push_back(a.name);
     return names;
 }
 

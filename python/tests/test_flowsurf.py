@@ -486,3 +486,20 @@ def test_skin_friction_is_derived_while_reading():
     assert flowsurf.read(case, field="skin-friction", viscosity=0.02).field == "skin-friction"
     with pytest.raises(ValueError, match="skin-friction"):
         flowsurf.read("builtin:sphere", field="skin-friction")
+
+
+@pytest.mark.skipif(not os.environ.get("FLOWSURF_MAKE_CGNS"), reason="FLOWSURF_MAKE_CGNS not set")
+def test_skin_friction_of_a_cgns_volume_is_a_point_array(tmp_path):
+    """A CGNS volume result (tests/cgns: a linear shear u = (2y, 0, 0) between a floor at rest
+    and a roof moving with the fluid): point_array("skin-friction") is nu * 2 along x on the
+    floor and its opposite on the roof, one row per point."""
+    subprocess.run([os.environ["FLOWSURF_MAKE_CGNS"], str(tmp_path)], check=True)
+    s = flowsurf.read(str(tmp_path / "couette.cgns"), field="skin-friction", viscosity=0.5)
+    tau, y = s.point_array("skin-friction"), s.points()[:, 1]
+    assert tau.shape == (len(y), 3)
+    floor, roof = np.abs(y) < 1e-6, np.abs(y - 1) < 1e-6
+    assert floor.sum() == 15 and roof.sum() == 15 and (floor | roof).all()
+    assert np.allclose(tau[floor], [1.0, 0, 0], atol=1e-5)
+    assert np.allclose(tau[roof], [-1.0, 0, 0], atol=1e-5)
+    with pytest.raises(Exception, match="couette_novelocity.cgns"):
+        flowsurf.read(str(tmp_path / "couette_novelocity.cgns"), field="skin-friction")

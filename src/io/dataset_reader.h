@@ -20,7 +20,8 @@ struct ReadOptions {
 // How a file made of parts is read (OpenFOAM cases, CGNS files).
 struct SourceOptions {
     std::string patches;            // boundary patches to read: a regular expression on the name (CGNS: or the
-                                    // family); empty: OpenFOAM all, CGNS the walls
+                                    // family); empty: the walls (OpenFOAM's wall-type patches, CGNS's
+                                    // BCWall* BCs), all patches when none is a wall
     std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
     bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
     // The derived wall field `skin-friction` (--field skin-friction), computed where the volume is read

@@ -79,7 +79,7 @@ std::string formatFileInfo(const FileInfo& info) {
         }
     }
     if (!info.patches.empty()) {
-        // All of a CGNS file's boundary conditions, with what --patches matches (name, family).
+        // All of a CGNS file's boundary conditions or an OpenFOAM case's patches, with what is read.
         size_t nameWidth = 4, typeWidth = 4, familyWidth = 1;
         for (const auto& p : info.patches) {
             nameWidth = std::max(nameWidth, p.name.size());
@@ -87,7 +87,7 @@ std::string formatFileInfo(const FileInfo& info) {
             familyWidth = std::max(familyWidth, p.family.size());
         }
         s << "Boundaries   " << info.patches.size()
-          << " (BC name, type, family; 'read': in the surface, --patches NAME|FAMILY picks others)\n";
+          << " (name, type, family; 'read': in the surface: the walls by default, --patches NAME|FAMILY picks others)\n";
         for (const auto& p : info.patches)
             s << "  " << std::left << std::setw(int(nameWidth) + 2) << p.name << std::setw(int(typeWidth) + 2) << p.type
               << std::setw(int(familyWidth) + 2) << (p.family.empty() ? "-" : p.family) << std::right << std::setw(8) << p.faces

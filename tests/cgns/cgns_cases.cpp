@@ -553,6 +553,53 @@ void writeStructuredBlocks(const std::string& path, Backend backend, const std::
     if (!expectedVtk.empty()) writeLegacy(expectedVtk, expected);
 }
 
+namespace {
+
+// The box's points as one structured zone (vid's order is the standard's, i fastest) with
+// floor, roof and inlet as vertex ranges.
+int writeStructuredBoxZone(int fn, int b, const Box& box) {
+    cgsize_t size[9] = {kNx + 1, kNy + 1, kNz + 1, kNx, kNy, kNz, 0, 0, 0};
+    int z = 0, c = 0, bc = 0;
+    check(cg_zone_write(fn, b, "Fluid", size, CGNS_ENUMV(Structured), &z), "cg_zone_write");
+    std::vector<double> xyz[3];
+    for (const Point& p : box.points) xyz[0].push_back(p.x), xyz[1].push_back(p.y), xyz[2].push_back(p.z);
+    for (int d = 0; d < 3; ++d)
+        check(cg_coord_write(fn, b, z, CGNS_ENUMV(RealDouble), d == 0 ? "CoordinateX" : d == 1 ? "CoordinateY" : "CoordinateZ",
+                             xyz[d].data(), &c),
+              "cg_coord_write");
+    const cgsize_t floor[6] = {1, 1, 1, kNx + 1, 1, kNz + 1}, roof[6] = {1, kNy + 1, 1, kNx + 1, kNy + 1, kNz + 1},
+                   inlet[6] = {1, 1, 1, 1, kNy + 1, kNz + 1};
+    check(cg_boco_write(fn, b, z, "floor", CGNS_ENUMV(BCWall), CGNS_ENUMV(PointRange), 2, floor, &bc), "floor");
+    check(cg_boco_write(fn, b, z, "roof", CGNS_ENUMV(BCWall), CGNS_ENUMV(PointRange), 2, roof, &bc), "roof");
+    check(cg_boco_write(fn, b, z, "inlet", CGNS_ENUMV(BCInflow), CGNS_ENUMV(PointRange), 2, inlet, &bc), "inlet");
+    return z;
+}
+
+}  // namespace
+
+void writeCouetteBox(const std::string& path, Backend backend, CouetteVelocity velocity, bool structured) {
+    const Box box = makeBox();
+    const int fn = openForWriting(path, backend);
+    const int b = writeBase(fn, "Base");
+    const int z = structured ? writeStructuredBoxZone(fn, b, box) : writeBoxZone(fn, b, box, true);
+    int s = 0, f = 0;
+    std::vector<double> u[3], p;
+    if (velocity == CouetteVelocity::CellCenter) {
+        check(cg_sol_write(fn, b, z, "CellCentred", CGNS_ENUMV(CellCenter), &s), "cg_sol_write CellCenter");
+        for (int k = 0; k < kNz; ++k)
+            for (int j = 0; j < kNy; ++j)
+                for (int i = 0; i < kNx; ++i)  // cellOf's order
+                    u[0].push_back(kCouetteShear * 0.5 * (j + 0.5)), u[1].push_back(0.0), u[2].push_back(0.0);
+    } else {
+        check(cg_sol_write(fn, b, z, "FlowSolution", CGNS_ENUMV(Vertex), &s), "cg_sol_write");
+        for (const Point& x : box.points) u[0].push_back(kCouetteShear * x.y), u[1].push_back(0.0), u[2].push_back(0.0);
+    }
+    for (const Point& x : box.points) p.push_back(pressure(x));
+    if (velocity != CouetteVelocity::None) writeVector(fn, b, z, s, "Velocity", u);
+    else check(cg_field_write(fn, b, z, s, CGNS_ENUMV(RealDouble), "Pressure", p.data(), &f), "Pressure");
+    check(cg_close(fn), "cg_close");
+}
+
 void overwriteNode(const std::string& path, const std::string& node, const std::vector<int>& values) {
     int cgio = 0;
     double root = 0, id = 0;

@@ -46,6 +46,18 @@ void writeSurfaceZone(const std::string& path, Backend backend, const std::strin
 // A volume without any BC: the expected surface is the box's whole boundary (6 sides).
 void writeBoxWithoutBcs(const std::string& path, Backend backend, const std::string& expectedVtk = {});
 
+// The box with an exact linear shear u = (kCouetteShear * y, 0, 0) (plane Couette flow between
+// the floor at rest and the roof moving at kCouetteShear), as one unstructured zone with
+// writeUnstructuredBox's BCs or (`structured`) one structured zone of the same points with
+// BCWall floor (j = 1) and roof (j = max) and a BCInflow inlet (i = 1). The velocity is a
+// Vertex solution, a CellCenter one (the cells' centre values: the roof's own velocity is then
+// unknown) or absent (a Pressure only). The one-cell wall stress is exact for a linear profile:
+// ν·kCouetteShear along x on the floor, −ν·kCouetteShear on the moving roof, and with the roof
+// taken at rest (cell-centred) ν·(0.75 kCouetteShear)/0.25 = 3ν·kCouetteShear.
+inline constexpr double kCouetteShear = 2.0;
+enum class CouetteVelocity { Vertex, CellCenter, None };
+void writeCouetteBox(const std::string& path, Backend backend, CouetteVelocity velocity, bool structured);
+
 // Hostile variants of a file written by writeUnstructuredBox, damaged in place through
 // libcgns's node layer: `node` ("/Base/Fluid" the zone's sizes, "/Base/Fluid/floor/ElementRange"
 // a section's range, "/Base/Fluid/ZoneBC/floor/PointRange" a BC's) overwritten with the

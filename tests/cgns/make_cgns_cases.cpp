@@ -1,6 +1,7 @@
 // Writes the test cases of cgns_cases.h into a folder, for the command-line tests and the
 // manual's picture: box.cgns (HDF5), box_adf.cgns (ADF), series.cgns, blocks.cgns,
-// nobc.cgns, each with its expected surface as NAME.expected.vtk (series: one per step).
+// nobc.cgns, each with its expected surface as NAME.expected.vtk (series: one per step), and
+// couette.cgns, couette_novelocity.cgns (a linear shear for --field skin-friction, and none).
 // With --fuzz-seeds: the fuzz corpus's CGNS seeds instead (fuzz/cgns/, read by
 // fuzz/make_seeds.py): the small valid files and their hostile variants (cut short, counts
 // beyond the file), each on its own.
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
         c::writeUnstructuredSeries(d + "series.cgns", c::Backend::Hdf5, d + "series.expected_%d.vtk");
         c::writeStructuredBlocks(d + "blocks.cgns", c::Backend::Hdf5, d + "blocks.expected.vtk");
         c::writeBoxWithoutBcs(d + "nobc.cgns", c::Backend::Adf, d + "nobc.expected.vtk");
+        c::writeCouetteBox(d + "couette.cgns", c::Backend::Hdf5, c::CouetteVelocity::Vertex, false);
+        c::writeCouetteBox(d + "couette_novelocity.cgns", c::Backend::Hdf5, c::CouetteVelocity::None, false);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -334,10 +334,39 @@ if [ -n "$MAKE_CGNS" ]; then
     expect_fail "cgns truncated"      4 "cut.cgns"             "$WORK/cg2.png" -- render "$WORK/cgns/cut.cgns" -o "$WORK/cg2.png" -q
     printf 'not cgns' > "$WORK/cgns/text.cgns"
     expect_fail "cgns not cgns"       4 "text.cgns: not a CGNS file" "$WORK/cg3.png" -- render "$WORK/cgns/text.cgns" -o "$WORK/cg3.png" -q
+    # skin-friction of a CGNS volume: said by info, rendered, refused without a velocity
+    if "$FLOWSURF" info "$WORK/cgns/couette.cgns" | grep -q "Wall stress.*skin-friction: from Velocity (at the vertices).*wall BCs floor, roof"; then
+        ok "cgns info: skin-friction"
+    else
+        bad "cgns info: skin-friction"
+    fi
+    if "$FLOWSURF" render "$WORK/cgns/couette.cgns" --field skin-friction --viscosity 1e-5 --legend --size 96x72 --frames 2 -q \
+           -o "$WORK/cgns/sf.png" && [ -s "$WORK/cgns/sf.png" ]; then
+        ok "cgns render --field skin-friction"
+    else
+        bad "cgns render --field skin-friction"
+    fi
+    expect_fail "cgns skin-friction without velocity" 5 "couette_novelocity.cgns.*skin-friction.*no velocity" "$WORK/cg4.png" \
+        -- render "$WORK/cgns/couette_novelocity.cgns" --field skin-friction -o "$WORK/cg4.png" -q
 fi
 # --- skin-friction: the wall stress derived from the volume's velocity -------------------
 CAVITY=$(cd "$(dirname "$0")/../unit/data/openfoam_cavity_laminar" && pwd)/case.foam
 if "$FLOWSURF" info "$CAVITY" | grep -q "Wall stress.*skin-friction.*nu = 0.01"; then ok "info: skin-friction"; else bad "info: skin-friction"; fi
+# OpenFOAM's default: the wall-type patches, marked read by info; --patches '.*' all
+info=$("$FLOWSURF" info "$CAVITY")
+if grep -q "(wall patches)" <<<"$info" && grep -qE "movingWall +wall +- +20 faces  read" <<<"$info" &&
+   grep -qE "frontAndBack +empty +- +800 faces$" <<<"$info" && ! grep -qE "^  frontAndBack +[0-9]+ faces" <<<"$info" &&
+   "$FLOWSURF" info "$CAVITY" --patches '.*' | grep -qE "frontAndBack +empty +- +800 faces  read"; then
+    ok "foam info: wall patches by default"
+else
+    bad "foam info: wall patches by default ($info)"
+fi
+# wallShearStress is a point and a cell array: said once to be shown reversed
+if [ "$(grep -c "^Shown reversed   wallShearStress" <<<"$info")" -eq 1 ]; then
+    ok "info: reversed field said once"
+else
+    bad "info: reversed field said once ($info)"
+fi
 if "$FLOWSURF" render "$CAVITY" --field skin-friction --viscosity 0.02 --size 96x72 --frames 2 -q -o "$WORK/sf.png" &&
    [ -s "$WORK/sf.png" ]; then ok "render --field skin-friction"; else bad "render --field skin-friction"; fi
 expect_fail "skin-friction of a surface" 4 "plain.obj.*volume" "$WORK/sf2.png" -- render "$WORK/plain.obj" --field skin-friction -o "$WORK/sf2.png" -q

@@ -122,8 +122,8 @@ TEST(Scalars, OpenFoamFieldOnOnePatchIsKept) {
     writeText(dir.file("system/controlDict"), hdr("dictionary", "controlDict") +
                                                   "application icoFoam;\nstartTime 0;\nendTime 1;\ndeltaT 1;\n");
     writeText(dir.file("case.foam"), "");
-    core::Dataset d = io::readDataset(dir.file("case.foam"));
-    const core::SurfaceMesh& m = d.steps.at(0).mesh;
+    // Every patch (by default only the wall patch is read, which has T throughout).
+    const core::SurfaceMesh m = io::openSeries(dir.file("case.foam"), {".*"})->load(0);
     EXPECT_EQ(m.triangleCount(), 12u);
     const core::ScalarField* t = m.findScalar("T");
     ASSERT_NE(t, nullptr) << "T was dropped";
@@ -132,11 +132,14 @@ TEST(Scalars, OpenFoamFieldOnOnePatchIsKept) {
     EXPECT_GT(two, 0u);
     EXPECT_GT(nan, 0u);
     EXPECT_NE(m.findField("U"), nullptr);
-    // --patches selects boundary patches by name: the four wall faces only, T everywhere.
-    core::SurfaceMesh walls = io::openSeries(dir.file("case.foam"), {"wal.*"})->load(0);
-    EXPECT_EQ(walls.triangleCount(), 8u);
-    ASSERT_NE(walls.findScalar("T"), nullptr);
-    for (float v : walls.findScalar("T")->values) EXPECT_EQ(v, 2.0f);
+    // --patches selects boundary patches by name, and the default is the wall-type patch:
+    // the four wall faces only, T everywhere.
+    for (const char* patches : {"wal.*", ""}) {
+        core::SurfaceMesh walls = io::openSeries(dir.file("case.foam"), {patches})->load(0);
+        EXPECT_EQ(walls.triangleCount(), 8u) << "--patches '" << patches << "'";
+        ASSERT_NE(walls.findScalar("T"), nullptr);
+        for (float v : walls.findScalar("T")->values) EXPECT_EQ(v, 2.0f);
+    }
     EXPECT_THROW(io::openSeries(dir.file("case.foam"), {"nope"}), ConfigError);
 }
 

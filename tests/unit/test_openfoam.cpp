@@ -214,7 +214,22 @@ TEST(OpenFoam, InfoListsPatchesWithTheirFieldsAndMissingEntriesAreWarned) {
     writeCubeMesh(dir.path(), 0, {{"walls", "wall", {0, 1, 2, 3}}, {"ends", "patch", {4, 5}}});
     writeField(dir.path() / "0", "U", "volVectorField", "0 1 -1 0 0 0 0", "(1 0 0)", {{"walls", "(1 0 0)"}, {"ends", "(1 0 0)"}});
     writeField(dir.path() / "0", "T", "volScalarField", "0 0 0 1 0 0 0", "0", {{"walls", "2"}});
-    io::FileInfo info = io::inspectFile(dir.file("case.foam"));
+    // By default the wall-type patch alone is read; info lists both with their types and face counts.
+    const io::FileInfo byDefault = io::inspectFile(dir.file("case.foam"));
+    ASSERT_EQ(byDefault.parts.size(), 1u);
+    EXPECT_EQ(byDefault.parts[0].name, "walls");
+    ASSERT_EQ(byDefault.patches.size(), 2u);
+    EXPECT_EQ(byDefault.patches[0].name, "walls");
+    EXPECT_EQ(byDefault.patches[0].type, "wall");
+    EXPECT_EQ(byDefault.patches[0].faces, 4u);
+    EXPECT_TRUE(byDefault.patches[0].read);
+    EXPECT_EQ(byDefault.patches[1].name, "ends");
+    EXPECT_EQ(byDefault.patches[1].type, "patch");
+    EXPECT_EQ(byDefault.patches[1].faces, 2u);
+    EXPECT_FALSE(byDefault.patches[1].read);
+    EXPECT_NE(byDefault.format.find("(wall patches)"), std::string::npos) << byDefault.format;
+    // All patches, as asked for.
+    io::FileInfo info = io::inspectFile(dir.file("case.foam"), {".*"});
     ASSERT_EQ(info.parts.size(), 2u);
     auto has = [](const io::PartInfo& p, const char* a) {
         return std::find(p.arrays.begin(), p.arrays.end(), a) != p.arrays.end();
@@ -229,7 +244,7 @@ TEST(OpenFoam, InfoListsPatchesWithTheirFieldsAndMissingEntriesAreWarned) {
     // The same with "ends" listed first: T is gone everywhere, and the warning says why.
     writeCubeMesh(dir.path(), 0, {{"ends", "patch", {4, 5}}, {"walls", "wall", {0, 1, 2, 3}}});
     ::testing::internal::CaptureStderr();
-    const core::SurfaceMesh m = io::openSeries(dir.file("case.foam"))->load(0);
+    const core::SurfaceMesh m = io::openSeries(dir.file("case.foam"), {".*"})->load(0);
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(m.findScalar("T"), nullptr);
     EXPECT_NE(err.find("fields T of time 0 have no entry for boundary patch 'ends'"), std::string::npos) << err;

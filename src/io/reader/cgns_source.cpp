@@ -4,13 +4,17 @@
 // is its wall patches by default (BC type BCWall*, directly or through the BC's family),
 // the patches whose BC or family name --patches matches when given, and the volume's
 // boundary surface when it has no wall BC; the patches come from cgns_boundaries.h, their
-// surfaces with the solution from cgns_walls.h. Surface zones are shown whole.
+// surfaces with the solution from cgns_walls.h. Surface zones are shown whole. With
+// --field skin-friction the wall BCs get the derived stress (skin_friction.h) from the cell
+// behind each face that cgns_walls.h finds, the boundary surface of a volume without walls too.
 // Sections: the file's kind · the selection · the source · openCgns.
 #include "io/reader/vtk_sources.h"
 
 #include "core/errors.h"
 #include "io/reader/cgns_boundaries.h"
 #include "io/reader/cgns_walls.h"
+#include "io/reader/skin_friction.h"
+#include "io/reader/vtk_messages.h"
 
 #include <vtkCGNSReader.h>
 #include <vtkCellData.h>
@@ -23,7 +27,9 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
+#include <sstream>
 
 namespace flowsurf::io::detail {
 
@@ -99,8 +105,10 @@ vtkDataSet* zoneData(vtkMultiBlockDataSet* root, const CgnsZone& zone) {
 class CgnsSource final : public AlgorithmSource {
 public:
     CgnsSource(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap,
-               std::vector<CgnsZone> zones, std::vector<std::vector<size_t>> selected)
-        : AlgorithmSource(reader, path, format, trap), zones_(std::move(zones)), selected_(std::move(selected)) {
+               std::vector<CgnsZone> zones, std::vector<std::vector<size_t>> selected,
+               std::optional<SkinFrictionOptions> skinFriction)
+        : AlgorithmSource(reader, path, format, trap), zones_(std::move(zones)), selected_(std::move(selected)),
+          skinFriction_(std::move(skinFriction)) {
         for (const auto& s : selected_) patchesShown_ = patchesShown_ || !s.empty();
     }
 
@@ -133,36 +141,76 @@ protected:
                 continue;
             }
             const std::string prefix = zones_.size() > 1 ? zone.name + "/" : "";
+            const std::string where = path() + " (zone " + zone.base + "/" + zone.name + ")";
             if (zone.cellDim < 3 || !patchesShown_) {
-                add(volume, zones_.size() > 1 ? zone.name : "zone " + zone.name);
+                add(wholeZone(volume, zone, where), zones_.size() > 1 ? zone.name : "zone " + zone.name);
                 continue;
             }
-            const std::string where = path() + " (zone " + zone.base + "/" + zone.name + ")";
             if (volume->GetNumberOfPoints() != zone.vertices)
                 throw FormatError(where + ": VTK's reader gave " + std::to_string(volume->GetNumberOfPoints()) +
                                   " points, the zone has " + std::to_string(zone.vertices));
             const bool cellArrays = volume->GetCellData()->GetNumberOfArrays() > 0;
             for (size_t i : selected_[z]) {
                 const CgnsPatch& patch = zone.patches[i];
-                // The cell behind each wall face brings the cell-centred solution to the wall;
-                // found once, as CGNS moves coordinates over time but keeps the connectivity.
-                // (Where a quantity from the near-wall cell, the wall shear stress, would be
-                // computed: `volume`, `patch` and these cells.)
+                // The cell behind each wall face brings the cell-centred solution to the wall and
+                // is where the wall's shear stress is taken; found once, as CGNS moves
+                // coordinates over time but keeps the connectivity.
                 std::vector<vtkIdType>& cells = wallCells_[{z, i}];
-                if (cellArrays && cells.empty()) cells = wallCells(volume, patch);
+                if ((cellArrays || skinFriction_) && cells.empty()) cells = wallCells(volume, patch);
                 static const std::vector<vtkIdType> kNoCells;
-                add(patchSurface(volume, patch, cellArrays ? cells : kNoCells, where), prefix + patch.name);
+                vtkSmartPointer<vtkPolyData> surface = patchSurface(volume, patch, cellArrays ? cells : kNoCells, where);
+                if (skinFriction_ && isCgnsWallType(patch.type))
+                    addSkinFrictionOnCells(volume, surface, cells, patch.offsets, patch.ids, "BC '" + patch.name + "'",
+                                           *skinFriction_, where);
+                else if (skinFriction_)
+                    addZeroSkinFriction(surface, skinFriction_->viscosity);
+                add(surface, prefix + patch.name);
             }
         }
         step.ShallowCopy(out);
     }
 
 private:
+    // A zone shown whole: a surface zone as it is (with a zero skin-friction beside walls),
+    // a volume without wall BCs as its boundary surface when skin-friction is asked for.
+    vtkSmartPointer<vtkDataObject> wholeZone(vtkDataSet* data, const CgnsZone& zone, const std::string& where) const {
+        if (!skinFriction_) return data;
+        if (zone.cellDim >= 3) return newBoundaryWithSkinFriction(data, *skinFriction_, where);
+        vtkSmartPointer<vtkDataSet> copy = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
+        copy->ShallowCopy(data);
+        addZeroSkinFriction(copy, skinFriction_->viscosity);
+        return copy;
+    }
+
     std::vector<CgnsZone> zones_;
     std::vector<std::vector<size_t>> selected_;
     bool patchesShown_ = false;
+    std::optional<SkinFrictionOptions> skinFriction_;  // set: --field skin-friction
     std::map<std::pair<size_t, size_t>, std::vector<vtkIdType>> wallCells_;  // (zone, patch) -> wallCells()
 };
+
+// --field skin-friction's options for this file: the velocity found by name in each zone
+// (vtkCGNSReader's combined Velocity), the viscosity only from --viscosity (CGNS states a
+// dynamic viscosity and density in ReferenceState only in nondimensional forms that differ from
+// solver to solver). Throws FormatError when there is no volume or none of the BCs read is a wall.
+SkinFrictionOptions skinFrictionOfCgns(const std::string& path, const std::vector<CgnsZone>& zones,
+                                       const std::vector<std::vector<size_t>>& selected, const SourceOptions& options) {
+    bool volume = false, wall = false, shown = false;
+    for (size_t z = 0; z < zones.size(); ++z) {
+        volume = volume || zones[z].cellDim == 3;
+        for (size_t i : selected[z]) shown = true, wall = wall || isCgnsWallType(zones[z].patches[i].type);
+    }
+    if (!volume)
+        throw FormatError(path + ": --field skin-friction needs a volume zone with its velocity; this CGNS file holds "
+                                 "surface zones only");
+    if (shown && !wall)
+        throw FormatError(path + ": --field skin-friction: none of the BCs read is a wall (BC type BCWall*; BCs: " +
+                          patchList(zones) + "); --patches selects which are read");
+    SkinFrictionOptions sf;
+    sf.viscosity = options.viscosity;
+    sf.warn = warnOnce;
+    return sf;
+}
 
 }  // namespace
 
@@ -179,6 +227,14 @@ std::unique_ptr<StepSource> openCgns(const std::string& path, const std::string&
     if (volumes > 0)
         format += shown > 0 ? options.patches.empty() ? "; wall patches" : "; patches matching --patches"
                             : "; no wall BC: the volume's boundary surface";
+    std::optional<SkinFrictionOptions> skinFriction;
+    if (options.skinFriction) {
+        skinFriction = skinFrictionOfCgns(path, zones, selected, options);
+        std::ostringstream nu;
+        nu << options.viscosity;
+        format += options.viscosity > 0 ? "; skin-friction: nu = " + nu.str() + " m^2/s from --viscosity"
+                                         : "; skin-friction: no viscosity given, relative magnitude";
+    }
     format += ")";
     auto r = vtkSmartPointer<vtkCGNSReader>::New();
     r->SetFileName(path.c_str());
@@ -193,7 +249,8 @@ std::unique_ptr<StepSource> openCgns(const std::string& path, const std::string&
     r->LoadBndPatchOff();
     r->LoadMeshOn();
     readInformation(r, path, format, trap);
-    return std::make_unique<CgnsSource>(r, path, format, trap, std::move(zones), std::move(selected));
+    return std::make_unique<CgnsSource>(r, path, format, trap, std::move(zones), std::move(selected),
+                                        std::move(skinFriction));
 }
 
 }  // namespace flowsurf::io::detail

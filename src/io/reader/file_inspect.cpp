@@ -3,6 +3,7 @@
 // are of the surface readDataset would produce for the first time step.
 #include "io/reader/file_inspect.h"
 
+#include "io/reader/cgns_boundaries.h"
 #include "io/reader/reader_wire.h"
 #include "io/reader/skin_friction.h"
 #include "io/reader/surface_pipeline.h"
@@ -66,6 +67,29 @@ std::string volumeSkinFrictionNote(vtkDataObject* raw, const SourceOptions& opti
            (options.viscosity > 0 ? "nu from --viscosity" : "a relative magnitude unless --viscosity is given");
 }
 
+// What --field skin-friction would take in a CGNS file: the wall BCs read and the velocity on
+// them (the patches carry the zone's solution, vertex or cell-centred); the boundary
+// surface's note when no BC is read.
+std::string cgnsSkinFrictionNote(vtkDataObject* raw, const std::vector<PatchInfo>& patches, const SourceOptions& options) {
+    std::string walls;
+    bool read = false;
+    for (const auto& p : patches) {
+        read = read || p.read;
+        if (p.read && isCgnsWallType(p.type)) walls += (walls.empty() ? "" : ", ") + p.name;
+    }
+    if (!read) return volumeSkinFrictionNote(raw, options);
+    if (walls.empty()) return "not available: none of the BCs read is a wall (BC type BCWall*)";
+    std::string velocity, where;
+    forEachNamedLeaf(raw, [&](vtkDataSet* ds, const std::string&) {
+        if (!velocity.empty()) return;
+        velocity = findVelocityArray(ds);
+        where = ds->GetCellData()->GetArray(velocity.c_str()) ? "cell-centred" : "at the vertices";
+    });
+    if (velocity.empty()) return "not available: the solution has no velocity (a 3-component array named U, velocity or vel)";
+    return "from " + velocity + " (" + where + ") in the cells next to the wall BCs " + walls + "; " +
+           (options.viscosity > 0 ? "nu from --viscosity" : "a relative magnitude unless --viscosity is given");
+}
+
 }  // namespace
 
 FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) {
@@ -90,8 +114,9 @@ FileInfo inspectFileHere(const std::string& path, const SourceOptions& options) 
     info.points = mesh.vertexCount();
     info.triangles = mesh.triangleCount();
     info.bounds = mesh.bounds();
-    info.skinFriction = info.format.rfind("OpenFOAM", 0) == 0 ? foamSkinFrictionNote(path, options)
-                                                              : volumeSkinFrictionNote(raw, options);
+    if (info.format.rfind("OpenFOAM", 0) == 0) info.skinFriction = foamSkinFrictionNote(path, options);
+    else if (info.format.rfind("CGNS", 0) == 0) info.skinFriction = cgnsSkinFrictionNote(raw, info.patches, options);
+    else info.skinFriction = volumeSkinFrictionNote(raw, options);
     return info;
 }
 

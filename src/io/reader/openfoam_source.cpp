@@ -1,4 +1,5 @@
-// OpenFOAM cases through VTK's reader: the boundary patches (--patches) of a reconstructed
+// OpenFOAM cases through VTK's reader: the boundary patches (the wall-type ones by default,
+// all when none is a wall; --patches picks by name) of a reconstructed
 // case or of a decomposed one (processor* directories, --foam-case), every time directory a
 // step except the initial conditions in 0/ when solved times exist (--foam-zero-time reads
 // them too, as ParaView's Skip Zero Time off), a time directory VTK cannot parse left out
@@ -242,7 +243,11 @@ void warnMissingPatchEntries(const std::vector<std::string>& warnings, const std
 // and the units moved from the array names to the labels.
 class OpenFoamSource final : public AlgorithmSource {
 public:
-    using AlgorithmSource::AlgorithmSource;
+    OpenFoamSource(vtkAlgorithm* reader, const std::string& path, const std::string& format, VtkMessageTrap& trap,
+                   std::vector<PatchInfo> patches)
+        : AlgorithmSource(reader, path, format, trap), patches_(std::move(patches)) {}
+
+    std::vector<PatchInfo> patches() const override { return patches_; }
 
     // Reads once each time directory below `timeRoot` (the case folder or processor0)
     // that VTK may not parse, and leaves out those it does not, each named in a warning
@@ -287,33 +292,56 @@ protected:
     }
 
 private:
+    std::vector<PatchInfo> patches_;  // every boundary patch, with its type and whether it is read
     std::map<std::string, std::string> units_;
     std::optional<FoamWalls> walls_;
 };
 
 // Boundary patches only: the surface to show is the walls, not the volume. --patches
-// matches the patch's own name (VTK lists boundary patches as "patch/NAME").
-// `volume`: the internal mesh too (for skin-friction, dropped after).
-void selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::string& patches, bool volume) {
+// matches the patch's own name (VTK lists boundary patches as "patch/NAME"); without it the
+// wall-type patches are read, as a CGNS file's wall BCs, and all patches when none is a wall
+// (or the boundary file gives no types). `volume`: the internal mesh too (for skin-friction,
+// dropped after). `meshDirs`: the constant/polyMesh folders read (the case's, or each
+// processor's), for the types and face counts. Returns every patch, marked read or not.
+std::vector<PatchInfo> selectPatches(vtkOpenFOAMReader* r, const std::string& path, const std::string& patches, bool volume,
+                                     const std::vector<fs::path>& meshDirs) {
     std::regex select;
     try {
         select = std::regex(patches.empty() ? ".*" : patches);
     } catch (const std::regex_error& e) {
         throw ConfigError("--patches: '" + patches + "' is not a regular expression (" + e.what() + ")");
     }
-    std::string all;
-    int kept = 0;
+    const std::map<std::string, std::string> types = meshDirs.empty() ? std::map<std::string, std::string>{}
+                                                                      : readPatchTypes(meshDirs.front());
+    std::map<std::string, size_t> faces;
+    for (const fs::path& dir : meshDirs)
+        for (const auto& [name, n] : readPatchFaceCounts(dir)) faces[name] += n;
+    std::vector<PatchInfo> all;
+    std::vector<std::string> arrays;  // VTK's names, in `all`'s order
     for (int i = 0; i < r->GetNumberOfPatchArrays(); ++i) {
-        std::string name = r->GetPatchArrayName(i);
+        const std::string name = r->GetPatchArrayName(i);
+        r->SetPatchArrayStatus(name.c_str(), volume && name == "internalMesh" ? 1 : 0);
+        // Patch groups ("group/wall", from inGroups) name patches listed on their own too.
+        if (name == "internalMesh" || name.rfind("lagrangian", 0) == 0 || name.rfind("group/", 0) == 0) continue;
         const std::string bare = name.rfind("patch/", 0) == 0 ? name.substr(6) : name;
-        bool keep = name != "internalMesh" && name.rfind("lagrangian", 0) != 0;
-        if (keep) all += (all.empty() ? "" : ", ") + bare;
-        keep = keep && std::regex_match(bare, select);
-        kept += keep;
-        r->SetPatchArrayStatus(name.c_str(), keep || (volume && name == "internalMesh") ? 1 : 0);
+        const auto type = types.find(bare);
+        const auto count = faces.find(bare);
+        all.push_back({bare, type == types.end() ? "?" : type->second, "", count == faces.end() ? 0 : count->second, false});
+        arrays.push_back(name);
+    }
+    bool anyWall = false;
+    for (const auto& p : all) anyWall = anyWall || isFoamWallType(p.type);
+    std::string list;
+    int kept = 0;
+    for (size_t i = 0; i < all.size(); ++i) {
+        list += (list.empty() ? "" : ", ") + all[i].name;
+        all[i].read = patches.empty() && anyWall ? isFoamWallType(all[i].type) : std::regex_match(all[i].name, select);
+        kept += all[i].read;
+        if (all[i].read) r->SetPatchArrayStatus(arrays[i].c_str(), 1);
     }
     if (kept == 0)
-        throw ConfigError(path + ": --patches '" + patches + "' matches no boundary patch (patches: " + all + ")");
+        throw ConfigError(path + ": --patches '" + patches + "' matches no boundary patch (patches: " + list + ")");
+    return all;
 }
 
 // How skin-friction is derived on this case: the wall patches from the boundary file of
@@ -404,7 +432,14 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
     r->CacheMeshOn();
     trap.watch(r);
     readInformation(r, path, format, trap);
-    selectPatches(r, path, options.patches, options.skinFriction);
+    std::vector<fs::path> meshDirs;
+    for (const fs::path& root : readsDecomposedLayout ? processorDirs(caseDir(path)) : std::vector<fs::path>{caseDir(path)})
+        meshDirs.push_back(root / "constant" / "polyMesh");
+    std::vector<PatchInfo> patches = selectPatches(r, path, options.patches, options.skinFriction, meshDirs);
+    if (options.patches.empty()) {
+        const bool walls = std::any_of(patches.begin(), patches.end(), [](const PatchInfo& p) { return isFoamWallType(p.type); });
+        format += walls ? " (wall patches)" : " (no wall patch: all patches)";
+    }
     // Polyhedra kept whole: a wall face then has one owner cell, whose centre is the mean of its points.
     if (options.skinFriction) r->DecomposePolyhedraOff();
     r->EnableAllCellArrays();
@@ -416,7 +451,7 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
         walls = foamWalls(r, path, readsDecomposedLayout ? timeRoot : caseDir(path), options);
         format += " (skin-friction: " + walls->described + ")";
     }
-    auto source = std::make_unique<OpenFoamSource>(r, path, format, trap);
+    auto source = std::make_unique<OpenFoamSource>(r, path, format, trap, std::move(patches));
     if (walls) source->deriveSkinFriction(*walls);
     source->dropUnparsedTimes(timeRoot);
     return source;

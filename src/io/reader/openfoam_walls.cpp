@@ -3,11 +3,9 @@
 
 #include "core/errors.h"
 
-#include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
-#include <vtkDoubleArray.h>
 #include <vtkInformation.h>
 #include <vtkPolyData.h>
 
@@ -34,21 +32,35 @@ std::string dictionaryText(const fs::path& file) {
 }  // namespace
 
 // --- case dictionaries -------------------------------------------------------------------
-std::map<std::string, std::string> readPatchTypes(const fs::path& meshDir) {
-    std::map<std::string, std::string> types;
+namespace {
+
+// The word after `key` in each patch entry of `meshDir`/boundary, by patch name.
+std::map<std::string, std::string> readPatchEntries(const fs::path& meshDir, const std::string& key) {
+    std::map<std::string, std::string> values;
     const std::string text = dictionaryText(meshDir / "boundary");
     // After the FoamFile header: N ( name { type T; ... } ... ); patch dictionaries hold no braces.
     const size_t list = text.find('(', text.find("FoamFile") == std::string::npos ? 0 : text.find('}') + 1);
-    if (list == std::string::npos) return types;
+    if (list == std::string::npos) return values;
     static const std::regex entry(R"(([A-Za-z_][\w.:\-]*)\s*\{([^{}]*)\})");
-    static const std::regex type(R"((?:^|[;\s])type\s+(\w+)\s*;)");
+    const std::regex value("(?:^|[;\\s])" + key + R"(\s+(\w+)\s*;)");
     for (auto it = std::sregex_iterator(text.begin() + std::ptrdiff_t(list), text.end(), entry);
          it != std::sregex_iterator(); ++it) {
         std::smatch t;
         const std::string body = (*it)[2].str();
-        if (std::regex_search(body, t, type)) types[(*it)[1].str()] = t[1].str();
+        if (std::regex_search(body, t, value)) values[(*it)[1].str()] = t[1].str();
     }
-    return types;
+    return values;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> readPatchTypes(const fs::path& meshDir) { return readPatchEntries(meshDir, "type"); }
+
+std::map<std::string, size_t> readPatchFaceCounts(const fs::path& meshDir) {
+    std::map<std::string, size_t> counts;
+    for (const auto& [name, n] : readPatchEntries(meshDir, "nFaces"))
+        if (n.find_first_not_of("0123456789") == std::string::npos && n.size() < 19) counts[name] = std::stoull(n);
+    return counts;
 }
 
 double readCaseViscosity(const fs::path& caseDir, std::string& from) {
@@ -103,15 +115,7 @@ void addFoamSkinFriction(vtkDataObject& step, const FoamWalls& walls, const std:
         throw FormatError(where + ": --field skin-friction: none of the patches read is a wall (type wall in "
                                   "constant/polyMesh/boundary); --patches selects which are read");
     addSkinFriction(volume, wallPatches, wallNames, walls.options, where);
-    for (vtkPolyData* p : otherPatches) {
-        auto zero = vtkSmartPointer<vtkDoubleArray>::New();
-        zero->SetName(kSkinFrictionName);
-        zero->SetNumberOfComponents(3);
-        zero->SetNumberOfTuples(p->GetNumberOfCells());
-        zero->Fill(0.0);
-        zero->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(walls.options.viscosity).c_str());
-        p->GetCellData()->AddArray(zero);
-    }
+    for (vtkPolyData* p : otherPatches) addZeroSkinFriction(p, walls.options.viscosity);
     // The surface is the patches: the volume goes before the surface stages see it.
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
         if (it->GetCurrentDataObject() == volume) {

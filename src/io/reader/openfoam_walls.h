@@ -18,6 +18,9 @@ namespace flowsurf::io::detail {
 // when the file is missing, compressed or not parsed.
 std::map<std::string, std::string> readPatchTypes(const std::filesystem::path& meshDir);
 
+// The patches' face counts (nFaces) by name from `meshDir`/boundary, as readPatchTypes.
+std::map<std::string, size_t> readPatchFaceCounts(const std::filesystem::path& meshDir);
+
 // `nu` of `caseDir`/constant/transportProperties, else of physicalProperties (as
 // `nu 1e-05;`, `nu [0 2 -1 0 0 0 0] 1e-05;` or `nu nu [..] 1e-05;`); 0 when neither gives one.
 // `from` is set to the file it came from.

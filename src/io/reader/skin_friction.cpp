@@ -21,6 +21,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <unordered_map>
 
 namespace flowsurf::io::detail {
@@ -253,14 +254,14 @@ bool hasVolumeCells(vtkDataSet* data) {
 }
 
 // --- addSkinFriction ------------------------------------------------------------------------
-void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
-                     const std::vector<std::string>& wallNames, const SkinFrictionOptions& options,
-                     const std::string& where) {
-    const std::string what = where + ": --field " + kSkinFrictionName;
+namespace {
+
+// The volume's velocity arrays, checked: the cell's own value where there is one; point values
+// (on the wall: the wall's velocity, a moving wall's included) give the wall's velocity, and
+// the cell's without cell values.
+WallArrays volumeVelocity(vtkDataSet* volume, const SkinFrictionOptions& options, const std::string& what) {
     const std::string velocity = options.velocity.empty() ? findVelocityArray(volume) : options.velocity;
     WallArrays arrays;
-    // The cell's own value where there is one; point values (on the wall: the wall's
-    // velocity, a moving wall's included) give the wall's velocity, and the cell's without cell values.
     arrays.cellVelocity = vectorArray(volume->GetCellData(), velocity);
     arrays.pointVelocity = vectorArray(volume->GetPointData(), velocity);
     if (!arrays.cellVelocity && !arrays.pointVelocity)
@@ -268,55 +269,114 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
                          (velocity.empty() ? "(a 3-component array named U, velocity or vel)" : "'" + velocity + "'") +
                          " to take the wall gradient of (its vector arrays: " + vectorArrayList(volume) + ")");
     if (!hasVolumeCells(volume)) throw FormatError(what + ": the data set has no volume cells next to the walls");
+    return arrays;
+}
 
+// The volume cell behind wall face f (-1: none), with `faceMatches` set to the volume points
+// at each of the face's points.
+using OwnerOf = std::function<vtkIdType(vtkIdType f, std::vector<const std::vector<vtkIdType>*>& faceMatches)>;
+
+// Adds kSkinFrictionName to one wall; returns how many of its faces have no owner cell (zero
+// there, said in one warning).
+size_t addWallStress(vtkDataSet* volume, vtkPolyData* wall, const std::string& wallName, WallArrays arrays,
+                     const SkinFrictionOptions& options, const std::string& what, const OwnerOf& ownerOf) {
+    arrays.wallVelocity = vectorArray(wall->GetCellData(), options.wallVelocity);
+    vtkDataArray* nut = options.turbulentViscosity.empty() || options.viscosity <= 0
+                            ? nullptr
+                            : wall->GetCellData()->GetArray(options.turbulentViscosity.c_str());
+    arrays.turbulentViscosity = nut && nut->GetNumberOfComponents() == 1 ? nut : nullptr;
+    const double nu = options.viscosity > 0 ? options.viscosity : 1.0;
+    auto tau = vtkSmartPointer<vtkDoubleArray>::New();
+    tau->SetName(kSkinFrictionName);
+    tau->SetNumberOfComponents(3);
+    tau->SetNumberOfTuples(wall->GetNumberOfCells());
+    tau->Fill(0.0);
+    Scratch scratch;
+    size_t unmatched = 0;
+    std::vector<const std::vector<vtkIdType>*> faceMatches;
+    for (vtkIdType f = 0; f < wall->GetNumberOfCells(); ++f) {
+        vtkIdType n;
+        const vtkIdType* ids;
+        wall->GetCellPoints(f, n, ids);
+        if (n < 3) continue;  // lines and vertices bound no cell
+        faceMatches.clear();
+        const vtkIdType c = ownerOf(f, faceMatches);
+        if (c < 0) {
+            ++unmatched;
+            continue;
+        }
+        const std::string where = what + ": face " + std::to_string(f) + " of " + wallName;
+        const Vec t = faceStress(volume, wall, f, c, faceMatches, arrays, nu, scratch, where);
+        for (int a = 0; a < 3; ++a) tau->SetComponent(f, a, t[a]);
+    }
+    tau->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(options.viscosity).c_str());
+    wall->GetCellData()->AddArray(tau);
+    if (options.warn && unmatched > 0 && unmatched < size_t(wall->GetNumberOfCells()))
+        options.warn(what + ": " + std::to_string(unmatched) + " of the " + std::to_string(wall->GetNumberOfCells()) +
+                     " faces of " + wallName + " are a face of no volume cell; zero there");
+    else if (options.warn && unmatched > 0)
+        options.warn(what + ": no face of " + wallName + " is a face of a volume cell; zero there");
+    return unmatched;
+}
+
+}  // namespace
+
+void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
+                     const std::vector<std::string>& wallNames, const SkinFrictionOptions& options,
+                     const std::string& where) {
+    const std::string what = where + ": --field " + kSkinFrictionName;
+    const WallArrays arrays = volumeVelocity(volume, options, what);
     const PointMatches matches = matchPoints(volume, walls);
     Scratch scratch;
-    const double nu = options.viscosity > 0 ? options.viscosity : 1.0;
     size_t matchedFaces = 0, totalFaces = 0;
     for (size_t w = 0; w < walls.size(); ++w) {
         vtkPolyData* wall = walls[w];
-        arrays.wallVelocity = vectorArray(wall->GetCellData(), options.wallVelocity);
-        vtkDataArray* nut = options.turbulentViscosity.empty() || options.viscosity <= 0
-                                ? nullptr
-                                : wall->GetCellData()->GetArray(options.turbulentViscosity.c_str());
-        arrays.turbulentViscosity = nut && nut->GetNumberOfComponents() == 1 ? nut : nullptr;
-        auto tau = vtkSmartPointer<vtkDoubleArray>::New();
-        tau->SetName(kSkinFrictionName);
-        tau->SetNumberOfComponents(3);
-        tau->SetNumberOfTuples(wall->GetNumberOfCells());
-        tau->Fill(0.0);
-        size_t unmatched = 0;
-        std::vector<const std::vector<vtkIdType>*> faceMatches;
-        auto where = [&](vtkIdType f) { return what + ": face " + std::to_string(f) + " of " + wallNames[w]; };
-        for (vtkIdType f = 0; f < wall->GetNumberOfCells(); ++f) {
+        auto ownerOf = [&](vtkIdType f, std::vector<const std::vector<vtkIdType>*>& faceMatches) {
             vtkIdType n;
             const vtkIdType* ids;
             wall->GetCellPoints(f, n, ids);
-            if (n < 3) continue;  // lines and vertices bound no cell
-            faceMatches.clear();
             for (vtkIdType k = 0; k < n; ++k) faceMatches.push_back(&matches.at(keyOf(wall->GetPoints(), ids[k])));
-            const vtkIdType c = ownerCell(volume, faceMatches, scratch.cells, scratch.cellPoints);
-            if (c < 0) {
-                ++unmatched;
-                continue;
-            }
-            const Vec t = faceStress(volume, wall, f, c, faceMatches, arrays, nu, scratch, where(f));
-            for (int a = 0; a < 3; ++a) tau->SetComponent(f, a, t[a]);
-        }
-        tau->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(options.viscosity).c_str());
-        wall->GetCellData()->AddArray(tau);
+            return ownerCell(volume, faceMatches, scratch.cells, scratch.cellPoints);
+        };
+        const size_t unmatched = addWallStress(volume, wall, wallNames[w], arrays, options, what, ownerOf);
         totalFaces += size_t(wall->GetNumberOfCells());
         matchedFaces += size_t(wall->GetNumberOfCells()) - unmatched;
-        if (!options.warn || unmatched == 0) continue;
-        if (unmatched < size_t(wall->GetNumberOfCells()))
-            options.warn(what + ": " + std::to_string(unmatched) + " of the " + std::to_string(wall->GetNumberOfCells()) +
-                     " faces of " + wallNames[w] + " are a face of no volume cell; zero there");
-        else
-            options.warn(what + ": no face of " + wallNames[w] + " is a face of a volume cell; zero there");
     }
     if (totalFaces > 0 && matchedFaces == 0)
         throw FormatError(what + ": none of the " + std::to_string(totalFaces) +
                           " wall faces is a face of a volume cell (the walls and the volume share no points)");
+}
+
+void addSkinFrictionOnCells(vtkDataSet* volume, vtkPolyData* wall, const std::vector<vtkIdType>& cells,
+                            const std::vector<vtkIdType>& faceOffsets, const std::vector<vtkIdType>& facePoints,
+                            const std::string& wallName, const SkinFrictionOptions& options, const std::string& where) {
+    const std::string what = where + ": --field " + kSkinFrictionName;
+    const WallArrays arrays = volumeVelocity(volume, options, what);
+    if (cells.size() != size_t(wall->GetNumberOfCells()) || faceOffsets.size() != cells.size() + 1)
+        throw FormatError(what + ": " + wallName + " has " + std::to_string(wall->GetNumberOfCells()) + " faces, " +
+                          std::to_string(cells.size()) + " owner cells known");
+    std::vector<std::vector<vtkIdType>> single;  // each face point as its one volume point
+    auto ownerOf = [&](vtkIdType f, std::vector<const std::vector<vtkIdType>*>& faceMatches) {
+        single.assign(size_t(faceOffsets[size_t(f) + 1] - faceOffsets[size_t(f)]), {});
+        for (size_t k = 0; k < single.size(); ++k) {
+            single[k] = {facePoints[size_t(faceOffsets[size_t(f)]) + k]};
+            faceMatches.push_back(&single[k]);
+        }
+        return cells[size_t(f)];
+    };
+    const size_t unmatched = addWallStress(volume, wall, wallName, arrays, options, what, ownerOf);
+    if (unmatched > 0 && unmatched == cells.size())
+        throw FormatError(what + ": no face of " + wallName + " is a face of a volume cell of the zone");
+}
+
+void addZeroSkinFriction(vtkDataSet* surface, double viscosity) {
+    auto zero = vtkSmartPointer<vtkDoubleArray>::New();
+    zero->SetName(kSkinFrictionName);
+    zero->SetNumberOfComponents(3);
+    zero->SetNumberOfTuples(surface->GetNumberOfCells());
+    zero->Fill(0.0);
+    zero->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), skinFrictionUnits(viscosity).c_str());
+    surface->GetCellData()->AddArray(zero);
 }
 
 // --- boundary surfaces of volume files --------------------------------------------------------

@@ -60,6 +60,18 @@ void addSkinFriction(vtkDataSet* volume, const std::vector<vtkPolyData*>& walls,
                      const std::vector<std::string>& wallNames, const SkinFrictionOptions& options,
                      const std::string& where);
 
+// As addSkinFriction for one wall whose owner cells are known, no coordinates matched: face f
+// of `wall` is a face of volume cell cells[f] (-1: of none; zero there and one warning) over
+// the volume points facePoints[faceOffsets[f] .. faceOffsets[f+1]) (CGNS: a BC's faces as zone
+// vertex ids and wallCells()). Throws as addSkinFriction, and FormatError when no face has a cell.
+void addSkinFrictionOnCells(vtkDataSet* volume, vtkPolyData* wall, const std::vector<vtkIdType>& cells,
+                            const std::vector<vtkIdType>& faceOffsets, const std::vector<vtkIdType>& facePoints,
+                            const std::string& wallName, const SkinFrictionOptions& options, const std::string& where);
+
+// kSkinFrictionName as zeros on a surface that is no wall (an inflow patch read beside the
+// walls), so every block of the surface carries the field.
+void addZeroSkinFriction(vtkDataSet* surface, double viscosity);
+
 // A volume's boundary surface (vtkDataSetSurfaceFilter: the faces of one cell only, with the
 // volume's point and cell data) with kSkinFrictionName on it: the wall of a VTK volume file,
 // where every boundary face is taken as a wall at rest unless its points carry a velocity.

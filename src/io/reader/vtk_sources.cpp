@@ -305,7 +305,8 @@ std::unique_ptr<StepSource> openSource(const std::string& path, VtkMessageTrap& 
                                  ".vtu/.vtk volume, EnSight or Exodus volume parts); " + format->name +
                           " holds a surface only");
     std::unique_ptr<StepSource> source = format->open(path, format->name, trap, options);
-    if (options.skinFriction && ext != ".foam") return withSkinFriction(std::move(source), options);
+    // OpenFOAM cases and CGNS files know their walls and take the stress on them themselves.
+    if (options.skinFriction && ext != ".foam" && ext != ".cgns") return withSkinFriction(std::move(source), options);
     return source;
 }
 

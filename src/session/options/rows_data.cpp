@@ -71,7 +71,8 @@ std::vector<OptionSpec> readRows() {
                    {"auto", "on", "off"}, FS_REF(reverseField)),
         text("patches", {G::Data, E::Reload, CommandLine | Config | Read},
              "OpenFOAM, CGNS: read the boundary patches whose names (CGNS: BC or family names) match this "
-             "regular expression (default: OpenFOAM all, CGNS the walls)",
+             "regular expression (default: the walls: OpenFOAM's wall-type patches, CGNS's BCWall* BCs; all "
+             "patches when none is a wall)",
              FS_REF(patches)),
         textChoice("foam-case", {G::Data, E::Reload, CommandLine | Config | Read},
                    "OpenFOAM: read the reconstructed case or the processor* directories of a decomposed one (auto: "
