@@ -352,14 +352,16 @@ fi
 # --- skin-friction: the wall stress derived from the volume's velocity -------------------
 CAVITY=$(cd "$(dirname "$0")/../unit/data/openfoam_cavity_laminar" && pwd)/case.foam
 if "$FLOWSURF" info "$CAVITY" | grep -q "Wall stress.*skin-friction.*nu = 0.01"; then ok "info: skin-friction"; else bad "info: skin-friction"; fi
-# OpenFOAM's default: the wall-type patches, marked read by info; --patches '.*' all
+# OpenFOAM's default for a 2-D case (the cavity): its empty patches, the plane of the flow,
+# marked read by info; --patches picks the walls; '.*' all
 info=$("$FLOWSURF" info "$CAVITY")
-if grep -q "(wall patches)" <<<"$info" && grep -qE "movingWall +wall +- +20 faces  read" <<<"$info" &&
-   grep -qE "frontAndBack +empty +- +800 faces$" <<<"$info" && ! grep -qE "^  frontAndBack +[0-9]+ faces" <<<"$info" &&
+if grep -q "(2-D: the empty patches" <<<"$info" && grep -qE "frontAndBack +empty +- +800 faces  read" <<<"$info" &&
+   grep -qE "movingWall +wall +- +20 faces$" <<<"$info" &&
+   "$FLOWSURF" info "$CAVITY" --patches 'movingWall|fixedWalls' | grep -qE "movingWall +wall +- +20 faces  read" &&
    "$FLOWSURF" info "$CAVITY" --patches '.*' | grep -qE "frontAndBack +empty +- +800 faces  read"; then
-    ok "foam info: wall patches by default"
+    ok "foam info: a 2-D case's plane by default"
 else
-    bad "foam info: wall patches by default ($info)"
+    bad "foam info: a 2-D case's plane by default ($info)"
 fi
 # wallShearStress is a point and a cell array: said once to be shown reversed
 if [ "$(grep -c "^Shown reversed   wallShearStress" <<<"$info")" -eq 1 ]; then

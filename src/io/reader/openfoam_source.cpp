@@ -1,5 +1,5 @@
-// OpenFOAM cases through VTK's reader: the boundary patches (the wall-type ones by default,
-// all when none is a wall; --patches picks by name) of a reconstructed
+// OpenFOAM cases through VTK's reader: the boundary patches (the wall-type ones by default, a
+// 2-D case's empty ones, all when none is a wall; --patches picks by name) of a reconstructed
 // case or of a decomposed one (processor* directories, --foam-case), every time directory a
 // step except the initial conditions in 0/ when solved times exist (--foam-zero-time reads
 // them too, as ParaView's Skip Zero Time off), a time directory VTK cannot parse left out
@@ -297,6 +297,23 @@ private:
     std::optional<FoamWalls> walls_;
 };
 
+// Which patches a case shows without --patches: a 2-D case (one cell deep, its front and back
+// of type `empty`) its empty patches, the plane of the flow (its walls are strips one cell
+// deep) unless the wall stress is asked for; else its wall-type patches; all when it has
+// neither.
+enum class DefaultPatches { Plane, Walls, All };
+
+DefaultPatches defaultPatches(const std::vector<PatchInfo>& all, bool wallStress) {
+    auto any = [&](auto pred) { return std::any_of(all.begin(), all.end(), [&](const PatchInfo& p) { return pred(p.type); }); };
+    if (!wallStress && any([](const std::string& t) { return t == "empty"; })) return DefaultPatches::Plane;
+    if (any([](const std::string& t) { return isFoamWallType(t); })) return DefaultPatches::Walls;
+    return DefaultPatches::All;
+}
+
+bool readByDefault(DefaultPatches rule, const std::string& type) {
+    return rule == DefaultPatches::Plane ? type == "empty" : rule == DefaultPatches::Walls ? isFoamWallType(type) : true;
+}
+
 // Boundary patches only: the surface to show is the walls, not the volume. --patches
 // matches the patch's own name (VTK lists boundary patches as "patch/NAME"); without it the
 // wall-type patches are read, as a CGNS file's wall BCs, and all patches when none is a wall
@@ -329,13 +346,13 @@ std::vector<PatchInfo> selectPatches(vtkOpenFOAMReader* r, const std::string& pa
         all.push_back({bare, type == types.end() ? "?" : type->second, "", count == faces.end() ? 0 : count->second, false});
         arrays.push_back(name);
     }
-    bool anyWall = false;
-    for (const auto& p : all) anyWall = anyWall || isFoamWallType(p.type);
+    const DefaultPatches rule = defaultPatches(all, volume);
     std::string list;
     int kept = 0;
     for (size_t i = 0; i < all.size(); ++i) {
         list += (list.empty() ? "" : ", ") + all[i].name;
-        all[i].read = patches.empty() && anyWall ? isFoamWallType(all[i].type) : std::regex_match(all[i].name, select);
+        all[i].read = patches.empty() && rule != DefaultPatches::All ? readByDefault(rule, all[i].type)
+                                                                    : std::regex_match(all[i].name, select);
         kept += all[i].read;
         if (all[i].read) r->SetPatchArrayStatus(arrays[i].c_str(), 1);
     }
@@ -437,8 +454,10 @@ std::unique_ptr<StepSource> openOpenFoam(const std::string& path, const std::str
         meshDirs.push_back(root / "constant" / "polyMesh");
     std::vector<PatchInfo> patches = selectPatches(r, path, options.patches, options.skinFriction, meshDirs);
     if (options.patches.empty()) {
-        const bool walls = std::any_of(patches.begin(), patches.end(), [](const PatchInfo& p) { return isFoamWallType(p.type); });
-        format += walls ? " (wall patches)" : " (no wall patch: all patches)";
+        const DefaultPatches rule = defaultPatches(patches, options.skinFriction);
+        format += rule == DefaultPatches::Plane ? " (2-D: the empty patches, the plane of the flow)"
+                  : rule == DefaultPatches::Walls ? " (wall patches)"
+                                                  : " (no wall patch: all patches)";
     }
     // Polyhedra kept whole: a wall face then has one owner cell, whose centre is the mean of its points.
     if (options.skinFriction) r->DecomposePolyhedraOff();
