@@ -8,8 +8,9 @@
       through ParaView and pvbatch running on.
       Then the FlowSurf representation's overlay (FlowSurfTopology on) over the saddle
       field: its red and blue lines drawn untinted over ParaView's colouring, none when off.
-  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG [render]
-      the saddle field on a sphere split over the ranks by RedistributeDataSet; the filter's
+  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG [render [PARTITIONS]]
+      the saddle field on a sphere split over the ranks by RedistributeDataSet (PARTITIONS
+      pieces; 0, the default, one per rank; fewer leaves ranks empty); the filter's
       whole output (fetched) into OUTDIR/TAG.json; a zero field and an array missing on
       rank 1: the same error on every rank, no hang. With `render`: the FlowSurf
       representation of the pieces with FlowSurfTopology off and on, its images (and their
@@ -193,13 +194,14 @@ if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 1:
 '''
 
 
-def parallel(tag, render):
+def parallel(tag, render, partitions=0):
     from paraview.simple import LoadPlugin, Sphere, Calculator, RedistributeDataSet, ProgrammableFilter, \
         UpdatePipeline
     LoadPlugin(PLUGIN, ns=globals())
     sphere = Sphere(**SADDLE_SPHERE)
     field = Calculator(Input=sphere, ResultArrayName='V', Function=SADDLES)
     split = RedistributeDataSet(Input=field)  # a vtkUnstructuredGrid: the filter's data-set road
+    split.NumberOfPartitions = partitions
     odd = ProgrammableFilter(Input=split)
     odd.CopyArrays = 0
     odd.Script = RANK_ONE_SCRIPT % 'pass'
@@ -292,7 +294,7 @@ def compare_overlays(ref, tags):
 if MODE == 'serial':
     serial()
 elif MODE == 'parallel':
-    parallel(sys.argv[4], len(sys.argv) > 5 and sys.argv[5] == 'render')
+    parallel(sys.argv[4], len(sys.argv) > 5 and sys.argv[5] == 'render', int(sys.argv[6]) if len(sys.argv) > 6 else 0)
 elif MODE == 'overlay':
     compare_overlays(sys.argv[4], sys.argv[5:])
 else:
