@@ -67,9 +67,13 @@ for run in np1:1:0 np2:2:0 np4:4:0 np4of2:4:2; do
     [ "$missing" -ge "$np" ] || { echo "$tag: rank 1's missing array on $missing of $np ranks"; cat "$OUT/$tag.log"; exit 1; }
   fi
   grep -E "^OVERLAY" "$OUT/$tag.log"
-  # The filter's errors above are expected; none once the representation renders.
-  grep -q "^SURVIVED overlay" "$OUT/$tag.log" && ! sed -n '/^FLOWSURF_STARTED/,$p' "$OUT/$tag.log" | grep -q "ERROR" ||
-    { echo "$tag: FlowSurfTopology reported an error, or ParaView stopped"; cat "$OUT/$tag.log"; exit 1; }
+  # The representation's one error: the overlay's analysis of a zero field, on every rank.
+  mapper=$(grep -c "vtkFlowSurfMapper.*ERR|" "$OUT/$tag.log")
+  overlayZero=$(grep -c "vtkFlowSurfMapper.*ERR|.*FlowSurf input, field 'V': .*zero everywhere" "$OUT/$tag.log")
+  echo "$tag: the overlay's zero-field error on $overlayZero of $np ranks, $mapper representation error(s) in all"
+  [ "$overlayZero" -ge "$np" ] && [ "$mapper" -eq "$overlayZero" ] && grep -q "^SURVIVED overlay zero" "$OUT/$tag.log" &&
+    grep -q "^SURVIVED overlay$" "$OUT/$tag.log" ||
+    { echo "$tag: FlowSurfTopology's errors not every rank's, another error, or ParaView stopped"; cat "$OUT/$tag.log"; exit 1; }
 done
 python3 "$HERE/topology_test.py" "$PLUGIN" "$OUT" compare np1 np2 np4 np4of2 || exit 1
 # Under pvbatch, whose Python has numpy.

@@ -14,7 +14,8 @@
       whole output (fetched) into OUTDIR/TAG.json; a zero field and an array missing on
       rank 1: the same error on every rank, no hang. With `render`: the FlowSurf
       representation of the pieces with FlowSurfTopology off and on, its images (and their
-      pixels, OUTDIR/TAG_on.npy) saved.
+      pixels, OUTDIR/TAG_on.npy) saved; then a zero field, whose overlay error (found on
+      process 0) is every rank's.
   python3 topology_test.py PLUGIN OUTDIR compare REF TAG...
       each TAG's result equals REF's: the same critical points (type, index, position within
       1e-6 of the extent) and the same number of lines of each kind.
@@ -229,6 +230,10 @@ def parallel(tag, render, partitions=0):
         print('FLOWSURF_STARTED', flush=True)
         rep.FlowSurfTopology = 'on'
         print('OVERLAY', tag, 'lines (red, blue pixels)', line_pixels(view, '%s/%s_on.png' % (OUT, tag)), flush=True)
+        field.Function = '0*iHat'  # the overlay's analysis fails (on process 0): every rank's error
+        line_pixels(view, '%s/%s_zero.png' % (OUT, tag))
+        print('SURVIVED overlay zero', flush=True)
+        field.Function = SADDLES
         rep.FlowSurfTopology = 'off'
         line_pixels(view, '%s/%s_off.png' % (OUT, tag))
         print('SURVIVED overlay', flush=True)
