@@ -93,7 +93,12 @@ Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps
     for (methods::Method m : shownViews(requestedViews_, o)) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
     for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
     if (o.topology) {
-        if (group_) throw ConfigError("--topology on: not available in a parallel render (ParaView's ranks) yet");
+        // The overlay analyses the surface it is given: in a group that is one piece. ParaView's
+        // representation gathers the pieces and draws its own (mapper_topology.h).
+        if (group_)
+            throw ConfigError("--topology on: not drawn by a parallel frame loop (each process holds a piece); "
+                              "analyse the whole surface and draw it after the frame, as ParaView's "
+                              "FlowSurfTopology does");
         parts.topology = std::make_unique<TopologyOverlay>(steps, o);
     }
     return parts;

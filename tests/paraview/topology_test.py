@@ -8,14 +8,22 @@
       through ParaView and pvbatch running on.
       Then the FlowSurf representation's overlay (FlowSurfTopology on) over the saddle
       field: its red and blue lines drawn untinted over ParaView's colouring, none when off.
-  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG [render]
-      the saddle field on a sphere split over the ranks by RedistributeDataSet; the filter's
+  mpiexec -np N pvbatch topology_test.py PLUGIN OUTDIR parallel TAG [render [PARTITIONS]]
+      the saddle field on a sphere split over the ranks by RedistributeDataSet (PARTITIONS
+      pieces; 0, the default, one per rank; fewer leaves ranks empty); the filter's
       whole output (fetched) into OUTDIR/TAG.json; a zero field and an array missing on
-      rank 1: the same error on every rank, no hang. With `render`: FlowSurfTopology on in
-      the representation (refused under MPI with a message), and ParaView renders on.
+      rank 1: the same error on every rank, no hang. With `render`: the FlowSurf
+      representation of the pieces with FlowSurfTopology off and on, its images (and their
+      pixels, OUTDIR/TAG_on.npy) saved; then a zero field, whose overlay error (found on
+      process 0) is every rank's.
   python3 topology_test.py PLUGIN OUTDIR compare REF TAG...
       each TAG's result equals REF's: the same critical points (type, index, position within
       1e-6 of the extent) and the same number of lines of each kind.
+  pvbatch topology_test.py PLUGIN OUTDIR overlay REF TAG...
+      each TAG's overlay image equals REF's up to anti-aliasing at the piece seams: mean
+      absolute difference <= 0.5 gray levels, every 15x15 tile <= 8, the lines' red and blue
+      pixels present; REF's overlay itself (on vs off) far above both, or they could not see
+      it wrong.
 """
 import json
 import math
@@ -137,7 +145,9 @@ def line_pixels(view, path):
     r = vtkPNGReader()
     r.SetFileName(path)
     r.Update()
-    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).astype(float)[:, :3] / 255
+    rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3]
+    np.save(path[:-len('.png')] + '.npy', rgb.reshape(300, 300, 3))
+    a = rgb.astype(float) / 255
     red = int(np.sum((a[:, 0] > 0.8) & (a[:, 1] < 0.25) & (a[:, 2] < 0.25)))  # (0.95, 0.12, 0.12)
     blue = int(np.sum((a[:, 2] > 0.85) & (a[:, 0] < 0.3) & (a[:, 1] > 0.35) & (a[:, 1] < 0.65)))  # (0.15, 0.5, 1)
     return red, blue
@@ -185,13 +195,14 @@ if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 1:
 '''
 
 
-def parallel(tag, render):
+def parallel(tag, render, partitions=0):
     from paraview.simple import LoadPlugin, Sphere, Calculator, RedistributeDataSet, ProgrammableFilter, \
         UpdatePipeline
     LoadPlugin(PLUGIN, ns=globals())
     sphere = Sphere(**SADDLE_SPHERE)
     field = Calculator(Input=sphere, ResultArrayName='V', Function=SADDLES)
     split = RedistributeDataSet(Input=field)  # a vtkUnstructuredGrid: the filter's data-set road
+    split.NumberOfPartitions = partitions
     odd = ProgrammableFilter(Input=split)
     odd.CopyArrays = 0
     odd.Script = RANK_ONE_SCRIPT % 'pass'
@@ -218,7 +229,11 @@ def parallel(tag, render):
         line_pixels(view, '%s/%s_off.png' % (OUT, tag))
         print('FLOWSURF_STARTED', flush=True)
         rep.FlowSurfTopology = 'on'
-        line_pixels(view, '%s/%s_on.png' % (OUT, tag))
+        print('OVERLAY', tag, 'lines (red, blue pixels)', line_pixels(view, '%s/%s_on.png' % (OUT, tag)), flush=True)
+        field.Function = '0*iHat'  # the overlay's analysis fails (on process 0): every rank's error
+        line_pixels(view, '%s/%s_zero.png' % (OUT, tag))
+        print('SURVIVED overlay zero', flush=True)
+        field.Function = SADDLES
         rep.FlowSurfTopology = 'off'
         line_pixels(view, '%s/%s_off.png' % (OUT, tag))
         print('SURVIVED overlay', flush=True)
@@ -249,9 +264,43 @@ def compare(ref, tags):
     sys.exit(0 if ok else 1)
 
 
+def compare_overlays(ref, tags):
+    """The overlay's image at several ranks equals one rank's up to anti-aliasing at the seams."""
+    import numpy as np
+    load = lambda name: np.load('%s/%s.npy' % (OUT, name)).astype(float)
+
+    def differences(a, b):
+        diff = np.abs(a - b).mean(axis=2)  # gray levels, 0..255
+        tiles = diff.reshape(300 // 15, 15, 300 // 15, 15).mean(axis=(1, 3))
+        return diff.mean(), tiles.max()
+
+    def lines(img):
+        red = (img[..., 0] > 204) & (img[..., 1] < 64) & (img[..., 2] < 64)
+        blue = (img[..., 2] > 217) & (img[..., 0] < 77) & (img[..., 1] > 89) & (img[..., 1] < 166)
+        return int(red.sum()), int(blue.sum())
+
+    a = load(ref + '_on')
+    own, own_tile = differences(a, load(ref + '_off'))
+    print('%s: the overlay itself (on vs off) mean %.3f, worst tile %.3f gray levels, lines %s' %
+          (ref, own, own_tile, lines(a)))
+    # The overlay alone must be far above the thresholds, or they could not see it wrong.
+    ok = own > 2 * 0.5 and own_tile > 4 * 8 and min(lines(a)) > 100
+    for tag in tags:
+        b = load(tag + '_on')
+        mean, tile = differences(a, b)
+        same = mean <= 0.5 and tile <= 8 and min(lines(b)) > 100
+        print('%s vs %s: mean %.3f (<= 0.5), worst 15x15 tile %.3f (<= 8) gray levels, lines %s / %s: %s' %
+              (tag, ref, mean, tile, lines(b), lines(a), 'same' if same else 'DIFFERENT'))
+        ok = ok and same
+    print('PASSED' if ok else 'FAILED')
+    sys.exit(0 if ok else 1)
+
+
 if MODE == 'serial':
     serial()
 elif MODE == 'parallel':
-    parallel(sys.argv[4], len(sys.argv) > 5 and sys.argv[5] == 'render')
+    parallel(sys.argv[4], len(sys.argv) > 5 and sys.argv[5] == 'render', int(sys.argv[6]) if len(sys.argv) > 6 else 0)
+elif MODE == 'overlay':
+    compare_overlays(sys.argv[4], sys.argv[5:])
 else:
     compare(sys.argv[4], sys.argv[5:])

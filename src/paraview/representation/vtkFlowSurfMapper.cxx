@@ -398,7 +398,7 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   const fs::methods::PixelRect piece = drawn
     ? fs::methods::projectedRect(drawn->pieceParts(), lastCamera.viewProjection(float(w) / float(h)), w, h)
     : fs::methods::PixelRect{};
-  topology.render(playback->view(0), lastCamera, w, h);
+  topology.render(playback->view(0), lastCamera, w, h, group.get());
   composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
     options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
   // (5) the flow topology over it (FlowSurfTopology on)

@@ -113,4 +113,95 @@ core::SurfaceMesh gatherToRoot(vtkMultiProcessController* c, const core::Surface
   return whole;
 }
 
+namespace
+{
+
+// The skeleton as one array of doubles (exact for its floats and for counts below 2^53): the
+// summary, the points (position, type, index, eigenvalues, merged), then each line (kind,
+// length, point count, then x, y, z, strength per point). Written and read only here.
+constexpr size_t kPointValues = 10, kLinePointValues = 4;
+
+std::vector<double> skeletonValues(const skeleton::Skeleton& s)
+{
+  std::vector<double> v{ double(s.eulerCharacteristic), double(s.indexSum), s.closed ? 1.0 : 0.0, double(s.parts),
+    double(s.weldedVertices), double(s.triangles), double(s.zeros), s.scale, s.speed99,
+    double(s.criticalPoints.size()), double(s.lines.size()) };
+  for (const skeleton::CriticalPoint& p : s.criticalPoints)
+  {
+    v.insert(v.end(), { p.position.x, p.position.y, p.position.z, double(p.type), double(p.index),
+                        p.eigenvalues[0].x, p.eigenvalues[0].y, p.eigenvalues[1].x, p.eigenvalues[1].y,
+                        double(p.merged) });
+  }
+  for (const skeleton::SkeletonLine& l : s.lines)
+  {
+    v.insert(v.end(), { double(l.kind), l.length, double(l.points.size()) });
+    for (size_t i = 0; i < l.points.size(); ++i)
+    {
+      v.insert(v.end(), { l.points[i].x, l.points[i].y, l.points[i].z, i < l.strength.size() ? l.strength[i] : 0.0f });
+    }
+  }
+  return v;
+}
+
+skeleton::Skeleton skeletonFromValues(const std::vector<double>& v)
+{
+  skeleton::Skeleton s;
+  s.eulerCharacteristic = long(v[0]);
+  s.indexSum = long(v[1]);
+  s.closed = v[2] != 0.0;
+  s.parts = size_t(v[3]);
+  s.weldedVertices = size_t(v[4]);
+  s.triangles = size_t(v[5]);
+  s.zeros = size_t(v[6]);
+  s.scale = float(v[7]);
+  s.speed99 = float(v[8]);
+  s.criticalPoints.resize(size_t(v[9]));
+  s.lines.resize(size_t(v[10]));
+  size_t at = 11;
+  for (skeleton::CriticalPoint& p : s.criticalPoints)
+  {
+    const double* q = &v[at];
+    p.position = glm::vec3(q[0], q[1], q[2]);
+    p.type = skeleton::PointType(int(q[3]));
+    p.index = int(q[4]);
+    p.eigenvalues[0] = glm::vec2(q[5], q[6]);
+    p.eigenvalues[1] = glm::vec2(q[7], q[8]);
+    p.merged = size_t(q[9]);
+    at += kPointValues;
+  }
+  for (skeleton::SkeletonLine& l : s.lines)
+  {
+    l.kind = skeleton::LineKind(int(v[at]));
+    l.length = float(v[at + 1]);
+    const size_t n = size_t(v[at + 2]);
+    at += 3;
+    for (size_t i = 0; i < n; ++i, at += kLinePointValues)
+    {
+      l.points.emplace_back(v[at], v[at + 1], v[at + 2]);
+      l.strength.push_back(float(v[at + 3]));
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+skeleton::Skeleton broadcastFromRoot(vtkMultiProcessController* c, const skeleton::Skeleton& result)
+{
+  if (!parallel(c))
+  {
+    return result;
+  }
+  std::vector<double> values;
+  if (c->GetLocalProcessId() == 0)
+  {
+    values = skeletonValues(result);
+  }
+  vtkIdType length = vtkIdType(values.size());
+  c->Broadcast(&length, 1, 0);
+  values.resize(size_t(length));
+  c->Broadcast(values.data(), length, 0);
+  return skeletonFromValues(values);
+}
+
 }  // namespace flowsurf::paraview
