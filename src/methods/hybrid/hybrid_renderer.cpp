@@ -16,8 +16,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize, params.hybrid.oriented),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       lic_(GL_R32F, viewport),
       composite_(GL_RGBA8, viewport) {}
 
@@ -69,19 +68,9 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     timer_.begin(stageName(Stage::ParticleTracing));
     traceParticles(in, unsteady, tiled, speedRef);
 
-    // (3b) contrast enhancement: I stretched between its robust percentiles [doc/contrast.md]
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
-    shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
-    }
-
-    // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    // (3b) contrast enhancement [doc/contrast.md] and (4) overlay / colour scheme [W §5,
+    // Fig. 6; L eq. 10]
+    tail_.show(in, lic_.texture(), {seeds_.depth(), seeds_.shade(), seeds_.mask()}, composite_.fbo(), timer_);
     timer_.endFrame();
 }
 
@@ -93,7 +82,7 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
     timer_.begin(stageName(Stage::TileExchange));
     std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), seeds_.velocity(), 0.0f, seeds_.clearsBackground())};
-    if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
+    if (tail_.enhancesTexture()) {  // the contrast histogram counts the whole surface's pixels of the tile
         if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
         layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
     }
@@ -132,10 +121,7 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool ti
     // to the processes whose fragments cover each pixel of the tile.
     tiles_->reportCost(*in.group, ScreenTiles::finishedMs(traced));
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
-    }
+    tail_.measureTile(lic_.texture(), tileDepth_, tiles_->tile(), *in.group, timer_);
     timer_.begin(stageName(Stage::TileReturn));
     tiles_->returnValues(*in.group, lic_.texture());
 }

@@ -5,13 +5,12 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
 #include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -23,7 +22,7 @@ public:
     HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return nameOf(kMethodNames, Method::Hybrid).data(); }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : lic_.texture(); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(lic_.texture()); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
@@ -41,10 +40,8 @@ private:
     VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
     ParticleTracing tracing_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     ColorTarget lic_;              // I, R32F
-    const gl::Texture2D* shown_ = nullptr;  // I, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     bool haveSeeds_ = false, lastDynamic_ = false;
     uint64_t seedGeneration_ = 0;

@@ -13,8 +13,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       polygonAdvection_(viewport, params.common,
                         {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport) {}
@@ -47,10 +46,7 @@ void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int
     tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected), drawMs);
     madeWith_[target] = tiles_->tiles();
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(flow_.texture(target), tileDepth_, tile, in.group);
-    }
+    tail_.measureTile(flow_.texture(target), tileDepth_, tile, *in.group, timer_);
     // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
     timer_.begin(stageName(Stage::TileReturn));
     tiles_->returnValues(*in.group, flow_.texture(target));
@@ -92,20 +88,9 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     if (tiled) advectTile(in, noise, target, ScreenTiles::finishedMs(drawn));
     else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
 
-    // (3b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(flow_.texture(current_), depth_);
-    shown_ = &contrast_.stretch(flow_.texture(current_), depth_);
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, depth_, shade_, mask_);
-    }
-
-    // (4) overlay [L eq. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    // (3b) contrast enhancement, display only [doc/contrast.md]: the advection goes on
+    // from F_a itself, and (4) overlay [L eq. 10]
+    tail_.show(in, flow_.texture(current_), {depth_, shade_, mask_}, composite_.fbo(), timer_);
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     // In parallel every process takes part (an empty piece receives the others' outlines).

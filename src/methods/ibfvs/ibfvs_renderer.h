@@ -3,14 +3,13 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
 #include "methods/image_space/camera_motion.h"
 #include "methods/image_space/noise_injection.h"
 #include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
 
 #include <memory>
 #include <vector>
@@ -23,7 +22,7 @@ public:
     const char* name() const override { return nameOf(kMethodNames, Method::Ibfvs).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(flow_.texture(current_)); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     const gl::Texture2D& surfaceShade() const override { return shade_; }
@@ -39,12 +38,10 @@ private:
     core::Viewport viewport_;
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     PolygonAdvection polygonAdvection_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     EdgeMask edgeMask_;
     CameraMotion motion_;
     FlowPingPong flow_;            // F_a, R32F (+ shade + mask + depth: the advection draw)
-    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     int current_ = 0, source_ = 0;
     uint64_t lastGeneration_ = 0;

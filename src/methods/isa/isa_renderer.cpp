@@ -18,8 +18,7 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport),
       composite_(GL_RGBA8, viewport) {}
@@ -70,21 +69,10 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     advectTexture(in, plan, tiled);
 
-    // (4b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
+    // (4b) contrast enhancement, display only [doc/contrast.md]: the advection goes on
+    // from F_a itself, and (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     const SurfaceGBuffer& vel = velocityImage_[vi_];
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());
-    shown_ = &contrast_.stretch(flow_.texture(current_), vel.depth());
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, vel.depth(), vel.shade(), vel.mask());
-    }
-
-    // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    tail_.show(in, flow_.texture(current_), {vel.depth(), vel.shade(), vel.mask()}, composite_.fbo(), timer_);
     timer_.endFrame();
 }
 
@@ -176,10 +164,7 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected));
     madeWith_[target] = tiles_->tiles();
     // (4b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(flow_.texture(target), depthOf(vi_, tiled), tiles_->tile(), in.group);
-    }
+    tail_.measureTile(flow_.texture(target), depthOf(vi_, tiled), tiles_->tile(), *in.group, timer_);
     // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
     timer_.begin(stageName(Stage::TileReturn));
     tiles_->returnValues(*in.group, flow_.texture(target));

@@ -2,14 +2,13 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/image_space/camera_motion.h"
 #include "methods/image_space/noise_injection.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
 #include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -24,7 +23,7 @@ public:
     const char* name() const override { return nameOf(kMethodNames, Method::Isa).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(flow_.texture(current_)); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     const gl::Texture2D& surfaceShade() const override { return velocityImage_[vi_].shade(); }
@@ -49,11 +48,9 @@ private:
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     CameraMotion motion_;
     FlowPingPong flow_;           // F_a, R32F
-    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;       // RGBA8
     int current_ = 0, source_ = 0;
     // What the cached velocity image and advection mesh were made for (static case).
