@@ -10,7 +10,7 @@
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
-#include "parallel/screen_tiles.h"
+#include "methods/image_work.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -27,7 +27,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
     bool usesTimeLevels() const override { return true; }
     bool historyFree() const override { return true; }
     // For tests: the solid noise volume, N per texel (x fastest).
@@ -48,15 +48,15 @@ private:
     core::Camera seedCamera_;
     bool haveLevels_ = false;
     TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
-    // parallel = tiles (screen_tiles.h): this process's tile, and the seeds' velocity image
-    // and (unsteady) the time levels merged in place over it plus the streaks' reach
-    // (guardPx); made on the first parallel frame.
-    std::unique_ptr<ScreenTiles> tiles_;
+    // Whole image, replicated or tiled over processes; tiles: the seeds' velocity image and
+    // (unsteady) the time levels merged in place over this process's tile plus the streaks'
+    // reach (guardPx).
+    ImageWork work_;
     gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
     int guardPx() const;
     // Stages of renderFrame (hybrid_renderer.cpp).
-    void distributeTiles(const FrameInput& in, bool unsteady);
-    void traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef);
+    void distributeTiles(bool unsteady);
+    void traceParticles(const FrameInput& in, bool unsteady, float speedRef);
 };
 
 }  // namespace flowsurf::methods::hybrid

@@ -9,7 +9,7 @@
 #include "methods/ibfvs/polygon_advection.h"
 #include "methods/image_space/camera_motion.h"
 #include "methods/image_space/noise_injection.h"
-#include "parallel/screen_tiles.h"
+#include "methods/image_work.h"
 
 #include <memory>
 #include <vector>
@@ -27,7 +27,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     const gl::Texture2D& surfaceShade() const override { return shade_; }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
 
 private:
     // Tiles: stages (2)+(3) on this process's tile, after the draw of its piece (target:
@@ -47,11 +47,8 @@ private:
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
     bool lastDynamic_ = false;
-    // parallel = tiles (screen_tiles.h), and the split each F_a texture was made with: its
-    // owners, from whom a process pulls what its fragments read of it.
-    std::unique_ptr<ScreenTiles> tiles_;
-    std::vector<PixelRect> madeWith_[2];
-    gl::Texture2D tileDepth_;  // the whole surface's depth over the tile
+    ImageWork work_;           // whole image, replicated or tiled over processes
+    gl::Texture2D tileDepth_;  // tiles: the whole surface's depth over the tile
 };
 
 }  // namespace flowsurf::methods::ibfvs
