@@ -2,8 +2,8 @@
 
 namespace flowsurf::methods {
 
-ImageWork::ImageWork(const core::Viewport& viewport, const CommonParams& params)
-    : viewport_(viewport), mode_(params.parallel) {}
+ImageWork::ImageWork(const core::Viewport& viewport, const CommonParams& params, int historySlots)
+    : viewport_(viewport), mode_(params.parallel), madeWith_(size_t(historySlots)) {}
 
 void ImageWork::beginFrame(const FrameInput& in) {
     group_ = in.group;
@@ -26,12 +26,13 @@ PixelRect ImageWork::tile() const {
     return tiled_ ? tiles_->tile() : PixelRect{0, 0, viewport_.width, viewport_.height};
 }
 
-void ImageWork::pull(int slot, const gl::Texture2D& texture, const PixelRect& wanted, gl::StageTimer& timer,
+bool ImageWork::pull(int slot, const gl::Texture2D& texture, const PixelRect& wanted, gl::StageTimer& timer,
                      Stage resume) {
-    if (!tiled_ || madeWith_[size_t(slot)].empty()) return;
+    if (!tiled_ || madeWith_[size_t(slot)].empty()) return false;
     timer.begin(stageName(Stage::TileExchange));
     tiles_->pull(*group_, texture, madeWith_[size_t(slot)], wanted);
     timer.begin(stageName(resume));
+    return true;
 }
 
 void ImageWork::reportCost(float ms, float ownMs) {

@@ -13,7 +13,6 @@
 #include "parallel/process_group.h"
 #include "parallel/screen_tiles.h"
 
-#include <array>
 #include <initializer_list>
 #include <memory>
 #include <span>
@@ -23,7 +22,9 @@ namespace flowsurf::methods {
 
 class ImageWork {
 public:
-    ImageWork(const core::Viewport& viewport, const CommonParams& params);
+    // `historySlots`: the textures that carry a method's image from frame to frame (ISA's and
+    // IBFVS's two F_a, ISA's depths), each pulled from the split that made it.
+    ImageWork(const core::Viewport& viewport, const CommonParams& params, int historySlots);
     // At each frame's start: this frame's group (FrameInput::group); the traffic counts anew.
     void beginFrame(const FrameInput& in);
     bool tiled() const { return tiled_; }
@@ -45,30 +46,29 @@ public:
     // Tiles: the measured costs call for a new split, which the next distribute makes.
     bool splitDue() const { return tiled_ && tiles_->splitDue(); }
     // Tiles, collective: the `wanted` part of history texture `slot` from the processes whose
-    // tiles made it (nothing on its first frame), timed as the tile exchange; the timer then
-    // goes on with `resume`.
-    void pull(int slot, const gl::Texture2D& texture, const PixelRect& wanted, gl::StageTimer& timer, Stage resume);
+    // tiles made it, timed as the tile exchange; the timer then goes on with `resume`. False
+    // when nothing was pulled (not tiled, or the texture's first frame).
+    bool pull(int slot, const gl::Texture2D& texture, const PixelRect& wanted, gl::StageTimer& timer, Stage resume);
     // Tiles, collective, once the image stage ran on the tile: its cost `ms` (and `ownMs`:
     // this piece's own work, which no split moves) toward the balance (ScreenTiles::reportCost).
     void reportCost(float ms, float ownMs = 0.0f);
     // Tiles: history texture `slot` was made with this frame's split (its next pull's owners).
     void made(int slot);
+    // History texture `to` now holds what `from` held (a copy of it), made by the same split.
+    void copied(int from, int to) { madeWith_[size_t(to)] = madeWith_[size_t(from)]; }
     // Tiles, collective: `values` at this piece's own pixels from their tiles' owners
     // (ScreenTiles::returnValues), timed as the tile return.
     void returnValues(const gl::Texture2D& values, gl::StageTimer& timer);
     TileTraffic traffic() const { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
 
 private:
-    // The textures that carry a method's image from frame to frame (ISA's and IBFVS's two
-    // F_a, ping-pong), each pulled from the split that made it.
-    static constexpr int kHistorySlots = 2;
     core::Viewport viewport_;
     ParallelMode mode_;
     ProcessGroup* group_ = nullptr;  // this frame's
     bool tiled_ = false;
     std::unique_ptr<ScreenTiles> tiles_;  // made on the first tiled frame
     // The split each history texture was made with: its owners, from whom a process pulls.
-    std::array<std::vector<PixelRect>, kHistorySlots> madeWith_;
+    std::vector<std::vector<PixelRect>> madeWith_;
 };
 
 }  // namespace flowsurf::methods

@@ -19,7 +19,7 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       tail_(params.common, viewport),
       lic_(GL_R32F, viewport),
       composite_(GL_RGBA8, viewport),
-      work_(viewport, params.common) {}
+      work_(viewport, params.common, 0) {}  // I needs no history
 
 void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;

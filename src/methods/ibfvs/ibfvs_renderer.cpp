@@ -17,7 +17,7 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       motion_(params.common.onCameraMove),
       flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
       composite_(GL_RGBA8, viewport),
-      work_(viewport, params.common) {}
+      work_(viewport, params.common, 2) {}  // F_a ping-pong
 
 // Tiles: after every process drew its piece's texture coordinates, the whole surface's
 // coordinates and depth over this tile, then the per-pixel pass on the tile from the part of

@@ -8,7 +8,7 @@
 #include "methods/image_space/noise_injection.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
-#include "parallel/screen_tiles.h"
+#include "methods/image_work.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -28,7 +28,7 @@ public:
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     const gl::Texture2D& surfaceShade() const override { return velocityImage_[vi_].shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
 
 private:
     bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
@@ -36,7 +36,7 @@ private:
     // The stages of renderFrame (isa_renderer.cpp).
     void updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit);
     void advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled);
-    void distributeTiles(const FrameInput& in);
+    void distributeTiles();
     const gl::Texture2D& depthOf(int v, bool tiled) const;
 
     MethodParams params_;
@@ -59,19 +59,17 @@ private:
     core::Camera cachedCamera_, cachedSourceCamera_;
     bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
-    // parallel = tiles (screen_tiles.h): this process advects its own tile. The velocity
-    // image merged in place over the tile plus one grid cell (the mesh vertices it
-    // interpolates; nothing reads this piece's own velocity after the merge),
+    // Whole image, replicated or tiled over processes. Tiles: this process advects its own
+    // tile. The velocity image merged in place over the tile plus one grid cell (the mesh
+    // vertices it interpolates; nothing reads this piece's own velocity after the merge),
     // the whole surface's depth per velocity image over the same (and, where the edge test
     // reads it as the source depth, over the mesh's footprint, pulled from its makers), and
-    // of F_a the tile and what its pixels read (pulled each frame).
-    std::unique_ptr<ScreenTiles> tiles_;
+    // of F_a the tile and what its pixels read (pulled each frame). History slots: F_a 0
+    // and 1, then (kDepthSlot +) mergedDepth_[0], [1] and frozenDepth_.
+    static constexpr int kDepthSlot = 2;
+    ImageWork work_;
     gl::Texture2D mergedDepth_[2];
-    // The split each F_a texture was made with (its owners, from whom a process pulls the
-    // part its tile reads), and this tile's footprint in the source F_a.
-    std::vector<PixelRect> madeWith_[2];
-    std::vector<PixelRect> depthMadeWith_[3];  // of mergedDepth_[0], [1] and frozenDepth_
-    PixelRect footprint_;
+    PixelRect footprint_;  // this tile's footprint in the source F_a
     PixelRect meshVertices(const PixelRect& tile) const;
     PixelRect footprint(const PixelRect& tile) const;
     int guardPx() const;
