@@ -20,8 +20,10 @@ float dtForStep(const FrameInput& in, const core::Viewport& viewport, float step
     return stepPx / (speed * std::max(pxPerUnit, 1e-30f));
 }
 
-bool tiledParallel(const FrameInput& in, const CommonParams& params) {
-    return in.group && in.group->size() > 1 && params.parallel == ParallelMode::Tiles;
+bool tiledParallel(const FrameInput& in, const CommonParams& params) { return tiledParallel(in.group, params.parallel); }
+
+bool tiledParallel(const ProcessGroup* group, ParallelMode mode) {
+    return group && group->size() > 1 && mode == ParallelMode::Tiles;
 }
 
 std::optional<PixelRect> piecePixels(const FrameInput& in, const CommonParams& params, const core::Viewport& viewport) {

@@ -69,6 +69,7 @@ protected:
 
 // True when `in` is one process's piece of a tiled parallel render (screen_tiles.h).
 bool tiledParallel(const FrameInput& in, const CommonParams& params);
+bool tiledParallel(const ProcessGroup* group, ParallelMode mode);
 // In a tiled parallel render, the pixels this process's piece can cover: the host shows
 // only those of its images (the other processes' fragments elsewhere), so its overlay
 // writes only those; none otherwise (every pixel).

@@ -9,7 +9,7 @@
 #include "gl/objects.h"
 #include "parallel/pixel_rect.h"
 #include "params/params.h"
-#include "present/legend.h"
+#include "present/legend_layer.h"
 #include "present/percentile_range.h"
 #include "raster/surface_gpu.h"
 
@@ -17,6 +17,14 @@
 #include <string>
 
 namespace flowsurf::methods {
+
+// The surface's per-pixel buffers the overlay reads: window depth (1 = background), shade
+// (RGBA16F: eye normal, colour value) and the texture mask (R16F).
+struct SurfaceImage {
+    const gl::Texture2D& depth;
+    const gl::Texture2D& shade;
+    const gl::Texture2D& mask;
+};
 
 class Overlay {
 public:
@@ -26,24 +34,18 @@ public:
     // surface (FrameInput::dye), or null. `pixels`: the pixels to write (a tiled parallel
     // render writes its own piece's only: the host composites the rest from the others);
     // none: every pixel.
-    void apply(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-               const gl::Texture2D& mask, const gl::Framebuffer& target, const SurfaceGpu& surface,
-               const DyeView* dye = nullptr, const std::optional<PixelRect>& pixels = std::nullopt) const;
+    void apply(const gl::Texture2D& flow, const SurfaceImage& image, const gl::Framebuffer& target,
+               const SurfaceGpu& surface, const DyeView* dye = nullptr,
+               const std::optional<PixelRect>& pixels = std::nullopt) const;
     // Contrast enhancement of the colour [doc/contrast.md]: the histogram of the surface colour's
     // lightness with these inputs (apply's), whose smoothed percentiles the next apply
     // stretches to [0, 1]. Nothing unless CommonParams::enhanceContrast includes colour.
     // Cost: a pass as the overlay's without writing the image, a 2 KiB read-back.
-    void measureLightness(const gl::Texture2D& flow, const gl::Texture2D& depth, const gl::Texture2D& shade,
-                          const gl::Texture2D& mask) const;
+    void measureLightness(const gl::Texture2D& flow, const SurfaceImage& image) const;
     bool stretchesColor() const { return bool(lightnessProgram_); }
 
 private:
-    void bindInputs(const gl::Program& prog, const gl::Texture2D& flow, const gl::Texture2D& depth,
-                    const gl::Texture2D& shade, const gl::Texture2D& mask) const;
-
-    // Re-rasterises the legend when its range or title changed (auto ranges move), and
-    // places it where it covers no surface pixel of `depth`, smaller if it must be.
-    void updateLegend(const SurfaceGpu& surface, const gl::Texture2D& depth) const;
+    void bindInputs(const gl::Program& prog, const gl::Texture2D& flow, const SurfaceImage& image) const;
 
     CommonParams params_;
     GlPath path_;
@@ -53,20 +55,9 @@ private:
     mutable PercentileRange lightness_;
     gl::Texture2D colormap_;
     gl::VertexArray emptyVao_;
-    // The legend at each size tried (full, then smaller), rasterised when first needed.
-    struct LegendSize {
-        int imageHeight = 0;  // the image height makeLegendImage sizes it for
-        LegendLayout layout = LegendLayout::Vertical;
-        glm::ivec2 size{0};
-        gl::Texture2D texture;
-    };
-    mutable std::vector<LegendSize> legendSizes_;
-    mutable size_t legendShown_ = 0;    // index into legendSizes_
-    mutable glm::ivec2 legendOrigin_{0};
-    mutable bool legendPlaced_ = false;  // legendOrigin_ is a free place found earlier
-    mutable bool legendWarned_ = false;  // told that no place was free
-    mutable LegendScale legendScale_;
-    mutable std::string legendTitle_;
+    // The layers over the surface: the dye (a frame's DyeView, bound by apply) and the
+    // colour legend (CommonParams::legend), which moves where the surface leaves room.
+    mutable std::optional<LegendLayer> legend_;
 };
 
 }  // namespace flowsurf::methods

@@ -16,23 +16,22 @@ HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport&
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize, params.hybrid.oriented),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       lic_(GL_R32F, viewport),
-      composite_(GL_RGBA8, viewport) {}
+      composite_(GL_RGBA8, viewport),
+      work_(viewport, params.common, 0) {}  // I needs no history
 
 void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
-    if (tiles_) tiles_->beginFrame();
+    work_.beginFrame(in);
 
     // (1) seed textures: P-space velocity and layer depth per pixel (the seed position is
     // the surface point on the pixel ray at that depth) [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
-    const bool tiled = tiledParallel(in, c);
     checkContrastParallel(in, c);
-    if (unsteady && in.group && !tiled)
+    if (unsteady && work_.replicated())
         throw ConfigError("the hybrid method's unsteady time levels are merged over processes in the tiled mode only: "
                           "set parallel to tiles (FlowSurfParallel), or render each time step as steady");
     lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
@@ -42,22 +41,21 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
         throw ConfigError("--oriented on: the field has no sign (a line field such as principal directions), so "
                           "its streaks have no direction to show; use --oriented off");
     const float speedRef = in.surface->maxSpeed();
-    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
     if (lastDynamic_) {
         timer_.begin(stageName(Stage::SeedTextures));
-        seeds_.render(*in.surface, in.camera, tiled ? in.group : nullptr);  // tiles: what other pieces hide, skipped
+        seeds_.render(*in.surface, in.camera, work_.tiledGroup());  // tiles: what other pieces hide, skipped
         // (1b) unsteady flow: the velocity image of every time level the particles pass
         // through, "the projection of the vector data within the integration loop" [W §3]
         if (unsteady) {
             timer_.begin(stageName(Stage::VelocityLevels));
             levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
         }
-        if (!tiled && in.group) seeds_.merge(*in.group);  // the whole surface's seeds
+        if (ProcessGroup* g = work_.replicated()) seeds_.merge(*g);  // the whole surface's seeds
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
     }
-    if (tiled && (lastDynamic_ || tiles_->splitDue())) distributeTiles(in, unsteady);
+    if (work_.tiled() && (lastDynamic_ || work_.splitDue())) distributeTiles(unsteady);
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
 
@@ -67,21 +65,11 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 
     // (3) particle tracing and LIC accumulation, both halves [W eqs. 2, 3, 5]
     timer_.begin(stageName(Stage::ParticleTracing));
-    traceParticles(in, unsteady, tiled, speedRef);
+    traceParticles(in, unsteady, speedRef);
 
-    // (3b) contrast enhancement: I stretched between its robust percentiles [doc/contrast.md]
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(lic_.texture(), seeds_.depth());
-    shown_ = &contrast_.stretch(lic_.texture(), seeds_.depth());
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask());
-    }
-
-    // (4) overlay / colour scheme [W §5, Fig. 6; L eq. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, seeds_.depth(), seeds_.shade(), seeds_.mask(), composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    // (3b) contrast enhancement [doc/contrast.md] and (4) overlay / colour scheme [W §5,
+    // Fig. 6; L eq. 10]
+    tail_.show(in, lic_.texture(), {seeds_.depth(), seeds_.shade(), seeds_.mask()}, composite_.fbo(), timer_);
     timer_.endFrame();
 }
 
@@ -90,27 +78,27 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
 // costs call for a new split (a still camera). The velocity and the levels are merged in
 // place: after the merge only the tracing reads them (the overlay reads this piece's depth,
 // shade and mask); the next seed pass clears what the merge wrote off this piece.
-void HybridRenderer::distributeTiles(const FrameInput& in, bool unsteady) {
-    timer_.begin(stageName(Stage::TileExchange));
+void HybridRenderer::distributeTiles(bool unsteady) {
     std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), seeds_.velocity(), 0.0f, seeds_.clearsBackground())};
-    if (contrast_.enabled()) {  // the contrast histogram counts the whole surface's pixels of the tile
+    if (tail_.enhancesTexture()) {  // the contrast histogram counts the whole surface's pixels of the tile
         if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
         layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
     }
     if (unsteady)
         for (int j = 0; j < levels_.count(); ++j)
             layers.push_back(TileLayer::ofLayer(levels_.texture(), levels_.texture(), VelocityLevels::kFormat, j));
-    tiles_->distribute(*in.group, seeds_.depth(), layers, guardPx(), seeds_.footprint());
-    seeds_.overwritten(tiles_->written());
+    work_.distribute(seeds_.depth(), layers, guardPx(), seeds_.footprint(), timer_);
+    seeds_.overwritten(work_.written());
 }
 
 // Stage (3) into lic_: over the whole image, or (tiles) over this process's tile, whose
 // I then goes back to the processes whose fragments cover each pixel of it.
-void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef) {
+void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, float speedRef) {
     const CommonParams& c = params_.common;
+    const PixelRect tile = work_.tile();
     TracingInput t;
     t.seedVelocity = &seeds_.velocity();
-    if (tiled) t.pixels = tiles_->tile().empty() ? PixelRect{0, 0, 0, 0} : tiles_->tile();
+    if (work_.tiled()) t.pixels = tile.empty() ? PixelRect{0, 0, 0, 0} : tile;
     t.noise = noise_.texture();
     t.noiseSize = noise_.size();
     t.camera = in.camera;
@@ -126,18 +114,14 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, bool ti
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
     const auto traced = ScreenTiles::Clock::now();
-    if (!tiled || !tiles_->tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
-    if (!tiled) return;
+    if (!tile.empty()) tracing_.apply(t, params_.hybrid, lic_);
+    if (!work_.tiled()) return;
     // The tile's cost (the return reads I back, so the wait costs nothing), then I back
     // to the processes whose fragments cover each pixel of the tile.
-    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(traced));
+    work_.reportCost(ScreenTiles::finishedMs(traced));
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(lic_.texture(), tileDepth_, tiles_->tile(), in.group);
-    }
-    timer_.begin(stageName(Stage::TileReturn));
-    tiles_->returnValues(*in.group, lic_.texture());
+    tail_.measureTile(lic_.texture(), tileDepth_, tile, *in.group, timer_);
+    work_.returnValues(lic_.texture(), timer_);
 }
 
 // The farthest a streak reads from its seed, in pixels: half the filter length in steps of

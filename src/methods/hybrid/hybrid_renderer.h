@@ -5,13 +5,12 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/hybrid/particle_tracing.h"
 #include "methods/hybrid/solid_noise.h"
 #include "methods/hybrid/velocity_levels.h"
-#include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
+#include "methods/image_work.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -23,12 +22,12 @@ public:
     HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
     const char* name() const override { return nameOf(kMethodNames, Method::Hybrid).data(); }
     void renderFrame(const FrameInput& in) override;
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : lic_.texture(); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(lic_.texture()); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return seeds_.depth(); }
     const gl::Texture2D& surfaceShade() const override { return seeds_.shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
     bool usesTimeLevels() const override { return true; }
     bool historyFree() const override { return true; }
     // For tests: the solid noise volume, N per texel (x fastest).
@@ -41,25 +40,23 @@ private:
     VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
     ParticleTracing tracing_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     ColorTarget lic_;              // I, R32F
-    const gl::Texture2D* shown_ = nullptr;  // I, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     bool haveSeeds_ = false, lastDynamic_ = false;
     uint64_t seedGeneration_ = 0;
     core::Camera seedCamera_;
     bool haveLevels_ = false;
     TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
-    // parallel = tiles (screen_tiles.h): this process's tile, and the seeds' velocity image
-    // and (unsteady) the time levels merged in place over it plus the streaks' reach
-    // (guardPx); made on the first parallel frame.
-    std::unique_ptr<ScreenTiles> tiles_;
+    // Whole image, replicated or tiled over processes; tiles: the seeds' velocity image and
+    // (unsteady) the time levels merged in place over this process's tile plus the streaks'
+    // reach (guardPx).
+    ImageWork work_;
     gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
     int guardPx() const;
     // Stages of renderFrame (hybrid_renderer.cpp).
-    void distributeTiles(const FrameInput& in, bool unsteady);
-    void traceParticles(const FrameInput& in, bool unsteady, bool tiled, float speedRef);
+    void distributeTiles(bool unsteady);
+    void traceParticles(const FrameInput& in, bool unsteady, float speedRef);
 };
 
 }  // namespace flowsurf::methods::hybrid

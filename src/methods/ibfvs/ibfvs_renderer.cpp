@@ -13,11 +13,11 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
       depth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       polygonAdvection_(viewport, params.common,
                         {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport, {{GL_COLOR_ATTACHMENT0 + outputs::kShade, &shade_}, {GL_COLOR_ATTACHMENT0 + outputs::kMask, &mask_}, {GL_DEPTH_ATTACHMENT, &depth_}}),
-      composite_(GL_RGBA8, viewport) {}
+      composite_(GL_RGBA8, viewport),
+      work_(viewport, params.common, 2) {}  // F_a ping-pong
 
 // Tiles: after every process drew its piece's texture coordinates, the whole surface's
 // coordinates and depth over this tile, then the per-pixel pass on the tile from the part of
@@ -25,42 +25,32 @@ IbfvsRenderer::IbfvsRenderer(const MethodParams& params, const core::Viewport& v
 // next frame's pulls and returned to the processes whose pieces cover its pixels. `drawMs`:
 // what drawing this piece took, for the balance.
 void IbfvsRenderer::advectTile(const FrameInput& in, const NoiseStep& noise, int target, float drawMs) {
-    timer_.begin(stageName(Stage::TileExchange));
     if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
     // The pass reads the coordinates where the merged depth is < 1 only: this piece's own
     // stand for the background, and the merge goes into them (nothing reads them after).
     const gl::Texture2D& texcoord = polygonAdvection_.texcoord();
     const TileLayer layers[] = {TileLayer::of(texcoord, texcoord, 0.0f, true), TileLayer::of(depth_, tileDepth_)};
-    tiles_->distribute(*in.group, depth_, layers, 0, polygonAdvection_.footprint());
+    work_.distribute(depth_, layers, 0, polygonAdvection_.footprint(), timer_);
 
     timer_.begin(stageName(Stage::TextureAdvection));
-    const PixelRect& tile = tiles_->tile();
-    const PixelRect wanted = polygonAdvection_.readRegion(tileDepth_, tile);
-    if (!madeWith_[source_].empty()) {
-        timer_.begin(stageName(Stage::TileExchange));
-        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], wanted);
-        timer_.begin(stageName(Stage::TextureAdvection));
-    }
+    const PixelRect tile = work_.tile();
+    work_.pull(source_, flow_.texture(source_), polygonAdvection_.readRegion(tileDepth_, tile), timer_,
+               Stage::TextureAdvection);
     const auto advected = ScreenTiles::Clock::now();
     polygonAdvection_.advect(flow_.texture(source_), flow_.texture(target), tileDepth_, params_.ibfvs.flowBackground,
                              noise, tile);
-    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected), drawMs);
-    madeWith_[target] = tiles_->tiles();
+    work_.reportCost(ScreenTiles::finishedMs(advected), drawMs);
+    work_.made(target);
     // (3b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(flow_.texture(target), tileDepth_, tile, in.group);
-    }
+    tail_.measureTile(flow_.texture(target), tileDepth_, tile, *in.group, timer_);
     // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
-    timer_.begin(stageName(Stage::TileReturn));
-    tiles_->returnValues(*in.group, flow_.texture(target));
+    work_.returnValues(flow_.texture(target), timer_);
 }
 
 void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
-    if (tiledParallel(in, params_.common) && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
-    if (tiles_) tiles_->beginFrame();
+    work_.beginFrame(in);
     checkContrastParallel(in, c);
     // Static and dynamic cases run the same stages [L Table II: IBFVS cost ~ N in both].
     lastDynamic_ = in.surface->generation() != lastGeneration_ || !core::sameCamera(in.camera, lastCamera_);
@@ -72,7 +62,6 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     if (plan.advect || plan.freezeStarts) source_ = current_;
     const int target = 1 - source_;
     const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f;
-    const bool tiled = tiledParallel(in, c);
 
     // (1)+(2) mesh projection t_i = T(x_i - v_i dt) and polygonal texture advection
     // into a gray background [L eq. 13, §IV-D.2, §IV-F.2], and (3) noise injection, in
@@ -84,28 +73,17 @@ void IbfvsRenderer::renderFrame(const FrameInput& in) {
     const auto drawn = ScreenTiles::Clock::now();
     polygonAdvection_.apply(*in.surface, in.camera, plan.sourceCamera, viewport_, dt, flow_.texture(source_),
                             flow_.texture(target), flow_.fbo(target), depth_, params_.ibfvs.flowBackground,
-                            c.cullBackFaces, noise, tiled ? in.group : nullptr);
+                            c.cullBackFaces, noise, work_.tiledGroup());
     current_ = target;
     // Parallel, replicated: the whole surface's advected texture on every process, which is
     // also the next frame's source (the texture lives in the image).
     // Tiles: with the draw's cost, which no split moves (ScreenTiles::reportCost).
-    if (tiled) advectTile(in, noise, target, ScreenTiles::finishedMs(drawn));
-    else if (in.group) mergeByDepth(*in.group, depth_, {&flow_.texture(target), &shade_, &mask_});
+    if (work_.tiled()) advectTile(in, noise, target, ScreenTiles::finishedMs(drawn));
+    else work_.mergeReplicated(depth_, {&flow_.texture(target), &shade_, &mask_});
 
-    // (3b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(flow_.texture(current_), depth_);
-    shown_ = &contrast_.stretch(flow_.texture(current_), depth_);
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, depth_, shade_, mask_);
-    }
-
-    // (4) overlay [L eq. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, depth_, shade_, mask_, composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    // (3b) contrast enhancement, display only [doc/contrast.md]: the advection goes on
+    // from F_a itself, and (4) overlay [L eq. 10]
+    tail_.show(in, flow_.texture(current_), {depth_, shade_, mask_}, composite_.fbo(), timer_);
 
     // (5) optional silhouette edge mask, display only [L §IV-E.2]
     // In parallel every process takes part (an empty piece receives the others' outlines).

@@ -3,14 +3,13 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/ibfvs/edge_mask.h"
 #include "methods/ibfvs/polygon_advection.h"
 #include "methods/image_space/camera_motion.h"
 #include "methods/image_space/noise_injection.h"
-#include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
+#include "methods/image_work.h"
 
 #include <memory>
 #include <vector>
@@ -23,12 +22,12 @@ public:
     const char* name() const override { return nameOf(kMethodNames, Method::Ibfvs).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(flow_.texture(current_)); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return depth_; }
     const gl::Texture2D& surfaceShade() const override { return shade_; }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
 
 private:
     // Tiles: stages (2)+(3) on this process's tile, after the draw of its piece (target:
@@ -39,22 +38,17 @@ private:
     core::Viewport viewport_;
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     PolygonAdvection polygonAdvection_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     EdgeMask edgeMask_;
     CameraMotion motion_;
     FlowPingPong flow_;            // F_a, R32F (+ shade + mask + depth: the advection draw)
-    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;        // RGBA8
     int current_ = 0, source_ = 0;
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
     bool lastDynamic_ = false;
-    // parallel = tiles (screen_tiles.h), and the split each F_a texture was made with: its
-    // owners, from whom a process pulls what its fragments read of it.
-    std::unique_ptr<ScreenTiles> tiles_;
-    std::vector<PixelRect> madeWith_[2];
-    gl::Texture2D tileDepth_;  // the whole surface's depth over the tile
+    ImageWork work_;           // whole image, replicated or tiled over processes
+    gl::Texture2D tileDepth_;  // tiles: the whole surface's depth over the tile
 };
 
 }  // namespace flowsurf::methods::ibfvs

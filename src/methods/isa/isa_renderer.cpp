@@ -18,11 +18,11 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),
-      overlay_(params.common),
-      contrast_(params.common, viewport),
+      tail_(params.common, viewport),
       motion_(params.common.onCameraMove),
       flow_(viewport),
-      composite_(GL_RGBA8, viewport) {}
+      composite_(GL_RGBA8, viewport),
+      work_(viewport, params.common, kDepthSlot + 3) {}
 
 bool IsaRenderer::viewChanged(const FrameInput& in) const {
     return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
@@ -45,24 +45,23 @@ const gl::Texture2D& IsaRenderer::depthOf(int v, bool tiled) const {
 void IsaRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
-    if (tiles_) tiles_->beginFrame();
+    work_.beginFrame(in);
 
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);
-    const bool tiled = tiledParallel(in, c);
+    const bool tiled = work_.tiled();
     checkContrastParallel(in, c);
     if (plan.freezeStarts) {  // keep where the frozen texture was made
         glCopyImageSubData(depthOf(vi_, tiled).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
                            GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
-        depthMadeWith_[2] = depthMadeWith_[vi_];
+        work_.copied(kDepthSlot + vi_, kDepthSlot + 2);
     }
     if (plan.advect || plan.freezeStarts) source_ = current_;
-    if (tiled && !tiles_) tiles_ = std::make_unique<ScreenTiles>(viewport_);
 
     // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
     // source view changed), or the measured costs call for a new split of the tiles:
     // (1) velocity image and (2) advection mesh. Static: reuse them.
-    const bool resplit = tiled && tiles_->splitDue() && !viewChanged(in);
+    const bool resplit = work_.splitDue() && !viewChanged(in);
     lastDynamic_ = meshStale(in, plan) || resplit;
     if (lastDynamic_) updateMesh(in, plan, tiled, resplit);
 
@@ -70,27 +69,15 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
     advectTexture(in, plan, tiled);
 
-    // (4b) contrast enhancement, display only: F_a stretched between its robust
-    // percentiles [doc/contrast.md]; the advection goes on from F_a itself
+    // (4b) contrast enhancement, display only [doc/contrast.md]: the advection goes on
+    // from F_a itself, and (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
     const SurfaceGBuffer& vel = velocityImage_[vi_];
-    if (contrast_.enabled()) timer_.begin(stageName(Stage::ContrastTexture));
-    if (!tiled) contrast_.measure(flow_.texture(current_), vel.depth());
-    shown_ = &contrast_.stretch(flow_.texture(current_), vel.depth());
-    if (overlay_.stretchesColor()) {
-        timer_.begin(stageName(Stage::ContrastColour));
-        overlay_.measureLightness(*shown_, vel.depth(), vel.shade(), vel.mask());
-    }
-
-    // (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
-    timer_.begin(stageName(Stage::Overlay));
-    overlay_.apply(*shown_, vel.depth(), vel.shade(), vel.mask(), composite_.fbo(), *in.surface, in.dye,
-                   piecePixels(in, c, viewport_));
+    tail_.show(in, flow_.texture(current_), {vel.depth(), vel.shade(), vel.mask()}, composite_.fbo(), timer_);
     timer_.endFrame();
 }
 
 // Tiles: the whole surface's velocity and depth over this tile plus a grid cell.
-void IsaRenderer::distributeTiles(const FrameInput& in) {
-    timer_.begin(stageName(Stage::TileExchange));
+void IsaRenderer::distributeTiles() {
     if (!mergedDepth_[0])
         for (gl::Texture2D& d : mergedDepth_)
             d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
@@ -100,8 +87,8 @@ void IsaRenderer::distributeTiles(const FrameInput& in) {
     // goes into it (the overlay reads this piece's depth, shade and mask, not its velocity).
     const TileLayer layers[] = {TileLayer::of(v.velocity(), v.velocity(), 0.0f, true),
                                 TileLayer::of(v.depth(), mergedDepth_[vi_])};
-    tiles_->distribute(*in.group, v.depth(), layers, guardPx(), v.footprint());
-    depthMadeWith_[vi_] = tiles_->tiles();
+    work_.distribute(v.depth(), layers, guardPx(), v.footprint(), timer_);
+    work_.made(kDepthSlot + vi_);
 }
 
 // Stages (1) and (2) of the dynamic case; `resplit`: the view is the same, only the tiles
@@ -113,11 +100,11 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
         vi_ = 1 - vi_;
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
         timer_.begin(stageName(Stage::VelocityImage));
-        velocityImage_[vi_].render(*in.surface, in.camera, tiled ? in.group : nullptr);
-        if (tiled) distributeTiles(in);
-        else if (in.group) velocityImage_[vi_].merge(*in.group);  // the whole surface's image
+        velocityImage_[vi_].render(*in.surface, in.camera, work_.tiledGroup());
+        if (tiled) distributeTiles();
+        else if (ProcessGroup* g = work_.replicated()) velocityImage_[vi_].merge(*g);  // the whole surface's image
     } else if (resplit) {
-        distributeTiles(in);
+        distributeTiles();
     }
 
     // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
@@ -126,7 +113,7 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
     const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi, tiled);
     // Tiles: the vertices this tile's pixels interpolate, the only ones it reads.
-    const std::optional<PixelRect> vertices = tiled ? std::optional(meshVertices(tiles_->tile())) : std::nullopt;
+    const std::optional<PixelRect> vertices = tiled ? std::optional(meshVertices(work_.tile())) : std::nullopt;
     const auto computeMesh = [&] {
         advectionMesh_.compute(velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
                                in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
@@ -137,13 +124,8 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
         // The edge test reads the source depth where the flow came from: the mesh's
         // footprint, known once it is computed (its coordinates do not depend on that
         // depth); that part of the depth from its makers, then the mesh again.
-        footprint_ = footprint(tiles_->tile());
-        if (!depthMadeWith_[sourceVi].empty()) {
-            timer_.begin(stageName(Stage::TileExchange));
-            tiles_->pull(*in.group, sourceDepth, depthMadeWith_[sourceVi], footprint_);
-            timer_.begin(stageName(Stage::AdvectionMesh));
-            computeMesh();
-        }
+        footprint_ = footprint(work_.tile());
+        if (work_.pull(kDepthSlot + sourceVi, sourceDepth, footprint_, timer_, Stage::AdvectionMesh)) computeMesh();
     }
     haveCache_ = true;
     cachedGeneration_ = in.surface->generation();
@@ -160,29 +142,21 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bo
     const int target = 1 - source_;
     timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
-    if (tiled && !madeWith_[source_].empty()) {
-        timer_.begin(stageName(Stage::TileExchange));
-        tiles_->pull(*in.group, flow_.texture(source_), madeWith_[source_], footprint_);
-        timer_.begin(stageName(Stage::TextureAdvection));
-    }
+    work_.pull(source_, flow_.texture(source_), footprint_, timer_, Stage::TextureAdvection);
     const auto advected = ScreenTiles::Clock::now();
-    if (!tiled || !tiles_->tile().empty())
+    if (!work_.tile().empty())
         textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_, tiled),
                                 flow_.texture(target), flow_.fbo(target), params_.isa.edgeBlending, noise,
-                                tiled ? tiles_->tile() : PixelRect{});
+                                tiled ? work_.tile() : PixelRect{});
     current_ = target;
     if (!tiled) return;
     // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
-    tiles_->reportCost(*in.group, ScreenTiles::finishedMs(advected));
-    madeWith_[target] = tiles_->tiles();
+    work_.reportCost(ScreenTiles::finishedMs(advected));
+    work_.made(target);
     // (4b, tiles) the contrast histogram of this tile, summed over the processes
-    if (contrast_.enabled()) {
-        timer_.begin(stageName(Stage::ContrastTexture));
-        contrast_.measure(flow_.texture(target), depthOf(vi_, tiled), tiles_->tile(), in.group);
-    }
+    tail_.measureTile(flow_.texture(target), depthOf(vi_, tiled), work_.tile(), *in.group, timer_);
     // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
-    timer_.begin(stageName(Stage::TileReturn));
-    tiles_->returnValues(*in.group, flow_.texture(target));
+    work_.returnValues(flow_.texture(target), timer_);
 }
 
 // The advection mesh's vertices [x0, x1) x [y0, y1) that the pixels of `tile` interpolate.

@@ -2,14 +2,13 @@
 #pragma once
 
 #include "gpu/render_targets.h"
+#include "methods/display_tail.h"
 #include "methods/frame.h"
 #include "methods/image_space/camera_motion.h"
 #include "methods/image_space/noise_injection.h"
 #include "methods/isa/advection_mesh.h"
 #include "methods/isa/texture_advection.h"
-#include "parallel/screen_tiles.h"
-#include "present/contrast_stretch.h"
-#include "present/overlay.h"
+#include "methods/image_work.h"
 #include "raster/surface_gbuffer.h"
 
 #include <memory>
@@ -24,12 +23,12 @@ public:
     const char* name() const override { return nameOf(kMethodNames, Method::Isa).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
-    const gl::Texture2D& flowTexture() const override { return shown_ ? *shown_ : flow_.texture(current_); }
+    const gl::Texture2D& flowTexture() const override { return tail_.shown(flow_.texture(current_)); }
     const gl::Texture2D& composite() const override { return composite_.texture(); }
     const gl::Texture2D& surfaceDepth() const override { return velocityImage_[vi_].depth(); }
     const gl::Texture2D& surfaceShade() const override { return velocityImage_[vi_].shade(); }
     bool lastFrameDynamic() const override { return lastDynamic_; }
-    TileTraffic tileTraffic() const override { return tiles_ ? tiles_->traffic() : TileTraffic{}; }
+    TileTraffic tileTraffic() const override { return work_.traffic(); }
 
 private:
     bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
@@ -37,7 +36,7 @@ private:
     // The stages of renderFrame (isa_renderer.cpp).
     void updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit);
     void advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled);
-    void distributeTiles(const FrameInput& in);
+    void distributeTiles();
     const gl::Texture2D& depthOf(int v, bool tiled) const;
 
     MethodParams params_;
@@ -49,11 +48,9 @@ private:
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
-    Overlay overlay_;
-    ContrastStretch contrast_;
+    DisplayTail tail_;  // contrast, lightness, overlay with its layers
     CameraMotion motion_;
     FlowPingPong flow_;           // F_a, R32F
-    const gl::Texture2D* shown_ = nullptr;  // F_a, or its contrast stretch
     ColorTarget composite_;       // RGBA8
     int current_ = 0, source_ = 0;
     // What the cached velocity image and advection mesh were made for (static case).
@@ -62,19 +59,17 @@ private:
     core::Camera cachedCamera_, cachedSourceCamera_;
     bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
-    // parallel = tiles (screen_tiles.h): this process advects its own tile. The velocity
-    // image merged in place over the tile plus one grid cell (the mesh vertices it
-    // interpolates; nothing reads this piece's own velocity after the merge),
+    // Whole image, replicated or tiled over processes. Tiles: this process advects its own
+    // tile. The velocity image merged in place over the tile plus one grid cell (the mesh
+    // vertices it interpolates; nothing reads this piece's own velocity after the merge),
     // the whole surface's depth per velocity image over the same (and, where the edge test
     // reads it as the source depth, over the mesh's footprint, pulled from its makers), and
-    // of F_a the tile and what its pixels read (pulled each frame).
-    std::unique_ptr<ScreenTiles> tiles_;
+    // of F_a the tile and what its pixels read (pulled each frame). History slots: F_a 0
+    // and 1, then (kDepthSlot +) mergedDepth_[0], [1] and frozenDepth_.
+    static constexpr int kDepthSlot = 2;
+    ImageWork work_;
     gl::Texture2D mergedDepth_[2];
-    // The split each F_a texture was made with (its owners, from whom a process pulls the
-    // part its tile reads), and this tile's footprint in the source F_a.
-    std::vector<PixelRect> madeWith_[2];
-    std::vector<PixelRect> depthMadeWith_[3];  // of mergedDepth_[0], [1] and frozenDepth_
-    PixelRect footprint_;
+    PixelRect footprint_;  // this tile's footprint in the source F_a
     PixelRect meshVertices(const PixelRect& tile) const;
     PixelRect footprint(const PixelRect& tile) const;
     int guardPx() const;

@@ -1,0 +1,36 @@
+#include "methods/display_tail.h"
+
+#include "methods/stages.h"
+
+namespace flowsurf::methods {
+
+DisplayTail::DisplayTail(const CommonParams& params, const core::Viewport& viewport)
+    : params_(params), viewport_(viewport), overlay_(params), contrast_(params, viewport) {}
+
+void DisplayTail::measureTile(const gl::Texture2D& flow, const gl::Texture2D& depth, const PixelRect& tile,
+                              ProcessGroup& group, gl::StageTimer& timer) {
+    if (!contrast_.enabled()) return;
+    timer.begin(stageName(Stage::ContrastTexture));
+    contrast_.measure(flow, depth, tile, &group);
+}
+
+void DisplayTail::show(const FrameInput& in, const gl::Texture2D& flow, const SurfaceImage& surface,
+                       const gl::Framebuffer& target, gl::StageTimer& timer) {
+    // Contrast enhancement of the texture: stretched between its robust percentiles, over the
+    // whole image here or over the tiles' summed histograms (measureTile).
+    if (contrast_.enabled()) timer.begin(stageName(Stage::ContrastTexture));
+    if (!tiledParallel(in, params_)) contrast_.measure(flow, surface.depth);
+    const gl::Texture2D& shown = contrast_.stretch(flow, surface.depth);
+    stretched_ = &shown == &flow ? nullptr : &shown;
+    // ... and of the colour: the lightness histogram the overlay stretches by
+    if (overlay_.stretchesColor()) {
+        timer.begin(stageName(Stage::ContrastColour));
+        overlay_.measureLightness(shown, surface);
+    }
+
+    // The overlay [L eq. 10] with the dye and legend layers
+    timer.begin(stageName(Stage::Overlay));
+    overlay_.apply(shown, surface, target, *in.surface, in.dye, piecePixels(in, params_, viewport_));
+}
+
+}  // namespace flowsurf::methods
