@@ -70,8 +70,9 @@ double readCaseViscosity(const fs::path& caseDir, std::string& from) {
         const std::string text = dictionaryText(file);
         std::smatch m;
         if (!std::regex_search(text, m, nu)) continue;
+        const std::string number = m[1].str();  // strtod's end points into it: kept alive
         char* end = nullptr;
-        const double value = std::strtod(m[1].str().c_str(), &end);
+        const double value = std::strtod(number.c_str(), &end);
         if (*end == '\0' && value > 0) {
             from = (fs::path("constant") / name).string();
             return value;
