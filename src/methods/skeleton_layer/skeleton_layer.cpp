@@ -39,16 +39,25 @@ SkeletonLayer::SkeletonLayer()
 }
 
 void SkeletonLayer::upload(const skeleton::Skeleton& s) {
+    // per piece: the point before it (w 1 where there is one), a (w the kind), b, the point after
     std::vector<glm::vec4> seg;
     for (const skeleton::SkeletonLine& l : s.lines)
         for (size_t i = 1; i < l.points.size(); ++i) {
+            const bool hasPrev = i >= 2, hasNext = i + 1 < l.points.size();
+            seg.emplace_back(l.points[hasPrev ? i - 2 : i - 1], hasPrev ? 1.0f : 0.0f);
             seg.emplace_back(l.points[i - 1], float(l.kind));
             seg.emplace_back(l.points[i], 0.0f);
+            seg.emplace_back(l.points[hasNext ? i + 1 : i], hasNext ? 1.0f : 0.0f);
         }
     std::vector<glm::vec4> pts;
     for (const skeleton::CriticalPoint& p : s.criticalPoints) pts.emplace_back(p.position, float(p.type));
-    segmentCount_ = GLsizei(seg.size() / 2);
+    segmentCount_ = GLsizei(seg.size() / 4);
     pointCount_ = GLsizei(pts.size());
+    // two triangles over a piece's four corners (a -, b -, b +, a +): each corner shaded once
+    std::vector<GLuint> corners;
+    for (GLuint q = 0; q < GLuint(segmentCount_); ++q)
+        for (GLuint c : {0u, 1u, 2u, 0u, 2u, 3u}) corners.push_back(4 * q + c);
+    quadCorners_ = corners.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(corners.size() * sizeof(GLuint)), corners.data());
     segments_ = seg.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(seg.size() * sizeof(glm::vec4)), seg.data());
     pointBuffer_ = pts.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(pts.size() * sizeof(glm::vec4)), pts.data());
 }
@@ -70,20 +79,20 @@ void SkeletonLayer::draw(const gl::Texture2D& composite, const gl::Texture2D& su
         setCommon(lines_, composite, camera);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSkeletonSegments, segments_.id());
         lines_.use();
-        // the outline of every piece first, then the cores: joins show no outline across a line
-        for (int pass = 0; pass < 2; ++pass) {
-            glProgramUniform1f(lines_.id(), lines_.uniform("halfWidthPx"),
-                               0.5f * style.lineWidth + (pass == 0 ? 1.0f : 0.0f));
-            glProgramUniform1i(lines_.id(), lines_.uniform("outlinePass"), pass == 0);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 6, segmentCount_);
-        }
+        // outline and core in one pass, premultiplied: the mitred pieces of a line do not overlap
+        glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glProgramUniform1f(lines_.id(), lines_.uniform("halfWidthPx"), 0.5f * style.lineWidth + 1.0f);
+        glVertexArrayElementBuffer(vao_.id(), quadCorners_.id());
+        glDrawElements(GL_TRIANGLES, 6 * segmentCount_, GL_UNSIGNED_INT, nullptr);
+        glVertexArrayElementBuffer(vao_.id(), 0);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     }
     if (style.points && pointCount_ > 0) {
         setCommon(points_, composite, camera);
         glProgramUniform1f(points_.id(), points_.uniform("sizePx"), style.glyphSize);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSkeletonPoints, pointBuffer_.id());
         points_.use();
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, pointCount_);
+        glDrawArrays(GL_TRIANGLES, 0, 6 * pointCount_);
     }
     glDisable(GL_BLEND);
     glBindVertexArray(0);

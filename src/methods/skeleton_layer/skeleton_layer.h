@@ -1,10 +1,11 @@
 // flowsurf — the flow topology drawn over a method's image (doc/topology.md §5): critical
 // points as glyphs whose shape and colour give the type, separation and attachment lines
 // in two colours, a constant width in pixels, anti-aliased (coverage from the distance to
-// the line in pixels, a dark outline drawn first), hidden where the surface covers them
+// the line in pixels, a dark outline around the core), hidden where the surface covers them
 // (the method's own surface depth). Drawn onto the composite (RGBA8) after the method's
 // stages, so the texture under them is the method's; the same result for every method.
-// Cost: one instanced draw of the line pieces (twice: outline, core) and one of the points.
+// Cost: one draw of the line pieces (outline and core in one pass, each pixel of a line once)
+// and one of the points, six vertices a quad.
 #pragma once
 
 #include "core/camera.h"
@@ -53,6 +54,7 @@ private:
     gl::VertexArray vao_;
     gl::Framebuffer fbo_;
     gl::Buffer segments_, pointBuffer_;
+    gl::Buffer quadCorners_;  // element indices: six per line piece over its four corners
     GLsizei segmentCount_ = 0, pointCount_ = 0;
 };
 
