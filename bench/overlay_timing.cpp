@@ -1,8 +1,9 @@
 // The flow topology overlay's cost per frame (doc/bench/topology.md): a method's dynamic
 // frames (an orbiting camera) of INPUT with --topology off, and the overlay alone drawn
-// over the same frames (TopologyOverlay::draw: the lines' two passes and the points), in
+// over the same frames (TopologyOverlay::draw: the line pieces and the points), in
 // interleaved rounds, each a wall time over `frames` frames ended by glFinish. Prints the
-// median of the rounds and the overlay's share of the frame.
+// median of the rounds and the overlay's share of the frame. PARTS (points,lines | points |
+// lines) and LW (line width, px) in the environment vary what is drawn.
 //   flowsurf_overlay_timing INPUT [METHOD] [WxH] [ROUNDS] [FRAMES]
 #include "gl/context.h"
 #include "io/series_reader.h"

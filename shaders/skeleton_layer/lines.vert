@@ -1,8 +1,9 @@
 // The flow topology layer, lines: each piece a screen-space quad of the outline's half width
-// plus one pixel for the anti-aliased edge, four corners (two triangles by index) of one draw. Inside a line a piece
-// ends on the bisector of the join with its neighbour (a miter), so consecutive pieces meet
-// edge to edge and no pixel is drawn twice; at a line's ends it reaches one half width
-// further for the round cap. Cost: one fragment per covered pixel (llvmpipe pays per block).
+// plus one pixel for the anti-aliased edge, four corners (two triangles by index) of one
+// draw. Inside a line a piece ends on the bisector of the join with its neighbour (a miter),
+// so consecutive pieces meet edge to edge and no pixel is drawn twice; at a line's ends it
+// reaches one half width further for the round cap. Cost: on llvmpipe mostly the set-up of
+// each piece's two triangles, not their pixels (doc/bench/topology.md).
 #include "skeleton_layer/depth.glsl"
 // Per piece: the point before a (w 1: it exists), a (w: kind), b, the point after b (w 1: exists).
 layout(std430, binding = SKELETON_SEGMENTS_BINDING) readonly buffer Segments { vec4 segment[]; };

@@ -58,6 +58,7 @@ void SkeletonLayer::upload(const skeleton::Skeleton& s) {
     for (GLuint q = 0; q < GLuint(segmentCount_); ++q)
         for (GLuint c : {0u, 1u, 2u, 0u, 2u, 3u}) corners.push_back(4 * q + c);
     quadCorners_ = corners.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(corners.size() * sizeof(GLuint)), corners.data());
+    glVertexArrayElementBuffer(vao_.id(), quadCorners_.id());
     segments_ = seg.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(seg.size() * sizeof(glm::vec4)), seg.data());
     pointBuffer_ = pts.empty() ? gl::Buffer() : gl::Buffer(GLsizeiptr(pts.size() * sizeof(glm::vec4)), pts.data());
 }
@@ -82,9 +83,7 @@ void SkeletonLayer::draw(const gl::Texture2D& composite, const gl::Texture2D& su
         // outline and core in one pass, premultiplied: the mitred pieces of a line do not overlap
         glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         glProgramUniform1f(lines_.id(), lines_.uniform("halfWidthPx"), 0.5f * style.lineWidth + 1.0f);
-        glVertexArrayElementBuffer(vao_.id(), quadCorners_.id());
         glDrawElements(GL_TRIANGLES, 6 * segmentCount_, GL_UNSIGNED_INT, nullptr);
-        glVertexArrayElementBuffer(vao_.id(), 0);
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     }
     if (style.points && pointCount_ > 0) {
@@ -92,7 +91,7 @@ void SkeletonLayer::draw(const gl::Texture2D& composite, const gl::Texture2D& su
         glProgramUniform1f(points_.id(), points_.uniform("sizePx"), style.glyphSize);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSkeletonPoints, pointBuffer_.id());
         points_.use();
-        glDrawArrays(GL_TRIANGLES, 0, 6 * pointCount_);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, pointCount_);
     }
     glDisable(GL_BLEND);
     glBindVertexArray(0);
