@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# FlowSurf's strong scaling on ParaView's engine (issue 27): ms per render at 1 and 2 ranks,
+# FlowSurf's strong scaling on ParaView's engine: ms per render at 1 and 2 ranks,
 # FlowSurfParallel tiles against replicate in the same rounds, one llvmpipe thread per rank,
 # each rank bound to its own core; the machine's own two-process speedup first.
 #

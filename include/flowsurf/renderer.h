@@ -99,7 +99,7 @@ public:
     // The options Surface::read takes instead (Surface::readOptionNames()), described so.
     static std::vector<OptionInfo> readOptionInfo();
 
-    // Dye [issue 20]: adds a source of ink at the surface point nearest `point` (object
+    // Dye (doc/algorithms.md §10): adds a source of ink at the surface point nearest `point` (object
     // space), `radius` in object units (0: a few pixels at the first frame's view), `color`
     // a name, #rrggbb or "r,g,b" (empty: the next of the default colours). As the "dye"
     // option (its value lists every source); a running animation goes on, the source

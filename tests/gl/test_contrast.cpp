@@ -98,7 +98,7 @@ TEST(PercentileRange, HistogramPercentilesByHand) {
 INSTANTIATE_TEST_SUITE_P(All, ContrastMethods, ::testing::Values("isa", "ibfvs", "hybrid"));
 
 // Texture enhancement doubles the contrast at most 0.5 degrees off the field and 0.02 less
-// coherent in time (the criteria of issue 28, as the quality report measures them).
+// coherent in time (doc/algorithms.md §9's criteria, as the quality report measures them).
 TEST_P(ContrastMethods, TextureStretchDoublesContrastKeepingOrientationAndCoherence) {
     const std::string method = GetParam();
     const SphereRun off = runSphere(method, test::testParams(), framesFor(method));

@@ -53,7 +53,7 @@ Difference renderBothPaths(const std::string& method, methods::MethodParams p) {
 
 }  // namespace
 
-// The same image: mean <= 1 gray level (issue 21). The passes compute the same arithmetic
+// The same image: mean <= 1 gray level. The passes compute the same arithmetic
 // on the same inputs, so only the interpolation of the pixel warp's mesh coordinate (the
 // rasteriser's vs a per-pixel expression) can round differently, and F_a carries such a
 // difference along for ~1/alpha frames. Measured: identical images (0 gray levels).

@@ -93,7 +93,7 @@ TEST_P(MethodProperties, SphereOrientationMatchesProjectedField) {
 }
 
 // The same at a finer scale (sigma = 2 px), where blotchy texture shows: the target of
-// issue 14 is 5 deg. ISA and IBFVS measured 4.41 / 4.40 deg at seed 7 (3.67-4.39 at seeds
+// the sharper defaults (docs/methods.md) is 5 deg. ISA and IBFVS measured 4.41 / 4.40 deg at seed 7 (3.67-4.39 at seeds
 // 1-3; 7.5 deg with the paper's bilinear, point-noise defaults); the hybrid 3.80 deg.
 TEST_P(MethodProperties, SphereOrientationFineScale) {
     SpinningSphere s;
@@ -135,7 +135,7 @@ TEST(ImageSpaceMethods, ConsecutiveFramesCorrelate) {
 }
 
 // The paper's behaviour stays reachable by options (--resample bilinear --noise-injection
-// point --step-px 2) and is the texture of before issue 14: its orientation errors are
+// point --step-px 2) and is the texture of the paper's pipeline: its orientation errors are
 // those measured then (sigma 4 / 2 px: ISA 4.11 / 7.53, IBFVS 4.06 / 7.57 deg, within
 // 0.3 deg), measurably worse than the defaults.
 TEST(ImageSpaceMethods, PaperBehaviourReachable) {

@@ -62,7 +62,7 @@ class ParallelMerge : public ::testing::TestWithParam<std::string> {};
 
 // The spinning sphere cut into 2 and 4 pieces (vertical seams through the view; 4: also a
 // horizontal one), 40 frames: every process's image equals the one-process image — mean
-// ≤ 1 gray level over the surface and ≤ 3 in every 16 x 16 tile (issue 11's bound).
+// ≤ 1 gray level over the surface and ≤ 3 in every 16 x 16 tile (the bound ParaView's ranks are held to, tests/paraview/parallel_test.py).
 TEST_P(ParallelMerge, PiecesGiveTheOneProcessImage) {
     methods::MethodParams replicate;
     replicate.common.parallel = methods::ParallelMode::Replicate;

@@ -1,4 +1,4 @@
-// Quality metrics (issue 19, doc/algorithms.md "Quality metrics"): the numbers a user gets
+// Quality metrics (doc/algorithms.md §9): the numbers a user gets
 // from `flowsurf quality`, checked against analytic fields and made-up extremes.
 #include "core/builtin_scenes.h"
 #include "core/noise.h"

@@ -142,7 +142,7 @@ TEST(SurfaceRaster, LargeAndClippedTrianglesGiveTheGlBuffers) {
     expectSameBuffers(compare(g, c, vp));
 }
 
-// The images of every method: mean <= 1 gray level, as between the GL paths (issue 21).
+// The images of every method: mean <= 1 gray level, as between the GL paths (test_gl_path.cpp).
 class SurfaceRasterSameImage : public ::testing::TestWithParam<std::string> {};
 INSTANTIATE_TEST_SUITE_P(Methods, SurfaceRasterSameImage, ::testing::Values("isa", "ibfvs", "hybrid"),
                          [](const auto& info) { return info.param; });

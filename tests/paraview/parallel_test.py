@@ -19,7 +19,7 @@ tests/paraview/run_parallel_test.sh under mpiexec).
       different data times): the same error on every rank, no hang, rendering goes on.
   pvbatch parallel_test.py PLUGIN OUTDIR compare REF TAG...
       compares each TAG's images with REF's: the mean absolute gray difference over the
-      surface must be <= 1 and every 16x16 tile's mean <= 3 (issue 11); prints the numbers
+      surface must be <= 1 and every 16x16 tile's mean <= 3; prints the numbers
       and writes |difference| x 8 as OUTDIR/diff_<method>_<TAG>.png.
 """
 import os

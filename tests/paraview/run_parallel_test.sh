@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # ctest wrapper of parallel_test.py: the FlowSurf representation on ParaView's distributed
 # engine. Renders the split sphere under `mpiexec -np 1, 2, 4` pvbatch (and 4 ranks over 2
-# pieces, so two ranks hold nothing), then compares each with the 1-rank images (issue 11:
-# mean <= 1 gray level over the surface, every 16x16 tile <= 3). A hang (a rank missing a
+# pieces, so two ranks hold nothing), then compares each with the 1-rank images (mean <= 1
+# gray level over the surface, every 16x16 tile <= 3). A hang (a rank missing a
 # collective step) ends at `timeout`.
 # Usage: run_parallel_test.sh PLUGIN.so OUTDIR
 set -uo pipefail

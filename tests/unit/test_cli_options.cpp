@@ -47,7 +47,7 @@ TEST(CliOptions, ParsesTheDocumentedNames) {
     EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
-// Issue 14: sharper defaults for ISA and IBFVS; the paper's behaviour [L] by options.
+// Sharper defaults for ISA and IBFVS; the paper's behaviour [L] by options.
 TEST(CliOptions, PaperResamplingAndNoiseReachable) {
     RenderOptions d = parse({"builtin:sphere"});
     EXPECT_EQ(d.params.common.resample, methods::Resample::Bicubic);
