@@ -11,29 +11,10 @@
 
 namespace flowsurf::methods {
 
+using tile_wire::PixelFormat;
+using tile_wire::pixelFormatOf;
+
 namespace {
-
-// A pixel's bytes as the texture stores them (floats, halves or depth as float).
-struct PixelFormat {
-    GLenum format, type;
-    size_t bytes;
-    bool depth;
-};
-
-PixelFormat pixelFormatOf(GLenum internalFormat) {
-    switch (internalFormat) {
-        case GL_DEPTH_COMPONENT32F: return {GL_DEPTH_COMPONENT, GL_FLOAT, 4, true};
-        case GL_R32F: return {GL_RED, GL_FLOAT, 4, false};
-        case GL_RG32F: return {GL_RG, GL_FLOAT, 8, false};
-        case GL_RGBA32F: return {GL_RGBA, GL_FLOAT, 16, false};
-        case GL_R16F: return {GL_RED, GL_HALF_FLOAT, 2, false};
-        case GL_RG16F: return {GL_RG, GL_HALF_FLOAT, 4, false};
-        case GL_RGBA16F: return {GL_RGBA, GL_HALF_FLOAT, 8, false};
-        default:
-            throw GlError("screen tiles: texture format " + std::to_string(internalFormat) +
-                          " cannot be exchanged (float, half or depth formats only)");
-    }
-}
 
 // `layer` -1: a 2D texture; else the z of a 3D texture.
 void readRect(GLuint texture, int layer, const PixelRect& r, const PixelFormat& f, void* out) {
@@ -83,23 +64,6 @@ void readLayers(std::span<const TileLayer> layers, const std::vector<PixelFormat
     }
 }
 
-// Messages are plain byte strings, read in order.
-struct Reader {
-    const std::vector<uint8_t>& in;
-    size_t at = 0;
-    const uint8_t* take(size_t n) {
-        if (at + n > in.size()) throw GlError("screen tiles: a message from another process is truncated");
-        const uint8_t* p = in.data() + at;
-        at += n;
-        return p;
-    }
-    PixelRect rect() {
-        int32_t v[4];
-        std::memcpy(v, take(sizeof v), sizeof v);
-        return {v[0], v[1], v[2], v[3]};
-    }
-};
-
 }  // namespace
 
 TileLayer TileLayer::of(const gl::Texture2D& local, const gl::Texture2D& tile, float fill, bool ownBackground) {
@@ -114,34 +78,51 @@ TileLayer TileLayer::ofLayer(GLuint local3d, GLuint tile3d, GLenum format, int z
 
 ScreenTiles::ScreenTiles(const core::Viewport& viewport) : viewport_(viewport) {}
 
+std::vector<PixelFormat> ScreenTiles::formatsOf(std::span<const TileLayer> layers) {
+    std::vector<PixelFormat> formats;
+    for (const TileLayer& l : layers) formats.push_back(pixelFormatOf(l.format));
+    return formats;
+}
+
 void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, std::span<const TileLayer> layers,
                              int guardPx, const PixelRect& footprint) {
-    const int n = group.size(), me = group.rank();
-    const int w = viewport_.width, h = viewport_.height;
-    rank_ = me;
-    std::vector<PixelFormat> formats;
-    size_t layerBytes = 0;
-    for (const TileLayer& l : layers) {
-        formats.push_back(pixelFormatOf(l.format));
-        layerBytes += formats.back().bytes;
-    }
-
-    // This piece's depth and its covered rectangle; the coverage per cell, summed.
-    const PixelRect full{0, 0, w, h};
+    rank_ = group.rank();
+    const PixelRect full{0, 0, viewport_.width, viewport_.height};
     const PixelRect fp = footprint.intersect(full);
-    depth_.resize(full.area());  // read within fp only, where the read-back writes every pixel
-    if (!fp.empty()) {  // read into the full-size array: rows of w pixels
-        const size_t at = size_t(fp.y0) * size_t(w) + size_t(fp.x0);
-        gl::waitForRendering();
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glPixelStorei(GL_PACK_ROW_LENGTH, w);
-        glGetTextureSubImage(depth.id(), 0, fp.x0, fp.y0, 0, fp.width(), fp.height(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                             GLsizei((depth_.size() - at) * sizeof(float)), &depth_[at]);
-        glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    }
-    const int cellsX = (w + kCellPx - 1) / kCellPx, cellsY = (h + kCellPx - 1) / kCellPx;
-    std::vector<float> weight(size_t(cellsX) * size_t(cellsY), 0.0f);
+    const std::vector<PixelFormat> formats = formatsOf(layers);
+    readDepth(depth, fp);
     PixelRect covered;
+    std::vector<float> weight = coverage(fp, covered);
+    const PixelRect previous = region_;
+    split(group, std::move(weight), guardPx);
+    writePieces(layers, formats, covered, guardPx);
+    const std::vector<std::vector<uint8_t>> in = group.exchange(sends_);
+    Received received = readPieces(in, formats);
+    mergeNearest(layers, formats, received, depth.id());
+    writeMerge(layers, formats, received, previous);
+    countCovered(fp, received.merged);
+}
+
+// This piece's depth over its footprint, into the full-size depth_ (rows of the viewport's
+// width); only the footprint is read later.
+void ScreenTiles::readDepth(const gl::Texture2D& depth, const PixelRect& fp) {
+    const int w = viewport_.width;
+    depth_.resize(size_t(w) * size_t(viewport_.height));
+    if (fp.empty()) return;
+    const size_t at = size_t(fp.y0) * size_t(w) + size_t(fp.x0);
+    gl::waitForRendering();
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, w);
+    glGetTextureSubImage(depth.id(), 0, fp.x0, fp.y0, 0, fp.width(), fp.height(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         GLsizei((depth_.size() - at) * sizeof(float)), &depth_[at]);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+}
+
+// This piece's covered pixels per cell (kCellPx squared), and the rectangle they lie in.
+std::vector<float> ScreenTiles::coverage(const PixelRect& fp, PixelRect& covered) const {
+    const int w = viewport_.width;
+    const int cellsX = (w + kCellPx - 1) / kCellPx, cellsY = (viewport_.height + kCellPx - 1) / kCellPx;
+    std::vector<float> weight(size_t(cellsX) * size_t(cellsY), 0.0f);
     for (int y = fp.y0; y < fp.y1; ++y) {
         const float* row = depth_.data() + size_t(y) * size_t(w);
         int x0 = fp.x0, x1 = fp.x1;  // the row's first and last covered pixel
@@ -157,23 +138,37 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             cells[(end - 1) / kCellPx] += float(count);
         }
     }
+    return weight;
+}
+
+// Collective: the group's coverage summed, weighted by the measured costs, split into one
+// tile per process (the same on every process); region_ is this process's tile plus guard.
+void ScreenTiles::split(ProcessGroup& group, std::vector<float> weight, int guardPx) {
+    const int w = viewport_.width, h = viewport_.height;
+    const int cellsX = (w + kCellPx - 1) / kCellPx;
     group.sumInPlace(weight);  // counts: exact in float, the same sum on every process
     // The image stages cost mostly per surface pixel; a little per pixel keeps empty
     // screen parts from collapsing into one tile.
     for (size_t c = 0; c < weight.size(); ++c) weight[c] += 0.05f * float(kCellPx * kCellPx);
     if (costScale_.size() != weight.size()) costScale_.assign(weight.size(), 1.0f);
     for (size_t c = 0; c < weight.size(); ++c) weight[c] *= costScale_[c];
-    if (shares_.size() != size_t(n)) shares_.clear();
-    tiles_ = splitScreen(weight, cellsX, cellsY, kCellPx, w, h, n, shares_);
+    if (shares_.size() != size_t(group.size())) shares_.clear();
+    tiles_ = splitScreen(weight, cellsX, int(weight.size()) / cellsX, kCellPx, w, h, group.size(), shares_);
     weights_ = std::move(weight);
     cellsX_ = cellsX;
     splitDue_ = false;
-    const PixelRect previous = region_;
-    region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect(full);
+    region_ = tile().empty() ? PixelRect{} : tile().grown(guardPx).intersect({0, 0, w, h});
+}
 
-    // Messages: to each tile's owner, this piece over that tile plus guard: the rectangle,
-    // the depth of each pixel, then each layer's bytes at the covered pixels (row order),
-    // layer after layer; this piece's layers read back over the box of what it sends.
+// The piece messages (tile_wire.h) to every other tile's owner, into sends_: this piece over
+// that tile plus guard where it covers it (sent_); its layers read back over the box of
+// what it sends.
+void ScreenTiles::writePieces(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats,
+                              const PixelRect& covered, int guardPx) {
+    const int n = int(tiles_.size()), me = rank_, w = viewport_.width;
+    const PixelRect full{0, 0, w, viewport_.height};
+    size_t layerBytes = 0;
+    for (const PixelFormat& f : formats) layerBytes += f.bytes;
     sent_.assign(size_t(n), PixelRect{});
     PixelRect S;
     for (int t = 0; t < n; ++t) {
@@ -183,11 +178,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         if (t != me) S = S.united(sent_[size_t(t)]);
     }
     readLayers(layers, formats, S, local_);
-    std::vector<std::vector<uint8_t>>& sends = sends_;
-    sends.resize(size_t(n));
+    sends_.resize(size_t(n));
     for (int t = 0; t < n; ++t) {
         const PixelRect& r = sent_[size_t(t)];
-        std::vector<uint8_t>& out = sends[size_t(t)];
+        std::vector<uint8_t>& out = sends_[size_t(t)];
         if (t == me || r.empty()) {
             out.clear();
             continue;
@@ -200,12 +194,10 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             for (int x = r.x0; x < r.x1; ++x)
                 if (row[x] < 1.0f) idx.push_back(rowAt + uint32_t(x - r.x0));
         }
-        out.resize(16 + r.area() * 4 + idx.size() * layerBytes);  // all written below
-        const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
-        std::memcpy(out.data(), header, 16);
-        uint8_t* at = out.data() + 16;
-        for (int y = r.y0; y < r.y1; ++y, at += size_t(r.width()) * 4)
-            std::memcpy(at, &depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * 4);
+        out.resize(tile_wire::pieceBytes(r, idx.size(), layerBytes));  // all written below
+        uint8_t* at = tile_wire::putRect(out.data(), r);
+        for (int y = r.y0; y < r.y1; ++y, at += size_t(r.width()) * tile_wire::kDepthBytes)
+            std::memcpy(at, &depth_[size_t(y) * size_t(w) + size_t(r.x0)], size_t(r.width()) * tile_wire::kDepthBytes);
         for (size_t i = 0; i < layers.size(); ++i)
             withPixelSize(formats[i].bytes, [&](auto size) {
                 constexpr size_t N = decltype(size)::value;
@@ -217,20 +209,20 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             });
         traffic_.bytesSent += out.size();
     }
-    std::vector<std::vector<uint8_t>> in = group.exchange(sends);
+}
 
-    // The merge over the region, in rank order: a strictly nearer fragment wins, so on a tie
-    // the lowest rank keeps the pixel (as mergeByDepth). When every layer's own values stand
-    // for the background off this piece (TileLayer::ownBackground), they are copied over the
-    // region on the GPU and only the box of what other processes sent (U) is merged here;
-    // else the whole region. First the winner of each pixel merged (its process and the
-    // index of its values there), then each layer copied from the winners and written.
-    const PixelRect& R = region_;
-    std::vector<std::vector<const uint8_t*>> values(static_cast<size_t>(n));  // [process][layer]: its values' start
-    std::vector<const float*> depthOf(static_cast<size_t>(n), nullptr);
+// The other pieces' messages read: each one's rectangle (received_) and depth there (kept
+// for the return trip), where each layer's values start, and the box of all they sent.
+ScreenTiles::Received ScreenTiles::readPieces(const std::vector<std::vector<uint8_t>>& in,
+                                              const std::vector<PixelFormat>& formats) {
+    const int n = int(tiles_.size()), me = rank_;
+    size_t layerBytes = 0;
+    for (const PixelFormat& f : formats) layerBytes += f.bytes;
+    Received got;
+    got.values.resize(size_t(n));
+    got.depthOf.assign(size_t(n), nullptr);
     received_.assign(size_t(n), PixelRect{});
     receivedDepth_.resize(size_t(n));
-    PixelRect U;
     for (int q = 0; q < n; ++q) {
         std::vector<float>& keep = receivedDepth_[size_t(q)];
         if (q == me || in[size_t(q)].empty()) {
@@ -239,32 +231,43 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             continue;
         }
         traffic_.bytesReceived += in[size_t(q)].size();
-        Reader rd{in[size_t(q)]};
+        tile_wire::Reader rd{in[size_t(q)]};
         const PixelRect r = rd.rect();
-        if (r.empty() || !(r.intersect(R) == r))
+        if (r.empty() || !(r.intersect(region_) == r))
             throw GlError("screen tiles: process " + std::to_string(q) + " sent pixels outside this tile");
         keep.resize(r.area());  // kept from the last frame: only growth is zero-filled
-        std::memcpy(keep.data(), rd.take(r.area() * 4), r.area() * 4);
-        depthOf[size_t(q)] = keep.data();
+        std::memcpy(keep.data(), rd.take(r.area() * tile_wire::kDepthBytes), r.area() * tile_wire::kDepthBytes);
+        got.depthOf[size_t(q)] = keep.data();
         size_t count = 0;
         for (float d : keep) count += d < 1.0f;
         const uint8_t* v = rd.take(count * layerBytes);
-        if (rd.at != in[size_t(q)].size())
+        if (!rd.atEnd())
             throw GlError("screen tiles: a message from process " + std::to_string(q) + " has trailing bytes");
-        for (size_t i = 0; i < layers.size(); ++i) {
-            values[size_t(q)].push_back(v);
-            v += count * formats[i].bytes;
+        for (const PixelFormat& f : formats) {
+            got.values[size_t(q)].push_back(v);
+            v += count * f.bytes;
         }
         received_[size_t(q)] = r;
-        U = U.united(r);
+        got.others = got.others.united(r);
     }
+    return got;
+}
+
+// The merge over `merged` (the region; only the box of what others sent when every layer's
+// own values stand for the background, TileLayer::ownBackground), in rank order: a strictly
+// nearer fragment wins, so on a tie the lowest rank keeps the pixel (as mergeByDepth). The
+// winner of each pixel: its process and the index of its values there.
+void ScreenTiles::mergeNearest(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats,
+                               Received& got, GLuint depth) {
+    const int n = int(tiles_.size()), me = rank_, w = viewport_.width;
     bool ownBackground = true;
-    for (const TileLayer& l : layers) ownBackground = ownBackground && (l.ownBackground || l.local == depth.id());
-    const PixelRect M = ownBackground ? U : R;  // the pixels merged here
+    for (const TileLayer& l : layers) ownBackground = ownBackground && (l.ownBackground || l.local == depth);
+    got.merged = ownBackground ? got.others : region_;
+    const PixelRect& M = got.merged;
     // This piece's layers where they take part in the merge.
     const PixelRect O = sent_[size_t(me)].intersect(M);
     readLayers(layers, formats, O, own_);
-    for (size_t i = 0; i < layers.size(); ++i) values[size_t(me)].push_back(own_[i].data());
+    for (size_t i = 0; i < layers.size(); ++i) got.values[size_t(me)].push_back(own_[i].data());
     best_.assign(M.area(), 1.0f);
     winner_.assign(M.area(), -1);
     winnerAt_.resize(M.area());
@@ -277,7 +280,7 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
         uint32_t k = 0;
         for (int y = r.y0; y < r.y1; ++y) {
             const float* depth = own ? depth_.data() + size_t(y) * size_t(w) + size_t(r.x0)
-                                     : depthOf[size_t(q)] + indexIn(r, r.x0, y);
+                                     : got.depthOf[size_t(q)] + indexIn(r, r.x0, y);
             const size_t rowAt = indexIn(M, r.x0, y);
             for (int i = 0; i < r.width(); ++i) {
                 const float d = depth[i];
@@ -292,12 +295,20 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
             }
         }
     }
-    std::vector<std::vector<uint8_t>>& merged = merged_;
-    merged.resize(layers.size());
+}
+
+// Each layer over the merge's pixels copied from the winners (`fill` where none won), then
+// on the GPU: what the last region held and this one does not cleared; this piece's own
+// layers over the region where only the box of what others sent is merged; the merge.
+void ScreenTiles::writeMerge(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats,
+                             const Received& got, const PixelRect& previous) {
+    const PixelRect& M = got.merged;
+    const PixelRect& R = region_;
+    merged_.resize(layers.size());
     for (size_t i = 0; i < layers.size() && !M.empty(); ++i)
         withPixelSize(formats[i].bytes, [&](auto size) {
             constexpr size_t N = decltype(size)::value;
-            merged[i].resize(M.area() * N);
+            merged_[i].resize(M.area() * N);
             uint8_t background[N] = {};  // every channel `fill` (a depth layer's 1)
             const float fill = formats[i].depth ? 1.0f : layers[i].fill;
             if (formats[i].type == GL_FLOAT)
@@ -307,15 +318,12 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
                     const uint16_t half = glm::packHalf1x16(fill);
                     std::memcpy(&background[c * 2], &half, 2);
                 }
-            uint8_t* to = merged[i].data();
+            uint8_t* to = merged_[i].data();
             for (size_t p = 0; p < M.area(); ++p, to += N) {
                 const int q = winner_[p];
-                std::memcpy(to, q < 0 ? background : values[size_t(q)][i] + size_t(winnerAt_[p]) * N, N);
+                std::memcpy(to, q < 0 ? background : got.values[size_t(q)][i] + size_t(winnerAt_[p]) * N, N);
             }
         });
-
-    // On the GPU: what the last region held and this one does not is cleared; this piece's
-    // own layers over the region where only U is merged; the merge.
     for (size_t i = 0; i < layers.size(); ++i) {
         const PixelFormat& f = formats[i];
         if (!previous.empty() && !(previous == R) && layers[i].tile != layers[i].local) {
@@ -327,12 +335,17 @@ void ScreenTiles::distribute(ProcessGroup& group, const gl::Texture2D& depth, st
     }
     if (!(M == R)) copyOwn(layers, R);
     for (size_t i = 0; i < layers.size() && !M.empty(); ++i)
-        writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged[i].data());
+        writeRect(layers[i].tile, layers[i].layer, M, formats[i], merged_[i].data());
     written_ = M;
+}
+
+// The traffic's pixel counts: the tile, its guard, and the whole surface's pixels in the
+// region: the merge's in `M`, this piece's elsewhere (depth_ holds the footprint only).
+void ScreenTiles::countCovered(const PixelRect& fp, const PixelRect& M) {
+    const int w = viewport_.width;
+    const PixelRect& R = region_;
     traffic_.tilePixels = tile().area();
     traffic_.guardPixels = R.area() - tile().area();
-    // The whole surface's pixels in the region: the merge's in M, this piece's elsewhere
-    // (depth_ holds fp only).
     const auto ownCovered = [&](const PixelRect& r) {
         size_t count = 0;
         for (int y = r.y0; y < r.y1; ++y)
@@ -400,16 +413,14 @@ void ScreenTiles::pull(ProcessGroup& group, const gl::Texture2D& texture, const 
         const PixelRect r = want.intersect(madeWith[size_t(me)]);
         if (r.empty()) continue;
         std::vector<uint8_t>& out = sends[size_t(q)];
-        out.resize(16 + r.area() * f.bytes);
-        const int32_t header[4] = {r.x0, r.y0, r.x1, r.y1};
-        std::memcpy(out.data(), header, 16);
-        readRect(texture, r, f, out.data() + 16);
+        out.resize(tile_wire::historyBytes(r, f.bytes));
+        readRect(texture, r, f, tile_wire::putRect(out.data(), r));
         traffic_.bytesSent += out.size();
     }
     const std::vector<std::vector<uint8_t>> in = group.exchange(sends);
     for (int t = 0; t < n; ++t) {
         if (t == me || in[size_t(t)].empty()) continue;
-        Reader rd{in[size_t(t)]};
+        tile_wire::Reader rd{in[size_t(t)]};
         const PixelRect r = rd.rect();
         if (r.empty() || !(r.intersect(wanted) == r) || !(r.intersect(madeWith[size_t(t)]) == r))
             throw GlError("screen tiles: process " + std::to_string(t) + " sent history outside what was asked");
@@ -442,7 +453,7 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
             const float* depth = qd + indexIn(qr, r.x0, y);
             for (int i = 0; i < r.width(); ++i) count += depth[i] < 1.0f;
         }
-        out.resize(count * 4);
+        out.resize(tile_wire::returnBytes(count));
         if (out.empty()) continue;
         uint8_t* at = out.data();
         for (int y = r.y0; y < r.y1; ++y) {
@@ -468,7 +479,7 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
     for (int t = 0; t < n; ++t) {
         const PixelRect r = sent_[size_t(t)].intersect(tiles_[size_t(t)]);
         if (r.empty()) continue;
-        Reader rd{in[size_t(t)]};
+        tile_wire::Reader rd{in[size_t(t)]};
         if (t != me) traffic_.bytesReceived += in[size_t(t)].size();
         for (int y = r.y0; y < r.y1; ++y) {
             const float* depth = depth_.data() + size_t(y) * size_t(w) + size_t(r.x0);
@@ -481,7 +492,7 @@ void ScreenTiles::returnValues(ProcessGroup& group, const gl::Texture2D& values)
             }
             int count = 0;  // the row's covered pixels: their values are next in t's message
             for (int i = 0; i < r.width(); ++i) count += depth[i] < 1.0f;
-            const uint8_t* from = rd.take(size_t(count) * 4);
+            const uint8_t* from = rd.take(tile_wire::returnBytes(size_t(count)));
             for (int i = 0; i < r.width(); ++i)
                 if (depth[i] < 1.0f) {
                     std::memcpy(&to[i], from, 4);

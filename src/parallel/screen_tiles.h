@@ -37,6 +37,7 @@
 #include "parallel/process_group.h"
 #include "parallel/screen_split.h"
 #include "parallel/tile_traffic.h"
+#include "parallel/tile_wire.h"
 
 #include <algorithm>
 #include <chrono>
@@ -128,6 +129,27 @@ public:
     void beginFrame() { traffic_ = {}; }
 
 private:
+    using PixelFormat = tile_wire::PixelFormat;
+    // What distribute read from the other pieces: where each one's layers' values start
+    // ([process][layer]) and its depth, the box of all they sent, and where the merge runs.
+    struct Received {
+        std::vector<std::vector<const uint8_t*>> values;
+        std::vector<const float*> depthOf;
+        PixelRect others, merged;
+    };
+    // distribute's steps, in order.
+    static std::vector<PixelFormat> formatsOf(std::span<const TileLayer> layers);
+    void readDepth(const gl::Texture2D& depth, const PixelRect& footprint);
+    std::vector<float> coverage(const PixelRect& footprint, PixelRect& covered) const;
+    void split(ProcessGroup& group, std::vector<float> weight, int guardPx);
+    void writePieces(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats,
+                     const PixelRect& covered, int guardPx);
+    Received readPieces(const std::vector<std::vector<uint8_t>>& in, const std::vector<PixelFormat>& formats);
+    void mergeNearest(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats, Received& got,
+                      GLuint depth);
+    void writeMerge(std::span<const TileLayer> layers, const std::vector<PixelFormat>& formats, const Received& got,
+                    const PixelRect& previous);
+    void countCovered(const PixelRect& footprint, const PixelRect& merged);
     void copyOwn(std::span<const TileLayer> layers, const PixelRect& region);
 
     core::Viewport viewport_;
