@@ -60,8 +60,9 @@ public:
     // The same from a method's own buffers: Replicated: `whole` merged over the group by
     // `depth` (nearest fragment); Tiled: `tileLayers` distributed from `depth` drawn within
     // `footprint`.
-    void gather(const gl::Texture2D& depth, const PixelRect& footprint, std::initializer_list<const gl::Texture2D*> whole,
-                std::span<const TileLayer> tileLayers, int guardPx, gl::StageTimer& timer);
+    void gather(const gl::Texture2D& depth, const PixelRect& footprint,
+                std::initializer_list<const gl::Texture2D*> whole, std::span<const TileLayer> tileLayers, int guardPx,
+                gl::StageTimer& timer);
     // Where the stages read the whole surface's depth: Tiled, the merge target `i` (a
     // gather's layer fills it over the tile and guard); otherwise `own`, which holds it (the
     // whole image's after a replicated merge, or this process's alone). Also `own` when the

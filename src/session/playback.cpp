@@ -90,7 +90,8 @@ Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps
     Parts parts;
     parts.surface = std::make_unique<AnimatedSurface>(o, steps, group_);
     const methods::MethodParams params = parts.surface->paramsFor(o.params);
-    for (methods::Method m : shownViews(requestedViews_, o)) parts.methods.push_back(methods::makeRenderer(m, params, o.size, group_));
+    for (methods::Method m : shownViews(requestedViews_, o))
+        parts.methods.push_back(methods::makeRenderer(m, params, o.size, group_));
     for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
     if (o.topology) {
         // The overlay analyses the surface it is given: in a group that is one piece. ParaView's

@@ -107,10 +107,10 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
     // Tiles: the vertices this tile's pixels interpolate, the only ones it reads.
     const std::optional<PixelRect> tile = work_.tileOnly();
     const std::optional<PixelRect> vertices = tile ? std::optional(meshVertices(*tile)) : std::nullopt;
+    const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx, work_.group()) : 0.0f;
     const auto computeMesh = [&] {
         advectionMesh_.compute(velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth, in.camera,
-                               plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx, work_.group()) : 0.0f,
-                               params_.isa.edgeEpsilon, vertices);
+                               plan.sourceCamera, dt, params_.isa.edgeEpsilon, vertices);
     };
     computeMesh();
     if (tile) {
@@ -139,7 +139,8 @@ void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan) {
     const auto advected = ImageWork::Clock::now();
     if (!work_.tile().empty())
         textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
-                                flow_.fbo(target), params_.isa.edgeBlending, noise, work_.tileOnly().value_or(PixelRect{}));
+                                flow_.fbo(target), params_.isa.edgeBlending, noise,
+                                work_.tileOnly().value_or(PixelRect{}));
     current_ = target;
     // Tiles: the tile's cost; the owners keep their tiles of F_a for the next frame's pulls;
     // (4b) the contrast histogram of this tile, summed over the processes; F_a at this
