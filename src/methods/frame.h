@@ -27,10 +27,6 @@ struct FrameInput {
     // Unsteady data around this frame's data time, for methods that integrate through
     // time (usesTimeLevels()); null or empty: the surface's field is used throughout.
     const TimeLevels* levels = nullptr;
-    // The processes rendering this view together, each with its own piece of the surface
-    // (sort-last parallel rendering, process_group.h); null: this process alone. Each method
-    // merges its per-pixel buffers over the group by depth before its image-space stages.
-    ProcessGroup* group = nullptr;
     // The dye to show over the texture in the overlay (session::Playback's), or null.
     const DyeView* dye = nullptr;
 };
@@ -67,19 +63,9 @@ protected:
     gl::StageTimer timer_;
 };
 
-// True when `in` is one process's piece of a tiled parallel render (screen_tiles.h).
-bool tiledParallel(const FrameInput& in, const CommonParams& params);
-bool tiledParallel(const ProcessGroup* group, ParallelMode mode);
-// In a tiled parallel render, the pixels this process's piece can cover: the host shows
-// only those of its images (the other processes' fragments elsewhere), so its overlay
-// writes only those; none otherwise (every pixel).
-std::optional<PixelRect> piecePixels(const FrameInput& in, const CommonParams& params, const core::Viewport& viewport);
-
-// Throws ConfigError when `params` enhance the colour's contrast in a tiled parallel render:
-// its percentiles need the whole image's colours, made from each process's own shade.
-void checkContrastParallel(const FrameInput& in, const CommonParams& params);
-
-// Object-space time step so that the fastest vector moves at most stepPx pixels.
-float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx);
+// Object-space time step so that the fastest vector moves at most stepPx pixels. `group`:
+// the processes rendering this view together (ImageWork::group), each holding one piece.
+float dtForStep(const FrameInput& in, const core::Viewport& viewport, float stepPx,
+                const ProcessGroup* group = nullptr);
 
 }  // namespace flowsurf::methods

@@ -10,7 +10,8 @@
 namespace flowsurf::methods {
 
 namespace {
-std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params, const core::Viewport& viewport) {
+std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params, const core::Viewport& viewport,
+                                      ProcessGroup* group) {
     // Oriented LIC needs a kernel that is applied at once along the whole streamline; ISA's and
     // IBFVS's noise injection (eq. 9) blends over past frames instead, which weights a streak
     // most where the noise was injected last, at its upstream end.
@@ -21,12 +22,12 @@ std::unique_ptr<FlowMethod> construct(Method method, const MethodParams& params,
         throw ConfigError("--oriented on with --kernel box: the drops take the kernel's falloff from their head and a "
                           "box has none; use --kernel gaussian (the default), exponential or hann");
     switch (method) {
-        case Method::Isa: return std::make_unique<isa::IsaRenderer>(params, viewport);
-        case Method::Ibfvs: return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport);
+        case Method::Isa: return std::make_unique<isa::IsaRenderer>(params, viewport, group);
+        case Method::Ibfvs: return std::make_unique<ibfvs::IbfvsRenderer>(params, viewport, group);
         case Method::Hybrid:
             if (params.hybrid.noiseSize != 64 && params.hybrid.noiseSize != 128)
                 throw ConfigError("--noise-size must be 64 or 128");
-            return std::make_unique<hybrid::HybridRenderer>(params, viewport);
+            return std::make_unique<hybrid::HybridRenderer>(params, viewport, group);
     }
     throw ConfigError("unknown method");
 }
@@ -40,11 +41,12 @@ Method methodFromName(const std::string& name) {
 }
 
 std::unique_ptr<FlowMethod> makeMethod(const std::string& name, const MethodParams& params,
-                                       const core::Viewport& viewport) {
-    return makeRenderer(methodFromName(name), params, viewport);
+                                       const core::Viewport& viewport, ProcessGroup* group) {
+    return makeRenderer(methodFromName(name), params, viewport, group);
 }
 
-std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& params, const core::Viewport& viewport) {
+std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& params, const core::Viewport& viewport,
+                                         ProcessGroup* group) {
     const std::string name(nameOf(kMethodNames, method));
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -55,7 +57,7 @@ std::unique_ptr<FlowMethod> makeRenderer(Method method, const MethodParams& para
     }
     std::unique_ptr<FlowMethod> renderer;
     try {
-        renderer = construct(method, params, viewport);
+        renderer = construct(method, params, viewport, group);
     } catch (const GlError& e) {  // e.g. render targets without memory: say for what
         throw GlError(std::string(e.what()) + " setting up method " + name + " at " + std::to_string(viewport.width) +
                       "x" + std::to_string(viewport.height));

@@ -90,7 +90,8 @@ Playback::Parts Playback::make(const RenderOptions& o, core::StepProvider& steps
     Parts parts;
     parts.surface = std::make_unique<AnimatedSurface>(o, steps, group_);
     const methods::MethodParams params = parts.surface->paramsFor(o.params);
-    for (methods::Method m : shownViews(requestedViews_, o)) parts.methods.push_back(methods::makeRenderer(m, params, o.size));
+    for (methods::Method m : shownViews(requestedViews_, o))
+        parts.methods.push_back(methods::makeRenderer(m, params, o.size, group_));
     for (auto& m : parts.methods) m->timer().setEnabled(stageTiming_);
     if (o.topology) {
         // The overlay analyses the surface it is given: in a group that is one piece. ParaView's
@@ -285,7 +286,6 @@ void Playback::renderAll(const core::Camera& camera, double time, double perFram
             levelsRead = true;
         }
         methods::FrameInput in{&s, camera, k, m->usesTimeLevels() ? levels : nullptr};
-        in.group = group_;
         in.dye = dye_.view(camera, options_.size);
         m->renderFrame(in);
         if (quality_.plannedFrame()) quality_.collect(i, *m, s, camera, k);

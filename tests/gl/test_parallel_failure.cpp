@@ -86,7 +86,7 @@ std::vector<Outcome> runWithFailure(const std::string& method, int at) {
                 const methods::SurfaceStatistics whole =
                     methods::wholeSurfaceStatistics(group, piece, "velocity", params.common);
                 methods::SurfaceGpu surface(piece, "velocity", params.common, false, &whole);
-                auto renderer = methods::makeMethod(method, params, vp);
+                auto renderer = methods::makeMethod(method, params, vp, &faulty);
                 for (int k = 0; k < kFrames; ++k) {
                     const core::Camera c = core::orbitCamera(cam, 2.0f * float(k));  // every frame dynamic
                     if (k == kFailFrame && r == 1 && at >= 0) faulty.arm(at);
@@ -94,9 +94,7 @@ std::vector<Outcome> runWithFailure(const std::string& method, int at) {
                     std::string error;
                     try {
                         methods::collectiveSection(&group, [&] {
-                            methods::FrameInput in{&surface, c, uint32_t(k)};
-                            in.group = &faulty;
-                            renderer->renderFrame(in);
+                            renderer->renderFrame({&surface, c, uint32_t(k)});
                             if (k == kFailFrame && r == 1 && at < 0)
                                 throw GlError("the composite failed after the frame (injected)");
                         });

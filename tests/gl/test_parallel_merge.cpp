@@ -48,12 +48,8 @@ Images renderWith(const std::string& method, const core::SurfaceMesh& mesh,
     if (params.ibfvs.edgeMask) seams = methods::pieceSeams(group, mesh);
     methods::SurfaceGpu surface(mesh, "velocity", params.common, params.ibfvs.edgeMask, whole ? &*whole : nullptr,
                                 seams ? &*seams : nullptr);
-    auto m = methods::makeMethod(method, params, vp);
-    for (int k = 0; k <= frames; ++k) {
-        methods::FrameInput in{&surface, cameraAt(k), uint32_t(k)};
-        in.group = group;
-        m->renderFrame(in);
-    }
+    auto m = methods::makeMethod(method, params, vp, group);
+    for (int k = 0; k <= frames; ++k) m->renderFrame({&surface, cameraAt(k), uint32_t(k)});
     test::Rendered r = test::readBack(*m, vp);
     return {r.rgb, r.depth};
 }

@@ -9,29 +9,29 @@
 
 namespace flowsurf::methods::hybrid {
 
-HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport)
+HybridRenderer::HybridRenderer(const MethodParams& params, const core::Viewport& viewport, ProcessGroup* group)
     : params_(params),
       viewport_(viewport),
       seeds_(viewport, false, params.common.cullBackFaces, true, params.common.surfaceRaster),
       levels_(viewport, params.common.cullBackFaces),
       noise_(params.hybrid.noiseSize, params.hybrid.oriented),
       tracing_(params.hybrid, resolveGlPath(params.common.glPath)),
-      tail_(params.common, viewport),
+      // I needs no history; the contrast histogram, the whole surface's depth.
+      work_(viewport, params.common, group, 0, enhancesTexture(params.common.enhanceContrast) ? 1 : 0),
+      tail_(params.common, viewport, work_),
       lic_(GL_R32F, viewport),
-      composite_(GL_RGBA8, viewport),
-      work_(viewport, params.common, 0) {}  // I needs no history
+      composite_(GL_RGBA8, viewport) {}
 
 void HybridRenderer::renderFrame(const FrameInput& in) {
     const CommonParams& c = params_.common;
     timer_.beginFrame();
-    work_.beginFrame(in);
+    work_.beginFrame();
 
     // (1) seed textures: P-space velocity and layer depth per pixel (the seed position is
     // the surface point on the pixel ray at that depth) [W §4]; the static
     // case (same view, same data, same time levels) reuses them.
     const bool unsteady = in.levels && !in.levels->empty();
-    checkContrastParallel(in, c);
-    if (unsteady && work_.replicated())
+    if (unsteady && work_.mode() == ImageWork::Mode::Replicated)
         throw ConfigError("the hybrid method's unsteady time levels are merged over processes in the tiled mode only: "
                           "set parallel to tiles (FlowSurfParallel), or render each time step as steady");
     lastDynamic_ = !haveSeeds_ || in.surface->generation() != seedGeneration_ ||
@@ -43,19 +43,18 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     const float speedRef = in.surface->maxSpeed();
     if (lastDynamic_) {
         timer_.begin(stageName(Stage::SeedTextures));
-        seeds_.render(*in.surface, in.camera, work_.tiledGroup());  // tiles: what other pieces hide, skipped
+        seeds_.render(*in.surface, in.camera, work_.occluders());  // what other pieces hide, skipped
         // (1b) unsteady flow: the velocity image of every time level the particles pass
         // through, "the projection of the vector data within the integration loop" [W §3]
         if (unsteady) {
             timer_.begin(stageName(Stage::VelocityLevels));
             levels_.render(*in.surface, *in.levels, in.camera, c, speedRef);
         }
-        if (ProcessGroup* g = work_.replicated()) seeds_.merge(*g);  // the whole surface's seeds
         haveSeeds_ = true;
         seedGeneration_ = in.surface->generation();
         seedCamera_ = in.camera;
     }
-    if (work_.tiled() && (lastDynamic_ || work_.splitDue())) distributeTiles(unsteady);
+    if (lastDynamic_ || work_.splitDue()) gatherSeeds(unsteady);
     haveLevels_ = unsteady;
     if (unsteady) seedLevels_ = *in.levels;
 
@@ -73,32 +72,30 @@ void HybridRenderer::renderFrame(const FrameInput& in) {
     timer_.endFrame();
 }
 
-// The whole surface's seeds (and time levels) over this process's tile and the streaks'
-// reach; the seeds' depth decides every layer's nearest fragment. Also when the measured
-// costs call for a new split (a still camera). The velocity and the levels are merged in
+// The whole surface's seeds where this process traces: replicated, all of them on every
+// process; tiles, the seeds (and time levels) over this process's tile and the streaks'
+// reach, also when the measured costs call for a new split (a still camera). The seeds'
+// depth decides every layer's nearest fragment. The velocity and the levels are merged in
 // place: after the merge only the tracing reads them (the overlay reads this piece's depth,
 // shade and mask); the next seed pass clears what the merge wrote off this piece.
-void HybridRenderer::distributeTiles(bool unsteady) {
-    std::vector<TileLayer> layers{TileLayer::of(seeds_.velocity(), seeds_.velocity(), 0.0f, seeds_.clearsBackground())};
-    if (tail_.enhancesTexture()) {  // the contrast histogram counts the whole surface's pixels of the tile
-        if (!tileDepth_) tileDepth_ = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-        layers.push_back(TileLayer::of(seeds_.depth(), tileDepth_));
-    }
+void HybridRenderer::gatherSeeds(bool unsteady) {
+    std::vector<TileLayer> tileLayers{
+        TileLayer::of(seeds_.velocity(), seeds_.velocity(), 0.0f, seeds_.clearsBackground())};
+    if (tail_.enhancesTexture())  // the contrast histogram counts the whole surface's pixels of the tile
+        tileLayers.push_back(TileLayer::of(seeds_.depth(), work_.wholeDepth(0, seeds_.depth())));
     if (unsteady)
         for (int j = 0; j < levels_.count(); ++j)
-            layers.push_back(TileLayer::ofLayer(levels_.texture(), levels_.texture(), VelocityLevels::kFormat, j));
-    work_.distribute(seeds_.depth(), layers, guardPx(), seeds_.footprint(), timer_);
-    seeds_.overwritten(work_.written());
+            tileLayers.push_back(TileLayer::ofLayer(levels_.texture(), levels_.texture(), VelocityLevels::kFormat, j));
+    work_.gather(seeds_, tileLayers, guardPx(), timer_);
 }
 
 // Stage (3) into lic_: over the whole image, or (tiles) over this process's tile, whose
 // I then goes back to the processes whose fragments cover each pixel of it.
 void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, float speedRef) {
     const CommonParams& c = params_.common;
-    const PixelRect tile = work_.tile();
     TracingInput t;
     t.seedVelocity = &seeds_.velocity();
-    if (work_.tiled()) t.pixels = tile.empty() ? PixelRect{0, 0, 0, 0} : tile;
+    t.pixels = work_.tileOnly().value_or(PixelRect{});
     t.noise = noise_.texture();
     t.noiseSize = noise_.size();
     t.camera = in.camera;
@@ -113,14 +110,13 @@ void HybridRenderer::traceParticles(const FrameInput& in, bool unsteady, float s
         for (const TimeLevel& l : lv.levels) t.levelTimes.push_back(float(l.time - lv.frameTime));
         t.timePerStep = float(std::abs(lv.timePerStep));
     }
-    const auto traced = ScreenTiles::Clock::now();
-    if (!tile.empty()) tracing_.apply(t, params_.hybrid, lic_);
-    if (!work_.tiled()) return;
-    // The tile's cost (the return reads I back, so the wait costs nothing), then I back
-    // to the processes whose fragments cover each pixel of the tile.
-    work_.reportCost(ScreenTiles::finishedMs(traced));
-    // (3b, tiles) the contrast histogram of this tile, summed over the processes
-    tail_.measureTile(lic_.texture(), tileDepth_, tile, *in.group, timer_);
+    const auto traced = ImageWork::Clock::now();
+    if (!work_.tile().empty()) tracing_.apply(t, params_.hybrid, lic_);
+    // Tiles: the tile's cost (the return reads I back, so the wait costs nothing); (3b) the
+    // contrast histogram of this tile, summed over the processes; then I back to the
+    // processes whose fragments cover each pixel of the tile.
+    work_.finished(traced);
+    tail_.measureTile(lic_.texture(), work_.wholeDepth(0, seeds_.depth()), timer_);
     work_.returnValues(lic_.texture(), timer_);
 }
 

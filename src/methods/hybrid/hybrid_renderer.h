@@ -19,7 +19,8 @@ namespace flowsurf::methods::hybrid {
 
 class HybridRenderer final : public FlowMethod {
 public:
-    HybridRenderer(const MethodParams& params, const core::Viewport& viewport);
+    // `group`: the processes rendering this view together, for the renderer's life (ImageWork).
+    HybridRenderer(const MethodParams& params, const core::Viewport& viewport, ProcessGroup* group = nullptr);
     const char* name() const override { return nameOf(kMethodNames, Method::Hybrid).data(); }
     void renderFrame(const FrameInput& in) override;
     const gl::Texture2D& flowTexture() const override { return tail_.shown(lic_.texture()); }
@@ -40,6 +41,11 @@ private:
     VelocityLevels levels_;  // unsteady flow: the velocity image per time level [W §3]
     SolidNoise noise_;
     ParticleTracing tracing_;
+    // Whole image, replicated or tiled over processes; tiles: the seeds' velocity image and
+    // (unsteady) the time levels merged in place over this process's tile plus the streaks'
+    // reach (guardPx), with contrast enhancement the whole surface's depth there in
+    // ImageWork::wholeDepth 0.
+    ImageWork work_;
     DisplayTail tail_;  // contrast, lightness, overlay with its layers
     ColorTarget lic_;              // I, R32F
     ColorTarget composite_;        // RGBA8
@@ -48,14 +54,9 @@ private:
     core::Camera seedCamera_;
     bool haveLevels_ = false;
     TimeLevels seedLevels_;  // the levels the seed and velocity-level textures hold
-    // Whole image, replicated or tiled over processes; tiles: the seeds' velocity image and
-    // (unsteady) the time levels merged in place over this process's tile plus the streaks'
-    // reach (guardPx).
-    ImageWork work_;
-    gl::Texture2D tileDepth_;  // with contrast enhancement: the whole surface's depth over the tile
     int guardPx() const;
     // Stages of renderFrame (hybrid_renderer.cpp).
-    void distributeTiles(bool unsteady);
+    void gatherSeeds(bool unsteady);
     void traceParticles(const FrameInput& in, bool unsteady, float speedRef);
 };
 

@@ -18,7 +18,8 @@ namespace flowsurf::methods::ibfvs {
 
 class IbfvsRenderer final : public FlowMethod {
 public:
-    IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport);
+    // `group`: the processes rendering this view together, for the renderer's life (ImageWork).
+    IbfvsRenderer(const MethodParams& params, const core::Viewport& viewport, ProcessGroup* group = nullptr);
     const char* name() const override { return nameOf(kMethodNames, Method::Ibfvs).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
@@ -30,14 +31,20 @@ public:
     TileTraffic tileTraffic() const override { return work_.traffic(); }
 
 private:
-    // Tiles: stages (2)+(3) on this process's tile, after the draw of its piece (target:
-    // the F_a written; drawMs: what the draw took).
-    void advectTile(const FrameInput& in, const NoiseStep& noise, int target, float drawMs);
+    // The whole surface's buffers where this process's per-pixel work runs, after the draw
+    // of its piece (target: the F_a written).
+    void gatherDrawn(int target);
+    // Tiles: stages (2)+(3) on this process's tile (target: the F_a written; drawMs: what
+    // the draw took).
+    void advectTile(const NoiseStep& noise, int target, float drawMs);
 
     MethodParams params_;
     core::Viewport viewport_;
     gl::Texture2D shade_, mask_, depth_;  // written by the advection draw
     PolygonAdvection polygonAdvection_;
+    // Whole image, replicated or tiled over processes; tiles: the whole surface's depth over
+    // the tile in ImageWork::wholeDepth 0.
+    ImageWork work_;
     DisplayTail tail_;  // contrast, lightness, overlay with its layers
     EdgeMask edgeMask_;
     CameraMotion motion_;
@@ -47,8 +54,6 @@ private:
     uint64_t lastGeneration_ = 0;
     core::Camera lastCamera_;
     bool lastDynamic_ = false;
-    ImageWork work_;           // whole image, replicated or tiled over processes
-    gl::Texture2D tileDepth_;  // tiles: the whole surface's depth over the tile
 };
 
 }  // namespace flowsurf::methods::ibfvs

@@ -9,7 +9,7 @@
 
 namespace flowsurf::methods::isa {
 
-IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport)
+IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewport, ProcessGroup* group)
     : params_(params),
       viewport_(viewport),
       // Every ISA stage reads the velocity image's colours where its depth is < 1 only.
@@ -18,11 +18,11 @@ IsaRenderer::IsaRenderer(const MethodParams& params, const core::Viewport& viewp
       frozenDepth_(GL_DEPTH_COMPONENT32F, viewport.width, viewport.height, GL_NEAREST),
       advectionMesh_(viewport, params.isa.gridRes, resolveGlPath(params.common.glPath)),
       textureAdvection_(viewport, params.isa, params.common),
-      tail_(params.common, viewport),
+      work_(viewport, params.common, group, kDepthSlot + 3, 2),
+      tail_(params.common, viewport, work_),
       motion_(params.common.onCameraMove),
       flow_(viewport),
-      composite_(GL_RGBA8, viewport),
-      work_(viewport, params.common, kDepthSlot + 3) {}
+      composite_(GL_RGBA8, viewport) {}
 
 bool IsaRenderer::viewChanged(const FrameInput& in) const {
     return !haveCache_ || in.surface->generation() != cachedGeneration_ || !core::sameCamera(in.camera, cachedCamera_);
@@ -37,37 +37,32 @@ bool IsaRenderer::meshStale(const FrameInput& in, const MotionPlan& plan) const 
     return viewChanged(in) || !core::sameCamera(plan.sourceCamera, cachedSourceCamera_) || plan.advect != cachedAdvect_;
 }
 
-// The depth of the whole surface per velocity image: merged (tiles) or this render's.
-const gl::Texture2D& IsaRenderer::depthOf(int v, bool tiled) const {
-    return tiled ? mergedDepth_[v] : velocityImage_[v].depth();
-}
+// The depth of the whole surface per velocity image (where this process's stages run).
+const gl::Texture2D& IsaRenderer::depthOf(int v) const { return work_.wholeDepth(v, velocityImage_[v].depth()); }
 
 void IsaRenderer::renderFrame(const FrameInput& in) {
-    const CommonParams& c = params_.common;
     timer_.beginFrame();
-    work_.beginFrame(in);
+    work_.beginFrame();
 
     // Interaction remedy [L §IV-I]: which view the source texture was made in.
     const MotionPlan plan = motion_.plan(in.camera);
-    const bool tiled = work_.tiled();
-    checkContrastParallel(in, c);
     if (plan.freezeStarts) {  // keep where the frozen texture was made
-        glCopyImageSubData(depthOf(vi_, tiled).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(),
-                           GL_TEXTURE_2D, 0, 0, 0, 0, viewport_.width, viewport_.height, 1);
+        glCopyImageSubData(depthOf(vi_).id(), GL_TEXTURE_2D, 0, 0, 0, 0, frozenDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                           viewport_.width, viewport_.height, 1);
         work_.copied(kDepthSlot + vi_, kDepthSlot + 2);
     }
     if (plan.advect || plan.freezeStarts) source_ = current_;
 
     // Dynamic case [L Table II]: view, geometry or data changed (and the frame after, whose
-    // source view changed), or the measured costs call for a new split of the tiles:
+    // source view changed), or the measured costs call for a new split of the work:
     // (1) velocity image and (2) advection mesh. Static: reuse them.
     const bool resplit = work_.splitDue() && !viewChanged(in);
     lastDynamic_ = meshStale(in, plan) || resplit;
-    if (lastDynamic_) updateMesh(in, plan, tiled, resplit);
+    if (lastDynamic_) updateMesh(in, plan, resplit);
 
     // (3) texture advection with edge blending [L §IV-D.1, §IV-E.1] and
     // (4) noise injection and blending on the surface only [L eq. 9], one pass
-    advectTexture(in, plan, tiled);
+    advectTexture(in, plan);
 
     // (4b) contrast enhancement, display only [doc/contrast.md]: the advection goes on
     // from F_a itself, and (5) overlay with texture clipping and velocity mask [L eq. 10, Fig. 10]
@@ -76,55 +71,53 @@ void IsaRenderer::renderFrame(const FrameInput& in) {
     timer_.endFrame();
 }
 
-// Tiles: the whole surface's velocity and depth over this tile plus a grid cell.
-void IsaRenderer::distributeTiles() {
-    if (!mergedDepth_[0])
-        for (gl::Texture2D& d : mergedDepth_)
-            d = gl::Texture2D(GL_DEPTH_COMPONENT32F, viewport_.width, viewport_.height, GL_NEAREST);
-    const SurfaceGBuffer& v = velocityImage_[vi_];
-    // The advection mesh reads the velocity where the merged depth is < 1 only: this piece's
-    // own stands for the background (the velocity image does not clear it), and the merge
-    // goes into it (the overlay reads this piece's depth, shade and mask, not its velocity).
-    const TileLayer layers[] = {TileLayer::of(v.velocity(), v.velocity(), 0.0f, true),
-                                TileLayer::of(v.depth(), mergedDepth_[vi_])};
-    work_.distribute(v.depth(), layers, guardPx(), v.footprint(), timer_);
+// The whole surface's velocity image where this process advects: replicated, all of it on
+// every process; tiles, its velocity and depth over this tile plus a grid cell.
+void IsaRenderer::gatherVelocity() {
+    SurfaceGBuffer& v = velocityImage_[vi_];
+    // The advection mesh reads the velocity where the whole surface's depth is < 1 only: this
+    // piece's own stands for the background (the velocity image does not clear it), and the
+    // tile's merge goes into it (the overlay reads this piece's depth, shade and mask, not its
+    // velocity).
+    const TileLayer tileLayers[] = {TileLayer::of(v.velocity(), v.velocity(), 0.0f, true),
+                                    TileLayer::of(v.depth(), depthOf(vi_))};
+    work_.gather(v, tileLayers, guardPx(), timer_);
     work_.made(kDepthSlot + vi_);
 }
 
-// Stages (1) and (2) of the dynamic case; `resplit`: the view is the same, only the tiles
-// are split again (from the same velocity image).
-void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit) {
+// Stages (1) and (2) of the dynamic case; `resplit`: the view is the same, only the work is
+// split again (from the same velocity image).
+void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool resplit) {
     const CommonParams& c = params_.common;
     const int prevVi = vi_;
-    if (viewChanged(in)) {
+    const bool newView = viewChanged(in);
+    if (newView) {
         vi_ = 1 - vi_;
         // (1) velocity image: mesh with per-vertex velocity, nearest layer [L §IV-C.1]
         timer_.begin(stageName(Stage::VelocityImage));
-        velocityImage_[vi_].render(*in.surface, in.camera, work_.tiledGroup());
-        if (tiled) distributeTiles();
-        else if (ProcessGroup* g = work_.replicated()) velocityImage_[vi_].merge(*g);  // the whole surface's image
-    } else if (resplit) {
-        distributeTiles();
+        velocityImage_[vi_].render(*in.surface, in.camera, work_.occluders());
     }
+    if (newView || resplit) gatherVelocity();
 
     // (2) advection mesh + edge detection [L §IV-D.1, eq. 12, eq. 14]
     timer_.begin(stageName(Stage::AdvectionMesh));
     const bool sameView = core::sameCamera(plan.sourceCamera, in.camera);
     const int sourceVi = !plan.advect ? 2 : sameView ? vi_ : prevVi;  // 2: the frozen depth
-    const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi, tiled);
+    const gl::Texture2D& sourceDepth = sourceVi == 2 ? frozenDepth_ : depthOf(sourceVi);
     // Tiles: the vertices this tile's pixels interpolate, the only ones it reads.
-    const std::optional<PixelRect> vertices = tiled ? std::optional(meshVertices(work_.tile())) : std::nullopt;
+    const std::optional<PixelRect> tile = work_.tileOnly();
+    const std::optional<PixelRect> vertices = tile ? std::optional(meshVertices(*tile)) : std::nullopt;
+    const float dt = plan.advect ? dtForStep(in, viewport_, c.stepPx, work_.group()) : 0.0f;
     const auto computeMesh = [&] {
-        advectionMesh_.compute(velocityImage_[vi_].velocity(), depthOf(vi_, tiled), sourceDepth,
-                               in.camera, plan.sourceCamera, plan.advect ? dtForStep(in, viewport_, c.stepPx) : 0.0f,
-                               params_.isa.edgeEpsilon, vertices);
+        advectionMesh_.compute(velocityImage_[vi_].velocity(), depthOf(vi_), sourceDepth, in.camera,
+                               plan.sourceCamera, dt, params_.isa.edgeEpsilon, vertices);
     };
     computeMesh();
-    if (tiled) {
+    if (tile) {
         // The edge test reads the source depth where the flow came from: the mesh's
         // footprint, known once it is computed (its coordinates do not depend on that
         // depth); that part of the depth from its makers, then the mesh again.
-        footprint_ = footprint(work_.tile());
+        footprint_ = footprint(*tile);
         if (work_.pull(kDepthSlot + sourceVi, sourceDepth, footprint_, timer_, Stage::AdvectionMesh)) computeMesh();
     }
     haveCache_ = true;
@@ -137,25 +130,24 @@ void IsaRenderer::updateMesh(const FrameInput& in, const MotionPlan& plan, bool 
 // Stages (3) and (4): F_a(k) from F_a(k-1) through the advection mesh, with the noise.
 // Tiles: on this tile only, the source from its makers; the result returned to the
 // processes whose pieces cover each pixel.
-void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled) {
+void IsaRenderer::advectTexture(const FrameInput& in, const MotionPlan& plan) {
     const CommonParams& c = params_.common;
     const int target = 1 - source_;
     timer_.begin(stageName(Stage::TextureAdvection));
     const NoiseStep noise{in.frame, plan.advect ? c.alpha : 0.0f, c.noise};
     work_.pull(source_, flow_.texture(source_), footprint_, timer_, Stage::TextureAdvection);
-    const auto advected = ScreenTiles::Clock::now();
+    const auto advected = ImageWork::Clock::now();
     if (!work_.tile().empty())
-        textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_, tiled),
-                                flow_.texture(target), flow_.fbo(target), params_.isa.edgeBlending, noise,
-                                tiled ? work_.tile() : PixelRect{});
+        textureAdvection_.apply(advectionMesh_.vertices(), flow_.texture(source_), depthOf(vi_), flow_.texture(target),
+                                flow_.fbo(target), params_.isa.edgeBlending, noise,
+                                work_.tileOnly().value_or(PixelRect{}));
     current_ = target;
-    if (!tiled) return;
-    // The tile's cost; the owners keep their tiles of F_a for the next frame's pulls.
-    work_.reportCost(ScreenTiles::finishedMs(advected));
+    // Tiles: the tile's cost; the owners keep their tiles of F_a for the next frame's pulls;
+    // (4b) the contrast histogram of this tile, summed over the processes; F_a at this
+    // piece's own pixels (what its overlay shows) from their tiles' owners.
+    work_.finished(advected);
     work_.made(target);
-    // (4b, tiles) the contrast histogram of this tile, summed over the processes
-    tail_.measureTile(flow_.texture(target), depthOf(vi_, tiled), work_.tile(), *in.group, timer_);
-    // F_a at this piece's own pixels (what its overlay shows) from their tiles' owners.
+    tail_.measureTile(flow_.texture(target), depthOf(vi_), timer_);
     work_.returnValues(flow_.texture(target), timer_);
 }
 

@@ -19,7 +19,8 @@ namespace flowsurf::methods::isa {
 
 class IsaRenderer final : public FlowMethod {
 public:
-    IsaRenderer(const MethodParams& params, const core::Viewport& viewport);
+    // `group`: the processes rendering this view together, for the renderer's life (ImageWork).
+    IsaRenderer(const MethodParams& params, const core::Viewport& viewport, ProcessGroup* group = nullptr);
     const char* name() const override { return nameOf(kMethodNames, Method::Isa).data(); }
     void renderFrame(const FrameInput& in) override;
     // F_a, or its contrast stretch when the texture is enhanced (what the overlay shows).
@@ -34,10 +35,10 @@ private:
     bool viewChanged(const FrameInput& in) const;  // the velocity image is stale
     bool meshStale(const FrameInput& in, const MotionPlan& plan) const;
     // The stages of renderFrame (isa_renderer.cpp).
-    void updateMesh(const FrameInput& in, const MotionPlan& plan, bool tiled, bool resplit);
-    void advectTexture(const FrameInput& in, const MotionPlan& plan, bool tiled);
-    void distributeTiles();
-    const gl::Texture2D& depthOf(int v, bool tiled) const;
+    void updateMesh(const FrameInput& in, const MotionPlan& plan, bool resplit);
+    void gatherVelocity();
+    void advectTexture(const FrameInput& in, const MotionPlan& plan);
+    const gl::Texture2D& depthOf(int v) const;
 
     MethodParams params_;
     core::Viewport viewport_;
@@ -48,6 +49,16 @@ private:
     gl::Texture2D frozenDepth_;  // depth at the start of a freeze
     AdvectionMesh advectionMesh_;
     TextureAdvection textureAdvection_;
+    // Whole image, replicated or tiled over processes. Tiles: this process advects its own
+    // tile. The velocity image merged in place over the tile plus one grid cell (the mesh
+    // vertices it interpolates; nothing reads this piece's own velocity after the merge),
+    // the whole surface's depth per velocity image over the same (ImageWork::wholeDepth 0
+    // and 1; and, where the edge test reads it as the source depth, over the mesh's
+    // footprint, pulled from its makers), and of F_a the tile and what its pixels read
+    // (pulled each frame). History slots: F_a 0 and 1, then (kDepthSlot +) the whole
+    // surface's depth of velocity image 0, 1 and frozenDepth_.
+    static constexpr int kDepthSlot = 2;
+    ImageWork work_;
     DisplayTail tail_;  // contrast, lightness, overlay with its layers
     CameraMotion motion_;
     FlowPingPong flow_;           // F_a, R32F
@@ -59,16 +70,6 @@ private:
     core::Camera cachedCamera_, cachedSourceCamera_;
     bool cachedAdvect_ = true;
     bool lastDynamic_ = false;
-    // Whole image, replicated or tiled over processes. Tiles: this process advects its own
-    // tile. The velocity image merged in place over the tile plus one grid cell (the mesh
-    // vertices it interpolates; nothing reads this piece's own velocity after the merge),
-    // the whole surface's depth per velocity image over the same (and, where the edge test
-    // reads it as the source depth, over the mesh's footprint, pulled from its makers), and
-    // of F_a the tile and what its pixels read (pulled each frame). History slots: F_a 0
-    // and 1, then (kDepthSlot +) mergedDepth_[0], [1] and frozenDepth_.
-    static constexpr int kDepthSlot = 2;
-    ImageWork work_;
-    gl::Texture2D mergedDepth_[2];
     PixelRect footprint_;  // this tile's footprint in the source F_a
     PixelRect meshVertices(const PixelRect& tile) const;
     PixelRect footprint(const PixelRect& tile) const;
