@@ -59,7 +59,7 @@ double columnMs(const BenchRow& r, const Column& c) {
 // renders of a dynamic frame from cameras between it and the next, so all stay dynamic.
 BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool dynamic, int frames,
                   bool stageTimes, int renders) {
-    methods::FlowMethod& method = playback.view(0);
+    methods::FlowMethod& method = *playback.views()[0];
     auto frame = [&](int k) {
         for (int r = 0; r < renders; ++r) {
             const float degrees = 0.5f * (float(k) + float(r) / float(renders));

@@ -34,7 +34,7 @@ int runQuality(const RenderOptions& o, const std::string& methodList, const Qual
         playback.onFrame([&] { progress.update(++done); });
         const double ms = advanceMeasured(playback, o.frames, q.every, true);
         progress.finish();
-        results.push_back({playback.view(0).name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
+        results.push_back({playback.views()[0]->name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
     }
     if (!o.quiet)
         std::fprintf(stderr, "flowsurf: %s, %dx%d, %d frames after the warm-up, measured every %d; %s\n",

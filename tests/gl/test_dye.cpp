@@ -168,7 +168,7 @@ TEST_P(DyeMethods, BlobUnderAnOrbitingCameraOnEveryMethodAndPath) {
         int w = 0, h = 0;
         images[path] = p.readImage(&w, &h);
         // Dye never off the surface: where the depth says background, the background colour.
-        const std::vector<float> depth = gl::readDepth(p.view(0).surfaceDepth());  // rows bottom to top
+        const std::vector<float> depth = gl::readDepth(p.views()[0]->surfaceDepth());  // rows bottom to top
         const std::vector<uint8_t>& img = images[path];
         size_t off = 0;
         for (int y = 0; y < h; ++y)

@@ -61,7 +61,7 @@ Images playHybrid(core::StepProvider& steps, double perFrame, int frames, method
     Images im;
     int w = 0, h = 0;
     im.rgb = p.readImage(&w, &h);
-    im.depth = gl::readDepth(p.view(0).surfaceDepth());
+    im.depth = gl::readDepth(p.views()[0]->surfaceDepth());
     return im;
 }
 
@@ -131,7 +131,7 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
     Images im;
     int w = 0, h = 0;
     im.rgb = p.readImage(&w, &h);
-    im.depth = gl::readDepth(p.view(0).surfaceDepth());
+    im.depth = gl::readDepth(p.views()[0]->surfaceDepth());
     return im;
 }
 

@@ -31,7 +31,7 @@ std::vector<uint8_t> image(const session::Playback& p) {
 TEST(PlaybackOptions, ClosedPlaybackTakesEveryOptionAndRendersNothing) {
     session::Playback p(smallOptions());
     EXPECT_FALSE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 0u);
+    EXPECT_EQ(p.views().size(), 0u);
     EXPECT_EQ(p.frame(), 0);
     // Closed, the input's options are options like the others.
     EXPECT_EQ(p.set("input", "builtin:torus"), session::OptionEffect::Reload);
@@ -49,12 +49,12 @@ TEST(PlaybackOptions, OpenRefusesTheInputsOptionsUntilClosed) {
     session::Playback p(smallOptions());
     p.open(steps);
     EXPECT_TRUE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 1u);
+    EXPECT_EQ(p.views().size(), 1u);
     EXPECT_THROW(p.set("input", "builtin:torus"), ConfigError);
     EXPECT_EQ(p.options().input, "builtin:sphere:2000");
     p.close();
     EXPECT_FALSE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 0u);
+    EXPECT_EQ(p.views().size(), 0u);
     EXPECT_NO_THROW(p.set("input", "builtin:sphere:2000"));
 }
 

@@ -27,7 +27,7 @@ std::set<std::string> timedStages(const std::string& input, const std::string& m
     p.start(false);
     for (int f = 0; f < 3; ++f) p.advance();
     std::set<std::string> names;
-    for (const auto& [name, ms] : p.view(0).timer().meanMs()) names.insert(name);
+    for (const auto& [name, ms] : p.views()[0]->timer().meanMs()) names.insert(name);
     return names;
 }
 
