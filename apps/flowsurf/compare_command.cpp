@@ -59,7 +59,8 @@ int runCompare(const RenderOptions& o, const std::string& methodList, const Qual
     std::vector<MethodQuality> qualities;
     for (size_t m = 0; m < names.size(); ++m) {
         // One method at a time, each timed alone; each sees the same data times.
-        Playback playback(o, *steps, {names[m]});
+        Playback playback(o, {names[m]});
+        playback.open(*steps);
         playback.onFrame([&] { progress.update(++done); });
         double ms = 0.0;
         if (quality.file.empty()) {

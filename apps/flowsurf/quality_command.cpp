@@ -27,7 +27,8 @@ int runQuality(const RenderOptions& o, const std::string& methodList, const Qual
 
     std::vector<MethodQuality> results;
     for (methods::Method name : names) {
-        Playback playback(o, *steps, {name});
+        Playback playback(o, {name});
+        playback.open(*steps);
         const int total = playback.warmupFrames() + o.frames + 1;
         ProgressBar progress("quality " + std::string(methods::nameOf(methods::kMethodNames, name)), total, !o.quiet);
         int done = 0;

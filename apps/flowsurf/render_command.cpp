@@ -116,7 +116,8 @@ int runRender(const RenderOptions& o, const QualityOutput& quality) {
     std::unique_ptr<core::StepProvider> steps = io::openInput(o.input, sourceOptions(o));
     (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
-    Playback playback(o, *steps);
+    Playback playback(o);
+    playback.open(*steps);
     if (!quality.file.empty()) playback.quality().configure(quality.every);
     if (!o.quiet && o.verbose) describeInput(o, playback);
 

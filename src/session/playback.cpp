@@ -13,12 +13,6 @@ namespace flowsurf::session {
 Playback::Playback(const RenderOptions& o, std::vector<methods::Method> views, methods::ProcessGroup* group)
     : options_(o), group_(group), requestedViews_(std::move(views)), dye_(group) {}
 
-Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
-                   methods::ProcessGroup* group)
-    : Playback(o, std::move(views), group) {
-    open(steps);
-}
-
 Playback::~Playback() = default;
 
 // --- steps -----------------------------------------------------------------------------------

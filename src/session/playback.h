@@ -40,9 +40,6 @@ public:
     // processes rendering this view together (ParaView under MPI), or null.
     explicit Playback(const RenderOptions& o = {}, std::vector<methods::Method> views = {},
                       methods::ProcessGroup* group = nullptr);
-    // As above, and open(steps) at once.
-    Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views = {},
-             methods::ProcessGroup* group = nullptr);
     ~Playback();
     Playback(const Playback&) = delete;
     Playback& operator=(const Playback&) = delete;

@@ -62,7 +62,8 @@ TEST(PlaybackOptions, ReopenedPlaybackRendersAsANewOne) {
     core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:2000"));
     session::RenderOptions o = smallOptions();
     session::setOption(o, "dye", "0,0,1:0.2:red");
-    session::Playback fresh(o, steps);
+    session::Playback fresh(o);
+    fresh.open(steps);
     fresh.still(4);
     const std::vector<uint8_t> expected = image(fresh);
 
@@ -109,7 +110,8 @@ TEST(PlaybackOptions, ReopenKeepsWhatItHadWhenTheNewDataFails) {
     EXPECT_EQ(p.frame(), 0);
     EXPECT_EQ(p.clock(), 0u);
     p.still(2);
-    session::Playback fresh(good, plane);
+    session::Playback fresh(good);
+    fresh.open(plane);
     fresh.still(2);
     EXPECT_EQ(image(p), image(fresh));
 }

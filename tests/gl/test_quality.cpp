@@ -245,8 +245,8 @@ struct Orbiting {
         options.size = {128, 128};
         options.orbit = 2.0f;
         options.params.common.noise.seed = 7;
-        playback = std::make_unique<session::Playback>(options, steps,
-                                                       std::vector{methods::Method::Isa, methods::Method::Hybrid});
+        playback = std::make_unique<session::Playback>(options, std::vector{methods::Method::Isa, methods::Method::Hybrid});
+        playback->open(steps);
         playback->quality().configure(every);
         playback->start(true);
         for (int f = 0; f < 12; ++f) playback->advance();

@@ -301,8 +301,11 @@ bool vtkFlowSurfMapper::Internals::updatePlayback(const fs::core::Viewport& size
       else if (!playback || dataChanged)
       {
         playback.reset();
-        playback =
-          std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, frameGroup.get());
+        // Kept only once open: a playback that failed to open is not kept.
+        auto opened =
+          std::make_unique<fs::session::Playback>(o, std::vector<fs::methods::Method>{}, frameGroup.get());
+        opened->open(steps);
+        playback = std::move(opened);
         warmup = true;
       }
       else
