@@ -59,7 +59,7 @@ double columnMs(const BenchRow& r, const Column& c) {
 // renders of a dynamic frame from cameras between it and the next, so all stay dynamic.
 BenchRow timeCase(session::Playback& playback, const core::Camera& camera0, bool dynamic, int frames,
                   bool stageTimes, int renders) {
-    methods::FlowMethod& method = playback.view(0);
+    methods::FlowMethod& method = *playback.views()[0];
     auto frame = [&](int k) {
         for (int r = 0; r < renders; ++r) {
             const float degrees = 0.5f * (float(k) + float(r) / float(renders));
@@ -130,7 +130,8 @@ std::vector<BenchRow> timeRanks(const std::vector<core::SurfaceMesh>& pieces, co
                 methods::collectiveSection(&agreeing, [&] {
                     gl::HeadlessContext context;
                     core::DatasetSteps steps(core::Dataset{"bench slab " + std::to_string(r), {{0.0, pieces[size_t(r)]}}});
-                    session::Playback playback(options, steps, {}, &agreeing);
+                    session::Playback playback(options, {}, &agreeing);
+                    playback.open(steps);
                     perRank[size_t(r)] = timeCases(playback, camera, o, renders);
                 });
             } catch (...) {
@@ -251,7 +252,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
                         const int renders = m == o.slowdownMethod ? o.slowdownFactor : 1;
                         std::vector<BenchRow> cases;
                         if (ranks == 1) {
-                            session::Playback playback(options, steps);
+                            session::Playback playback(options);
+                            playback.open(steps);
                             cases = timeCases(playback, camera, o, renders);
                         } else {
                             if (!pieces.count(ranks)) pieces[ranks] = slabs(steps.load(0), ranks);

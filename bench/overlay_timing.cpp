@@ -67,7 +67,7 @@ int main(int argc, char** argv) try {
         const core::Camera camera = playback.lastFrame().camera;
         glFinish();
         t0 = Clock::now();
-        for (int f = 0; f < frames; ++f) overlay.draw(playback.view(0), camera, 0.0);
+        for (int f = 0; f < frames; ++f) overlay.draw(*playback.views()[0], camera, 0.0);
         overlayMs.push_back(msSince(t0, frames));
     }
     const skeleton::Skeleton& s = overlay.current();

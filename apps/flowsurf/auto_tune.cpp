@@ -97,7 +97,8 @@ int runAutoTune(const RenderOptions& o, const std::string& methodList, const Qua
         for (const auto& values : grid) {
             RenderOptions oc = o;
             for (size_t a = 0; a < axes.size(); ++a) setOption(oc, axes[a].option, values[a]);
-            Playback playback(oc, *steps, {name});
+            Playback playback(oc, {name});
+            playback.open(*steps);
             Trial t;
             t.values = values;
             t.ms = advanceMeasured(playback, oc.frames, q.every, true);

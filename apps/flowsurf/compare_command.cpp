@@ -59,7 +59,8 @@ int runCompare(const RenderOptions& o, const std::string& methodList, const Qual
     std::vector<MethodQuality> qualities;
     for (size_t m = 0; m < names.size(); ++m) {
         // One method at a time, each timed alone; each sees the same data times.
-        Playback playback(o, *steps, {names[m]});
+        Playback playback(o, {names[m]});
+        playback.open(*steps);
         playback.onFrame([&] { progress.update(++done); });
         double ms = 0.0;
         if (quality.file.empty()) {
@@ -72,9 +73,9 @@ int runCompare(const RenderOptions& o, const std::string& methodList, const Qual
                  (o.frames + 1);
         } else {
             ms = advanceMeasured(playback, o.frames, quality.every, false);  // as above: no warm-up
-            qualities.push_back({playback.view(0).name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
+            qualities.push_back({playback.views()[0]->name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
         }
-        const methods::FlowMethod* method = &playback.view(0);
+        const methods::FlowMethod* method = playback.views()[0].get();
         std::vector<uint8_t> img = gl::readRgb8TopDown(method->composite());
         const int x0 = int(m) * (o.size.width + gap);
         for (int y = 0; y < o.size.height; ++y)

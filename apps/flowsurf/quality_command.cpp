@@ -27,14 +27,15 @@ int runQuality(const RenderOptions& o, const std::string& methodList, const Qual
 
     std::vector<MethodQuality> results;
     for (methods::Method name : names) {
-        Playback playback(o, *steps, {name});
+        Playback playback(o, {name});
+        playback.open(*steps);
         const int total = playback.warmupFrames() + o.frames + 1;
         ProgressBar progress("quality " + std::string(methods::nameOf(methods::kMethodNames, name)), total, !o.quiet);
         int done = 0;
         playback.onFrame([&] { progress.update(++done); });
         const double ms = advanceMeasured(playback, o.frames, q.every, true);
         progress.finish();
-        results.push_back({playback.view(0).name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
+        results.push_back({playback.views()[0]->name(), ms, playback.quality().frames(0), playback.quality().summary(0)});
     }
     if (!o.quiet)
         std::fprintf(stderr, "flowsurf: %s, %dx%d, %d frames after the warm-up, measured every %d; %s\n",

@@ -13,6 +13,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -37,7 +38,7 @@ int listBuiltins() {
 void describeInput(const RenderOptions& o, Playback& playback) {
     AnimatedSurface& surface = playback.surface();
     std::fprintf(stderr, "flowsurf: %s, field '%s', %zu triangles, method %s%s\n", o.input.c_str(),
-                 surface.field().c_str(), surface.at(0).triangleCount(), playback.view(0).name(),
+                 surface.field().c_str(), surface.at(0).triangleCount(), playback.views()[0]->name(),
                  surface.unsteady() ? ", time series" : "");
     const methods::SurfaceGpu& first = surface.at(0);
     std::fprintf(stderr, "flowsurf: colour %s over %g:%g (--color-range %s; values span %g:%g)\n",
@@ -51,7 +52,8 @@ void describeInput(const RenderOptions& o, Playback& playback) {
 int renderStill(const RenderOptions& o, const QualityOutput& quality, Playback& playback) {
     // A history-free frame alone; with --quality also the one before it (correlations).
     const int total = o.frames + 1;
-    const int stillFrames = !playback.historyFree() ? total : quality.file.empty() ? 1 : std::min(2, total);
+    const bool historyFree = std::ranges::all_of(playback.views(), [](const auto& m) { return m->historyFree(); });
+    const int stillFrames = !historyFree ? total : quality.file.empty() ? 1 : std::min(2, total);
     int rendered = 0;
     ProgressBar progress("render", stillFrames, !o.quiet);
     playback.onFrame([&] { progress.update(++rendered); });
@@ -77,7 +79,7 @@ int renderMovie(const RenderOptions& o, Playback& playback) {
     playback.start(true);
     for (int k = 0; k < o.frames; ++k) {
         playback.advance();
-        const gl::Texture2D& image = playback.view(0).composite();
+        const gl::Texture2D& image = playback.views()[0]->composite();
         if (video) video->addFrame(gl::readRgb8TopDown(image));
         else io::writePngRgb8(sequenceName(o.output, k), o.size.width, o.size.height, 3, gl::readRgb8TopDown(image));
         if (playback.surface().unsteady()) progress.update(rendered, "t = " + std::to_string(playback.lastFrame().time));
@@ -89,7 +91,7 @@ int renderMovie(const RenderOptions& o, Playback& playback) {
 
 // The final PNG, the flow texture and the quality log, after the frames.
 void writeOutputs(const RenderOptions& o, const QualityOutput& quality, Playback& playback) {
-    const methods::FlowMethod& method = playback.view(0);
+    const methods::FlowMethod& method = *playback.views()[0];
     if (outputKind(o.output) == OutputKind::Png)
         io::writePngRgb8(o.output, o.size.width, o.size.height, 3, gl::readRgb8TopDown(method.composite()));
     if (!o.flowTexture.empty())
@@ -114,7 +116,8 @@ int runRender(const RenderOptions& o, const QualityOutput& quality) {
     std::unique_ptr<core::StepProvider> steps = io::openInput(o.input, sourceOptions(o));
     (void)FrameCameras(o, steps->bounds());  // a bad camera path fails before the context is made
     gl::HeadlessContext context(o.verbose);
-    Playback playback(o, *steps);
+    Playback playback(o);
+    playback.open(*steps);
     if (!quality.file.empty()) playback.quality().configure(quality.every);
     if (!o.quiet && o.verbose) describeInput(o, playback);
 

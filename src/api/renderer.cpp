@@ -67,7 +67,7 @@ struct Renderer::Impl {
 
     const methods::FlowMethod& rendered() const {
         if (playback.frame() == 0) throw ConfigError("nothing rendered yet: call render() or advance() first");
-        return playback.view(0);
+        return *playback.views()[0];
     }
 };
 
@@ -220,7 +220,7 @@ void Renderer::advance() {
     Impl::Scope scope(*impl_);
     session::Playback& p = impl_->playback;
     if (!p.isOpen()) throw ConfigError("advance: call begin(surface) or render(surface, frames) first");
-    for (size_t i = 0; i < p.viewCount(); ++i) p.view(i).timer().reset();
+    for (const auto& m : p.views()) m->timer().reset();
     p.advance();
 }
 
@@ -254,7 +254,7 @@ void Renderer::readFlowTexture16(uint16_t* values) const {
 std::vector<std::pair<std::string, double>> Renderer::stageMs() const {
     if (!impl_->playback.isOpen()) return {};
     Impl::Scope scope(*impl_);  // the timer reads its GPU queries
-    return impl_->playback.view(0).timer().meanMs();
+    return impl_->playback.views()[0]->timer().meanMs();
 }
 
 void Renderer::setQualityEvery(int every) {
@@ -268,7 +268,9 @@ Quality Renderer::quality() const {
     session::Playback& p = impl_->playback;
     Quality q;
     if (p.quality().frames(0).empty()) {
-        const quality::FrameQuality now = p.measureLastFrame(0);
+        const session::Playback::Drawn& last = p.lastFrame();
+        const quality::FrameQuality now =
+            p.quality().measure(0, *p.views()[0], p.surface().atTime(last.time), last.camera, last.clock);
         q.frames = 1;
         q.median = q.worst = toPublic(now);
         return q;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "io/source_options.h"
 
 #include <string>
 #include <vector>
@@ -15,19 +16,6 @@ struct ReadOptions {
     // Read only the first this many time steps (0 = all); every step read stays in the
     // Dataset. A long series is better opened with openInput, which loads steps on demand.
     size_t maxSteps = 0;
-};
-
-// How a file made of parts is read (OpenFOAM cases, CGNS files).
-struct SourceOptions {
-    std::string patches;            // boundary patches to read: a regular expression on the name (CGNS: or the
-                                    // family); empty: the walls (OpenFOAM's wall-type patches, CGNS's
-                                    // BCWall* BCs), all patches when none is a wall
-    std::string foamCase = "auto";  // auto | reconstructed | decomposed (processor* directories)
-    bool zeroTime = false;          // also read 0/ (initial conditions) when solved time directories exist
-    // The derived wall field `skin-friction` (--field skin-friction), computed where the volume is read
-    // (io/reader/skin_friction.h): OpenFOAM's internal mesh is read for it, a volume file's boundary is its wall.
-    bool skinFriction = false;
-    double viscosity = 0.0;         // kinematic, m²/s, for skin-friction; 0: the case's own, else a relative magnitude
 };
 
 // Reads every time step of `path` into a Dataset. Each step's mesh holds all point

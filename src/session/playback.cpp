@@ -1,5 +1,4 @@
-// Index: steps · build and options · animation (start, advance, still) · live frames · results ·
-// quality.
+// Index: steps · build and options · animation (start, advance, still) · live frames · results.
 #include "session/playback.h"
 
 #include "core/errors.h"
@@ -13,12 +12,6 @@ namespace flowsurf::session {
 
 Playback::Playback(const RenderOptions& o, std::vector<methods::Method> views, methods::ProcessGroup* group)
     : options_(o), group_(group), requestedViews_(std::move(views)), dye_(group) {}
-
-Playback::Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views,
-                   methods::ProcessGroup* group)
-    : Playback(o, std::move(views), group) {
-    open(steps);
-}
 
 Playback::~Playback() = default;
 
@@ -322,14 +315,6 @@ std::vector<uint8_t> Playback::readImage(int* width, int* height) const {
                         &out[(size_t(y) * size_t(*width) + size_t(i) * v.width) * 3]);
     }
     return out;
-}
-
-// --- quality --------------------------------------------------------------------------------
-
-quality::FrameQuality Playback::measureLastFrame(size_t view) {
-    requireOpen("measureLastFrame");
-    const uint32_t k = clock_ > 0 ? clock_ - 1 : 0;
-    return quality_.measure(view, *methods_.at(view), surface_->atTime(last_.time), last_.camera, k);
 }
 
 }  // namespace flowsurf::session

@@ -26,6 +26,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,6 @@ public:
     // processes rendering this view together (ParaView under MPI), or null.
     explicit Playback(const RenderOptions& o = {}, std::vector<methods::Method> views = {},
                       methods::ProcessGroup* group = nullptr);
-    // As above, and open(steps) at once.
-    Playback(const RenderOptions& o, core::StepProvider& steps, std::vector<methods::Method> views = {},
-             methods::ProcessGroup* group = nullptr);
     ~Playback();
     Playback(const Playback&) = delete;
     Playback& operator=(const Playback&) = delete;
@@ -123,11 +121,8 @@ public:
     // W: options().warmup, or when it is -1 enough to look converged: 3 / alpha frames,
     // none when every method is history free (the hybrid's LIC: nothing builds up).
     int warmupFrames() const;
-    // True if every method computes each frame afresh (FlowMethod::historyFree).
-    bool historyFree() const;
-    size_t viewCount() const { return methods_.size(); }  // 0 while closed
-    methods::FlowMethod& view(size_t i) { return *methods_[i]; }
-    const methods::FlowMethod& view(size_t i) const { return *methods_[i]; }
+    // The methods side by side, in the order of the views (none while closed).
+    std::span<const std::unique_ptr<methods::FlowMethod>> views() const { return methods_; }
     AnimatedSurface& surface() { return *surface_; }  // while open
     // The last frame rendered, warm-up included (all zero before the first).
     struct Drawn {
@@ -146,9 +141,6 @@ public:
     // rebuilds; off by default.
     QualityMonitor& quality() { return quality_; }
     const QualityMonitor& quality() const { return quality_; }
-    // Measures view i's last frame now (surface and camera of the last frame); with the
-    // quality off it has no frame before it, so no correlations. Not added to the log.
-    quality::FrameQuality measureLastFrame(size_t view);
     // The dye [doc/algorithms.md §10] (DyeInjection): it steps with each animation frame and
     // each live frame that advances the clock (not the warm-up), with the options of that
     // frame: dye changes apply live (effect None). Its field is null until a frame had a source.
@@ -165,6 +157,7 @@ private:
     void install(Parts parts);          // the parts, and the clock, dye and quality restart for them
     void build();                       // surface, renderers, cameras from options_
     void requireOpen(const char* call) const;  // ConfigError naming `call` while closed
+    bool historyFree() const;           // every method computes each frame afresh (FlowMethod::historyFree)
     bool applyPending();                // a pending rebuild (true) or camera change, before a frame
     void restart();                     // the animation over, after a rebuild
     static std::vector<methods::Method> shownViews(const std::vector<methods::Method>& views, const RenderOptions& o);

@@ -29,6 +29,11 @@ public:
     // Wall time the quality took in the last frame (measuring, or keeping the frame for the
     // next measurement; 0: none), for timers that leave it out.
     double msLastFrame() const { return ms_; }
+    // Measures the frame view `view` drew last now: `method` its renderer, drawn of
+    // `surface` with `camera` at noise clock k (Playback::lastFrame()). With the monitor off
+    // it has no frame before it, so no correlations. Not added to the log.
+    quality::FrameQuality measure(size_t view, const methods::FlowMethod& method, const methods::SurfaceGpu& surface,
+                                  const core::Camera& camera, uint32_t k);
 
 private:
     // The frame loop's side (Playback): new renderers, and each frame planned before it is
@@ -47,11 +52,6 @@ private:
     // The frame is done: wall time of its measurements in msLastFrame(), nothing planned.
     void frameDone() { next_ = Step::None; }
     void frameStarts() { ms_ = 0.0; }
-    // Measures view `view`'s last frame now; with the monitor off it has no frame before it,
-    // so no correlations. Not added to the log.
-    quality::FrameQuality measure(size_t view, const methods::FlowMethod& method, const methods::SurfaceGpu& surface,
-                                  const core::Camera& camera, uint32_t k);
-
     enum class Step { None, Keep, Measure };
     void makeProbes();
 

@@ -6,10 +6,10 @@
 #include "core/camera.h"
 #include "core/camera_path.h"
 #include "core/mesh.h"
-#include "io/dataset_reader.h"
+#include "io/source_options.h"
+#include "session/options/options.h"
 
 #include <memory>
-#include "session/options/options.h"
 
 namespace flowsurf::session {
 

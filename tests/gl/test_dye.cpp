@@ -93,7 +93,8 @@ size_t inkedVoxels(const session::Playback& p) {
 // A quarter, a half and a whole turn of the blob at 512 x 512.
 TEST(Dye, BlobFollowsTheRotationHidesAndComesBack) {
     core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:20000"));
-    session::Playback p(dyeOptions("isa", 512), steps);
+    session::Playback p(dyeOptions("isa", 512));
+    p.open(steps);
     p.start(false);
     p.advance();  // frame 0: released
     const Blob b0 = measure(p);
@@ -125,7 +126,8 @@ TEST(Dye, ContinuousSourceDrawsAStreaklineAlongTheCircle) {
     core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:20000"));
     session::RenderOptions o = dyeOptions("isa", 256);
     o.dyeRelease = 0;
-    session::Playback p(o, steps);
+    session::Playback p(o);
+    p.open(steps);
     p.start(false);
     for (int f = 0; f <= kQuarter; ++f) p.advance();
     const methods::DyeBand& band = p.dye().field()->band();
@@ -159,7 +161,8 @@ TEST_P(DyeMethods, BlobUnderAnOrbitingCameraOnEveryMethodAndPath) {
     std::vector<uint8_t> images[2];
     for (int path = 0; path < 2; ++path) {
         session::setOption(o, "gl-path", path == 0 ? "compute" : "fragment");
-        session::Playback p(o, steps);
+        session::Playback p(o);
+        p.open(steps);
         p.start(false);
         for (int f = 0; f <= kQuarter / 2; ++f) p.advance();
         const Blob b = measure(p);
@@ -168,7 +171,7 @@ TEST_P(DyeMethods, BlobUnderAnOrbitingCameraOnEveryMethodAndPath) {
         int w = 0, h = 0;
         images[path] = p.readImage(&w, &h);
         // Dye never off the surface: where the depth says background, the background colour.
-        const std::vector<float> depth = gl::readDepth(p.view(0).surfaceDepth());  // rows bottom to top
+        const std::vector<float> depth = gl::readDepth(p.views()[0]->surfaceDepth());  // rows bottom to top
         const std::vector<uint8_t>& img = images[path];
         size_t off = 0;
         for (int y = 0; y < h; ++y)
@@ -189,7 +192,8 @@ TEST(Dye, TimeSeriesCarriesDyeOverTheSteps) {
     o.size = {160, 100};
     o.frames = 40;
     session::setOption(o, "dye", "0.5,0.15,0:0.04:red");
-    session::Playback p(o, steps);
+    session::Playback p(o);
+    p.open(steps);
     p.start(false);
     p.advance();
     const methods::DyeField* first = p.dye().field();

@@ -55,13 +55,14 @@ Images playHybrid(core::StepProvider& steps, double perFrame, int frames, method
     o.size = {160, 160};
     o.params.common.colormap = methods::Colormap::None;  // see CompositeEqualsTheOneProcessImage
     o.params.common.noise.seed = 7;
-    session::Playback p(o, steps, {}, group);
+    session::Playback p(o, {}, group);
+    p.open(steps);
     const core::Camera cam = test::orthoFront(2.2f);
     for (int k = 0; k <= frames; ++k) p.render({cam, k * perFrame, perFrame});
     Images im;
     int w = 0, h = 0;
     im.rgb = p.readImage(&w, &h);
-    im.depth = gl::readDepth(p.view(0).surfaceDepth());
+    im.depth = gl::readDepth(p.views()[0]->surfaceDepth());
     return im;
 }
 
@@ -118,7 +119,8 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
         const float a = std::atan2(c.y, c.x) + 3.14159265f;
         return std::min(parts - 1, int(a / (6.2831853f / float(parts)))) == r;
     });
-    session::Playback p(o, piece, {}, group);
+    session::Playback p(o, {}, group);
+    p.open(piece);
     const core::Camera cam = test::orthoFront(2.4f);
     for (int k = 0; k <= frames; ++k) {
         p.render({cam, 0.0, 0.0});
@@ -131,7 +133,7 @@ Images playDye(const std::string& method, int parts, int r, int frames, methods:
     Images im;
     int w = 0, h = 0;
     im.rgb = p.readImage(&w, &h);
-    im.depth = gl::readDepth(p.view(0).surfaceDepth());
+    im.depth = gl::readDepth(p.views()[0]->surfaceDepth());
     return im;
 }
 

@@ -31,7 +31,7 @@ std::vector<uint8_t> image(const session::Playback& p) {
 TEST(PlaybackOptions, ClosedPlaybackTakesEveryOptionAndRendersNothing) {
     session::Playback p(smallOptions());
     EXPECT_FALSE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 0u);
+    EXPECT_EQ(p.views().size(), 0u);
     EXPECT_EQ(p.frame(), 0);
     // Closed, the input's options are options like the others.
     EXPECT_EQ(p.set("input", "builtin:torus"), session::OptionEffect::Reload);
@@ -49,12 +49,12 @@ TEST(PlaybackOptions, OpenRefusesTheInputsOptionsUntilClosed) {
     session::Playback p(smallOptions());
     p.open(steps);
     EXPECT_TRUE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 1u);
+    EXPECT_EQ(p.views().size(), 1u);
     EXPECT_THROW(p.set("input", "builtin:torus"), ConfigError);
     EXPECT_EQ(p.options().input, "builtin:sphere:2000");
     p.close();
     EXPECT_FALSE(p.isOpen());
-    EXPECT_EQ(p.viewCount(), 0u);
+    EXPECT_EQ(p.views().size(), 0u);
     EXPECT_NO_THROW(p.set("input", "builtin:sphere:2000"));
 }
 
@@ -62,7 +62,8 @@ TEST(PlaybackOptions, ReopenedPlaybackRendersAsANewOne) {
     core::DatasetSteps steps(core::makeBuiltin("builtin:sphere:2000"));
     session::RenderOptions o = smallOptions();
     session::setOption(o, "dye", "0,0,1:0.2:red");
-    session::Playback fresh(o, steps);
+    session::Playback fresh(o);
+    fresh.open(steps);
     fresh.still(4);
     const std::vector<uint8_t> expected = image(fresh);
 
@@ -109,7 +110,8 @@ TEST(PlaybackOptions, ReopenKeepsWhatItHadWhenTheNewDataFails) {
     EXPECT_EQ(p.frame(), 0);
     EXPECT_EQ(p.clock(), 0u);
     p.still(2);
-    session::Playback fresh(good, plane);
+    session::Playback fresh(good);
+    fresh.open(plane);
     fresh.still(2);
     EXPECT_EQ(image(p), image(fresh));
 }

@@ -245,8 +245,8 @@ struct Orbiting {
         options.size = {128, 128};
         options.orbit = 2.0f;
         options.params.common.noise.seed = 7;
-        playback = std::make_unique<session::Playback>(options, steps,
-                                                       std::vector{methods::Method::Isa, methods::Method::Hybrid});
+        playback = std::make_unique<session::Playback>(options, std::vector{methods::Method::Isa, methods::Method::Hybrid});
+        playback->open(steps);
         playback->quality().configure(every);
         playback->start(true);
         for (int f = 0; f < 12; ++f) playback->advance();
@@ -264,7 +264,7 @@ struct Orbiting {
 TEST(QualityPlayback, MeasuresEveryNthFrameWithoutChangingImages) {
     Orbiting off(0), on(4);
     EXPECT_EQ(off.image, on.image);
-    ASSERT_EQ(on.playback->viewCount(), 2u);
+    ASSERT_EQ(on.playback->views().size(), 2u);
     const uint32_t w = uint32_t(on.playback->warmupFrames());
     for (size_t v = 0; v < 2; ++v) {
         const auto& frames = on.playback->quality().frames(v);
@@ -282,7 +282,7 @@ TEST(QualityPlayback, MeasuresEveryNthFrameWithoutChangingImages) {
     }
     for (size_t v = 0; v < 2; ++v) {
         const quality::QualitySummary q = on.playback->quality().summary(v);
-        std::printf("%s orbiting: frame correlation %.3f, reprojected %.3f\n", on.playback->view(v).name(),
+        std::printf("%s orbiting: frame correlation %.3f, reprojected %.3f\n", on.playback->views()[v]->name(),
                     q.median.frameCorrelation, q.median.frameCorrelationReprojected);
     }
     const quality::QualitySummary hybrid = on.playback->quality().summary(1);

@@ -22,12 +22,13 @@ std::set<std::string> timedStages(const std::string& input, const std::string& m
     session::setOption(o, "method", method);
     session::setOption(o, "enhance-contrast", "both");
     session::setOption(o, "edge-mask", "true");
-    session::Playback p(o, steps);
+    session::Playback p(o);
+    p.open(steps);
     p.setStageTiming(true);
     p.start(false);
     for (int f = 0; f < 3; ++f) p.advance();
     std::set<std::string> names;
-    for (const auto& [name, ms] : p.view(0).timer().meanMs()) names.insert(name);
+    for (const auto& [name, ms] : p.views()[0]->timer().meanMs()) names.insert(name);
     return names;
 }
 

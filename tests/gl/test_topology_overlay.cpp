@@ -39,7 +39,8 @@ std::vector<uint8_t> render(const std::string& method, bool topology) {
     o.topologyParts = "points";
     o.frames = 4;
     core::DatasetSteps steps(poles());
-    session::Playback p(o, steps);
+    session::Playback p(o);
+    p.open(steps);
     p.still(o.frames);
     int w = 0, h = 0;
     return p.readImage(&w, &h);  // RGB, rows top to bottom

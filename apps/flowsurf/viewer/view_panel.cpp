@@ -317,7 +317,7 @@ void Window::qualitySection(const ViewerState& state, ViewPipeline& pipeline) {
     }
     if (!on || !pipeline.ready()) return;
     session::Playback& playback = pipeline.playback();
-    for (size_t i = 0; i < pipeline.viewCount() && i < playback.viewCount(); ++i) {
+    for (size_t i = 0; i < pipeline.viewCount(); ++i) {
         const auto& frames = playback.quality().frames(i);
         ImGui::Text("%s: %zu frames measured", upper(pipeline.methodName(i)).c_str(), frames.size());
         if (frames.empty()) continue;

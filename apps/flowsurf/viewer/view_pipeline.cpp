@@ -95,15 +95,15 @@ void ViewPipeline::build(core::Viewport viewSize, const std::vector<methods::Met
 
 void ViewPipeline::framebuffers() {
     readFbos_.clear();
-    for (size_t i = 0; i < playback_.viewCount(); ++i) {
+    for (const auto& m : playback_.views()) {
         readFbos_.push_back(gl::Framebuffer::create());
-        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, playback_.view(i).composite());
+        readFbos_.back().attach(GL_COLOR_ATTACHMENT0, m->composite());
         glNamedFramebufferReadBuffer(readFbos_.back().id(), GL_COLOR_ATTACHMENT0);
     }
 }
 
 std::string ViewPipeline::methodName(size_t i) const {
-    return playback_.view(i).name();
+    return playback_.views()[i]->name();
 }
 
 void ViewPipeline::render(const session::Playback::LiveFrame& f, bool advance) {

@@ -31,8 +31,8 @@ public:
     session::Playback& playback() { return playback_; }
     const session::Playback& playbackView() const { return playback_; }
 
-    size_t viewCount() const { return playback_.viewCount(); }
-    methods::FlowMethod& method(size_t i) { return playback_.view(i); }
+    size_t viewCount() const { return playback_.views().size(); }
+    methods::FlowMethod& method(size_t i) { return *playback_.views()[i]; }
     // A read framebuffer on view i's composite (made once per build), for the window blit.
     GLuint compositeReadFbo(size_t i) const { return readFbos_[i].id(); }
     std::string methodName(size_t i) const;

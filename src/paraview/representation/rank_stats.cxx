@@ -23,9 +23,9 @@ std::unique_ptr<RankStats> RankStats::fromEnvironment()
 
 void RankStats::begin(session::Playback& playback, const VtkProcessGroup* group)
 {
-  for (size_t i = 0; i < playback.viewCount(); ++i)
+  for (const auto& method : playback.views())
   {
-    playback.view(i).timer().setSynchronous(true);
+    method->timer().setSynchronous(true);
   }
   playback.setStageTiming(true);
   wallMs_ = clockMs(CLOCK_MONOTONIC);
@@ -37,7 +37,7 @@ void RankStats::end(session::Playback& playback, const VtkProcessGroup* group, b
 {
   const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
   glFinish();
-  methods::FlowMethod& method = playback.view(0);
+  methods::FlowMethod& method = *playback.views()[0];
   const methods::TileTraffic t = method.tileTraffic();
   nlohmann::ordered_json line = { { "rank", rank }, { "ranks", ranks }, { "render", renders_++ },
     { "method", method.name() },

@@ -301,8 +301,11 @@ bool vtkFlowSurfMapper::Internals::updatePlayback(const fs::core::Viewport& size
       else if (!playback || dataChanged)
       {
         playback.reset();
-        playback =
-          std::make_unique<fs::session::Playback>(o, steps, std::vector<fs::methods::Method>{}, frameGroup.get());
+        // Kept only once open: a playback that failed to open is not kept.
+        auto opened =
+          std::make_unique<fs::session::Playback>(o, std::vector<fs::methods::Method>{}, frameGroup.get());
+        opened->open(steps);
+        playback = std::move(opened);
         warmup = true;
       }
       else
@@ -398,9 +401,9 @@ void vtkFlowSurfMapper::Internals::render(vtkRenderer* ren, vtkDataObject* input
   const fs::methods::PixelRect piece = drawn
     ? fs::methods::projectedRect(drawn->pieceParts(), lastCamera.viewProjection(float(w) / float(h)), w, h)
     : fs::methods::PixelRect{};
-  topology.render(playback->view(0), lastCamera, w, h, group.get());
-  composite.draw(guard, x0, y0, w, h, piece, playback->view(0), host ? &*host : nullptr,
+  topology.render(*playback->views()[0], lastCamera, w, h, group.get());
+  composite.draw(guard, x0, y0, w, h, piece, *playback->views()[0], host ? &*host : nullptr,
     options.params.common.overlay == fs::methods::OverlayScheme::Blend, playback->surface().colorRange());
   // (5) the flow topology over it (FlowSurfTopology on)
-  topology.composite(guard, x0, y0, w, h, playback->view(0));
+  topology.composite(guard, x0, y0, w, h, *playback->views()[0]);
 }
