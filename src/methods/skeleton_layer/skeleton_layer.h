@@ -48,6 +48,9 @@ public:
     // Draws onto `composite` (RGBA8, the method's image), hidden by `surfaceDepth`.
     void draw(const gl::Texture2D& composite, const gl::Texture2D& surfaceDepth, const core::Camera& camera,
               const SkeletonStyle& style);
+    // Line pieces: of the uploaded lines, and drawn by the last draw().
+    size_t piecesUploaded() const { return size_t(segmentCount_); }
+    size_t piecesDrawn() const { return size_t(segmentCount_); }
 
 private:
     gl::Program lines_, points_;
