@@ -11,7 +11,6 @@ layout(std430, binding = SKELETON_SEGMENTS_BINDING) readonly buffer Segments { v
 uniform mat4 viewProj;
 uniform vec2 viewportPx;
 uniform float halfWidthPx;  // the outline's
-const float kEndsSpeakPx = 16.0;  // px: a piece no longer is tested at its ends only
 flat out vec2 aPx, bPx;
 flat out float depthA, depthB, kind;
 flat out int depthTest;  // 0: both ends in front of the surface, no per-pixel test
@@ -41,13 +40,13 @@ void main() {
     bPx = toPx(b);
     depthA = a.z / a.w * 0.5 + 0.5;
     depthB = b.z / b.w * 0.5 + 0.5;
+    // the ends speak for the piece's inside: a simplified piece keeps the depth of the line it
+    // stands for within 0.2 % (line_simplify.h), so its ends are hidden where the line's are
+    bool hiddenA = hiddenBySurface(aPx, depthA), hiddenB = hiddenBySurface(bPx, depthB);
+    if (hiddenA && hiddenB) { gl_Position = vec4(2.0, 2.0, 2.0, 1.0); return; }  // behind the surface
+    depthTest = hiddenA || hiddenB ? 1 : 0;
     vec2 along = bPx - aPx;
     float len = length(along);
-    // a short piece's ends speak for its inside; a longer one (simplified for the view, or
-    // seen from near) can pass behind the surface and out again between them: per pixel
-    bool hiddenA = hiddenBySurface(aPx, depthA), hiddenB = hiddenBySurface(bPx, depthB), local = len <= kEndsSpeakPx;
-    if (hiddenA && hiddenB && local) { gl_Position = vec4(2.0, 2.0, 2.0, 1.0); return; }  // behind the surface
-    depthTest = hiddenA || hiddenB || !local ? 1 : 0;
     along = len > 1e-6 ? along / len : vec2(1.0, 0.0);
     vec2 across = vec2(-along.y, along.x);
     // a neighbour joins where it exists, is in front of the eye and not on top of the end
