@@ -1,9 +1,12 @@
-// The flow topology overlay's cost per frame (doc/bench/topology.md): a method's dynamic
-// frames (an orbiting camera) of INPUT with --topology off, and the overlay alone drawn
-// over the same frames (TopologyOverlay::draw: the line pieces and the points), in
-// interleaved rounds, each a wall time over `frames` frames ended by glFinish. Prints the
-// median of the rounds and the overlay's share of the frame. PARTS (points,lines | points |
-// lines) and LW (line width, px) in the environment vary what is drawn.
+// The flow topology overlay's cost per frame (doc/bench/topology.md): a method's frames of
+// INPUT with --topology off, each followed by the overlay alone drawn over it with its camera
+// (TopologyOverlay::draw: the lines simplified for the view when it moved, their pieces and
+// the points), each timed apart (glFinish at both ends), in rounds. Dynamic (default): the
+// camera orbits half a degree a frame (ISA's dynamic case, the lines simplified every frame);
+// STATIC=1: one camera throughout (the method's static frames, the overlay's pieces of the
+// first frame). Prints the median of the rounds, the overlay's share of the frame and its
+// line pieces (uploaded, drawn in the last frame). PARTS (points,lines | points | lines) and
+// LW (line width, px) in the environment vary what is drawn.
 //   flowsurf_overlay_timing INPUT [METHOD] [WxH] [ROUNDS] [FRAMES]
 #include "gl/context.h"
 #include "io/series_reader.h"
@@ -55,27 +58,34 @@ int main(int argc, char** argv) try {
     if (const char* w = std::getenv("LW")) withTopology.topologyLineWidth = std::stof(w);
     session::TopologyOverlay overlay(*steps, withTopology);
     const core::Camera camera0 = session::makeCamera(playback.options(), steps->bounds());
+    const char* fixed = std::getenv("STATIC");
+    const bool still = fixed && std::string(fixed) != "0";
     std::vector<double> frameMs, overlayMs;
     int k = 0;
-    auto frame = [&] { playback.render({core::orbitCamera(camera0, 0.5f * float(k++))}); };
-    for (int i = 0; i < 3; ++i) frame();  // shaders, first-touch allocations
-    for (int r = 0; r < rounds; ++r) {
-        auto t0 = Clock::now();
-        for (int f = 0; f < frames; ++f) frame();
-        frameMs.push_back(msSince(t0, frames));
-        // the overlay over the last frame, as often: what --topology on adds to each frame
-        const core::Camera camera = playback.lastFrame().camera;
+    // one frame and the overlay over it: what --topology on adds to each frame
+    auto frame = [&](double* frameSum, double* overlaySum) {
         glFinish();
+        auto t0 = Clock::now();
+        playback.render({still ? camera0 : core::orbitCamera(camera0, 0.5f * float(k++))});
+        *frameSum += msSince(t0, 1);
         t0 = Clock::now();
-        for (int f = 0; f < frames; ++f) overlay.draw(*playback.views()[0], camera, 0.0);
-        overlayMs.push_back(msSince(t0, frames));
+        overlay.draw(*playback.views()[0], playback.lastFrame().camera, 0.0);
+        *overlaySum += msSince(t0, 1);
+    };
+    double unused = 0.0;
+    for (int i = 0; i < 3; ++i) frame(&unused, &unused);  // shaders, first-touch allocations
+    for (int r = 0; r < rounds; ++r) {
+        double f = 0.0, o = 0.0;
+        for (int i = 0; i < frames; ++i) frame(&f, &o);
+        frameMs.push_back(f / frames);
+        overlayMs.push_back(o / frames);
     }
     const skeleton::Skeleton& s = overlay.current();
-    size_t pieces = 0;
-    for (const skeleton::SkeletonLine& l : s.lines) pieces += l.points.size() > 1 ? l.points.size() - 1 : 0;
-    std::printf("method,size,points,lines,pieces,frame_ms,overlay_ms,share\n%s,%s,%zu,%zu,%zu,%.2f,%.2f,%.1f%%\n",
-                argc > 2 ? argv[2] : "isa", argc > 3 ? argv[3] : "1024x1024", s.criticalPoints.size(), s.lines.size(),
-                pieces, median(frameMs), median(overlayMs), 100.0 * median(overlayMs) / median(frameMs));
+    std::printf("method,size,camera,points,lines,pieces,drawn,frame_ms,overlay_ms,share\n"
+                "%s,%s,%s,%zu,%zu,%zu,%zu,%.2f,%.2f,%.1f%%\n",
+                argc > 2 ? argv[2] : "isa", argc > 3 ? argv[3] : "1024x1024", still ? "static" : "orbit",
+                s.criticalPoints.size(), s.lines.size(), overlay.layer().piecesUploaded(), overlay.layer().piecesDrawn(),
+                median(frameMs), median(overlayMs), 100.0 * median(overlayMs) / median(frameMs));
 } catch (const std::exception& e) {
     std::fprintf(stderr, "flowsurf_overlay_timing: %s\n", e.what());
     return 1;

@@ -2,8 +2,9 @@
 // plus one pixel for the anti-aliased edge, four corners (two triangles by index) of one
 // draw. Inside a line a piece ends on the bisector of the join with its neighbour (a miter),
 // so consecutive pieces meet edge to edge and no pixel is drawn twice; at a line's ends it
-// reaches one half width further for the round cap. Cost: on llvmpipe mostly the set-up of
-// each piece's two triangles, not their pixels (doc/bench/topology.md).
+// reaches one half width further for the round cap. The pieces are those SkeletonLayer kept
+// for the view (line_simplify.h), prev and next its kept neighbours. Cost: on llvmpipe mostly
+// the set-up of each piece's two triangles, not their pixels (doc/bench/topology.md).
 #include "skeleton_layer/depth.glsl"
 // Per piece: the point before a (w 1: it exists), a (w: kind), b, the point after b (w 1: exists).
 layout(std430, binding = SKELETON_SEGMENTS_BINDING) readonly buffer Segments { vec4 segment[]; };
@@ -39,6 +40,8 @@ void main() {
     bPx = toPx(b);
     depthA = a.z / a.w * 0.5 + 0.5;
     depthB = b.z / b.w * 0.5 + 0.5;
+    // the ends speak for the piece's inside: a simplified piece keeps the depth of the line it
+    // stands for within 0.2 % (line_simplify.h), so its ends are hidden where the line's are
     bool hiddenA = hiddenBySurface(aPx, depthA), hiddenB = hiddenBySurface(bPx, depthB);
     if (hiddenA && hiddenB) { gl_Position = vec4(2.0, 2.0, 2.0, 1.0); return; }  // behind the surface
     depthTest = hiddenA || hiddenB ? 1 : 0;

@@ -17,6 +17,7 @@ public:
     void draw(const methods::FlowMethod& method, const core::Camera& camera, double time);
     // The result drawn last (the viewer's hover reads it).
     const skeleton::Skeleton& current() const { return *shown_; }
+    const methods::SkeletonLayer& layer() const { return layer_; }
 
 private:
     size_t stepAt(double time) const;

@@ -1,18 +1,24 @@
-// flowsurf — the flow topology drawn over a method's image (doc/topology.md §5): critical
+// flowsurf — the flow topology drawn over a method's image (docs/topology.md §5): critical
 // points as glyphs whose shape and colour give the type, separation and attachment lines
 // in two colours, a constant width in pixels, anti-aliased (coverage from the distance to
 // the line in pixels, a dark outline around the core), hidden where the surface covers them
 // (the method's own surface depth). Drawn onto the composite (RGBA8) after the method's
 // stages, so the texture under them is the method's; the same result for every method.
-// Cost: one draw of the line pieces (outline and core in one pass, each pixel of a line once)
-// and one of the points, six vertices a quad.
+// Cost: each time the camera moves, the lines simplified on the CPU for that view
+// (line_simplify.h: a few thousand vertices, well under a millisecond) and the kept pieces
+// uploaded; then one draw of those pieces (outline and core in one pass, each pixel of a line
+// once; on llvmpipe the cost goes with the number of pieces) and one of the points, six
+// vertices a quad.
 #pragma once
 
 #include "core/camera.h"
 #include "gl/objects.h"
+#include "methods/skeleton_layer/line_simplify.h"
 #include "skeleton/skeleton.h"
 
 #include <array>
+#include <optional>
+#include <vector>
 
 namespace flowsurf::methods {
 
@@ -48,14 +54,26 @@ public:
     // Draws onto `composite` (RGBA8, the method's image), hidden by `surfaceDepth`.
     void draw(const gl::Texture2D& composite, const gl::Texture2D& surfaceDepth, const core::Camera& camera,
               const SkeletonStyle& style);
+    // Line pieces: of the uploaded lines, and drawn by the last draw() (simplified for its view).
+    size_t piecesUploaded() const { return piecesUploaded_; }
+    size_t piecesDrawn() const { return size_t(segmentCount_); }
 
 private:
+    // The pieces of `lines` simplified for this view, uploaded unless the view is the last one's.
+    void simplifyFor(const core::Camera& camera, const core::Viewport& viewport, float reachPx);
+
     gl::Program lines_, points_;
     gl::VertexArray vao_;
     gl::Framebuffer fbo_;
     gl::Buffer segments_, pointBuffer_;
     gl::Buffer quadCorners_;  // element indices: six per line piece over its four corners
     GLsizei segmentCount_ = 0, pointCount_ = 0;
+    std::vector<skeleton::SkeletonLine> polylines_;  // as uploaded, object space
+    size_t piecesUploaded_ = 0;
+    // the view segments_ holds the pieces of (none after upload)
+    std::optional<core::Camera> piecesCamera_;
+    core::Viewport piecesViewport_;
+    float piecesReachPx_ = 0.0f;
 };
 
 }  // namespace flowsurf::methods
